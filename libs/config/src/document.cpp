@@ -1,0 +1,187 @@
+#include "document.hpp"
+
+#include <yaml.h>
+
+#include <algorithm>
+#include <memory>
+#include <unordered_map>
+
+#include "vsl/config/node.hpp"
+
+namespace vsl::config {
+namespace {
+
+struct ParserDeleter {
+  void operator()(yaml_parser_t* parser) const {
+    yaml_parser_delete(parser);
+    delete parser;
+  }
+};
+
+struct EventGuard {
+  yaml_event_t event{};
+  ~EventGuard() { yaml_event_delete(&event); }
+};
+
+bool is_plain_null(const yaml_event_t& event, const std::string& text) {
+  if (event.data.scalar.style != YAML_PLAIN_SCALAR_STYLE) return false;
+  return text.empty() || text == "~" || text == "null" || text == "Null" || text == "NULL";
+}
+
+// A container being filled: its entry and the children seen so far.
+struct Open {
+  std::uint32_t entry;
+  std::vector<std::uint32_t> children;
+};
+
+void check_duplicate_keys(const Document& doc, const Open& map) {
+  // Maps in world and config files are small except the occasional palette; sort a copy of keys.
+  std::vector<std::pair<const std::string*, std::uint32_t>> keys;
+  keys.reserve(map.children.size() / 2);
+  for (std::size_t i = 0; i < map.children.size(); i += 2) {
+    keys.emplace_back(&doc.entries[map.children[i]].scalar, map.children[i]);
+  }
+  if (keys.size() < 2) return;
+  std::sort(keys.begin(), keys.end(),
+            [](const auto& a, const auto& b) { return *a.first < *b.first || (*a.first == *b.first && a.second < b.second); });
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    if (*keys[i].first == *keys[i - 1].first) {
+      const auto& later = doc.entries[std::max(keys[i].second, keys[i - 1].second)];
+      throw Error(format_error(doc.source, static_cast<int>(later.line), *keys[i].first,
+                               "duplicate key"));
+    }
+  }
+}
+
+}  // namespace
+
+Document Document::parse(const std::string& text, const std::string& source_name) {
+  Document doc;
+  doc.source = source_name;
+  std::unique_ptr<yaml_parser_t, ParserDeleter> parser(new yaml_parser_t);
+  if (!yaml_parser_initialize(parser.get())) {
+    delete parser.release();
+    throw Error(format_error(source_name, 0, "", "cannot initialise the YAML parser"));
+  }
+  yaml_parser_set_input_string(parser.get(), reinterpret_cast<const unsigned char*>(text.data()),
+                               text.size());
+
+  std::vector<Open> stack;
+  std::unordered_map<std::string, std::uint32_t> anchors;
+  bool document_done = false;
+
+  // Adds a finished node to the container on top of the stack (or makes it the root), recording
+  // where it sits so that a path can be rebuilt for error messages.
+  auto attach = [&](std::uint32_t index, bool is_alias) {
+    if (stack.empty()) {
+      if (doc.root == kNone) doc.root = index;
+      return;
+    }
+    Open& top = stack.back();
+    const Entry& container = doc.entries[top.entry];
+    if (container.kind == Kind::kMap && top.children.size() % 2 == 0) {
+      // This node is a key: keys must be plain text.
+      if (doc.entries[index].kind != Kind::kScalar && doc.entries[index].kind != Kind::kNull) {
+        throw Error(format_error(source_name, static_cast<int>(doc.entries[index].line), "",
+                                 "map keys must be text"));
+      }
+    }
+    if (!is_alias) {
+      Entry& entry = doc.entries[index];
+      entry.parent = top.entry;
+      entry.slot = container.kind == Kind::kMap
+                       ? (top.children.size() % 2 == 1 ? top.children.back() : index)
+                       : static_cast<std::uint32_t>(top.children.size());
+    }
+    top.children.push_back(index);
+  };
+
+  auto new_entry = [&](Kind kind, const yaml_event_t& event) {
+    Entry entry;
+    entry.kind = kind;
+    entry.line = static_cast<std::uint32_t>(event.start_mark.line + 1);
+    doc.entries.push_back(std::move(entry));
+    return static_cast<std::uint32_t>(doc.entries.size() - 1);
+  };
+
+  auto remember_anchor = [&](const yaml_char_t* anchor, std::uint32_t index) {
+    if (anchor != nullptr) anchors[reinterpret_cast<const char*>(anchor)] = index;
+  };
+
+  while (true) {
+    EventGuard guard;
+    if (!yaml_parser_parse(parser.get(), &guard.event)) {
+      std::string what = "YAML syntax error: ";
+      what += parser->problem != nullptr ? parser->problem : "unknown problem";
+      if (parser->context != nullptr) what += std::string(" ") + parser->context;
+      throw Error(format_error(source_name, static_cast<int>(parser->problem_mark.line + 1), "",
+                               what));
+    }
+    const yaml_event_t& event = guard.event;
+    switch (event.type) {
+      case YAML_STREAM_END_EVENT:
+        if (doc.root == kNone) {
+          // An empty file is an empty document: a null root.
+          Entry entry;
+          entry.line = 1;
+          doc.entries.push_back(entry);
+          doc.root = 0;
+        }
+        return doc;
+      case YAML_DOCUMENT_START_EVENT:
+        if (document_done) {
+          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + 1), "",
+                                   "only one YAML document per file is supported"));
+        }
+        break;
+      case YAML_DOCUMENT_END_EVENT:
+        document_done = true;
+        break;
+      case YAML_SCALAR_EVENT: {
+        std::string value(reinterpret_cast<const char*>(event.data.scalar.value),
+                          event.data.scalar.length);
+        const bool null = is_plain_null(event, value);
+        const std::uint32_t index = new_entry(null ? Kind::kNull : Kind::kScalar, event);
+        doc.entries[index].scalar = std::move(value);
+        remember_anchor(event.data.scalar.anchor, index);
+        attach(index, false);
+        break;
+      }
+      case YAML_ALIAS_EVENT: {
+        const auto found = anchors.find(reinterpret_cast<const char*>(event.data.alias.anchor));
+        if (found == anchors.end()) {
+          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + 1), "",
+                                   "unknown alias"));
+        }
+        attach(found->second, true);
+        break;
+      }
+      case YAML_SEQUENCE_START_EVENT:
+      case YAML_MAPPING_START_EVENT: {
+        const bool is_map = event.type == YAML_MAPPING_START_EVENT;
+        const std::uint32_t index = new_entry(is_map ? Kind::kMap : Kind::kSequence, event);
+        remember_anchor(is_map ? event.data.mapping_start.anchor : event.data.sequence_start.anchor,
+                        index);
+        attach(index, false);
+        stack.push_back(Open{index, {}});
+        break;
+      }
+      case YAML_SEQUENCE_END_EVENT:
+      case YAML_MAPPING_END_EVENT: {
+        Open top = std::move(stack.back());
+        stack.pop_back();
+        Entry& entry = doc.entries[top.entry];
+        if (entry.kind == Kind::kMap) check_duplicate_keys(doc, top);
+        entry.first_child = static_cast<std::uint32_t>(doc.children.size());
+        entry.child_count = static_cast<std::uint32_t>(
+            entry.kind == Kind::kMap ? top.children.size() / 2 : top.children.size());
+        doc.children.insert(doc.children.end(), top.children.begin(), top.children.end());
+        break;
+      }
+      default:
+        break;
+    }
+  }
+}
+
+}  // namespace vsl::config

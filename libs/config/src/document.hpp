@@ -1,0 +1,33 @@
+// The parsed, read-only YAML document behind vsl::config::Node (private to vsl_config).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vsl::config {
+
+struct Document {
+  enum class Kind : std::uint8_t { kNull, kScalar, kMap, kSequence };
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+
+  struct Entry {
+    Kind kind = Kind::kNull;
+    std::uint32_t line = 0;          // 1-based line of the node's first character
+    std::uint32_t parent = kNone;    // containing map or sequence; kNone for the root
+    std::uint32_t slot = 0;          // in a map: the entry index of its key; in a list: position
+    std::uint32_t first_child = 0;   // into `children`; maps hold key, value, key, value, ...
+    std::uint32_t child_count = 0;   // number of values (pairs for maps)
+    std::string scalar;              // the text of a scalar (or of a map key)
+  };
+
+  std::string source;  // file name used in messages
+  std::vector<Entry> entries;
+  std::vector<std::uint32_t> children;
+  std::uint32_t root = kNone;
+
+  // Parses with libyaml. Throws Error naming source:line for syntax errors and duplicate keys.
+  static Document parse(const std::string& text, const std::string& source_name);
+};
+
+}  // namespace vsl::config

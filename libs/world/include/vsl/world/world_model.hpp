@@ -1,0 +1,93 @@
+// The world model, paper §2.2: two levels of abstraction.
+//  1. Geometric primitives (boxes, cylinders, general polyhedra), each with a transform and a
+//     colour/material. The simulator renders them; localization never needs them.
+//  2. Typed object-model instances O_i^m (id, type, pose, size, optional parent, the primitives
+//     that make them up). Their collection is the node set Xi of Eq. 5.
+// Frames: every object pose is world_T_object (metres, unit quaternion); every primitive pose is
+// object_T_primitive, in the frame of the object that owns it.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+namespace vsl::world {
+
+// sRGB colour, 0-255 per channel.
+struct Colour {
+  std::uint8_t r = 200, g = 200, b = 200;
+  friend bool operator==(const Colour&, const Colour&) = default;
+};
+
+// A named surface appearance that primitives refer to, so that a kitchen's door panels share one.
+struct Material {
+  std::string name;
+  Colour colour;
+};
+
+// Axis-aligned box in its own frame, centred on the origin; full extents along x, y, z (m).
+struct Box {
+  Eigen::Vector3d size_m = Eigen::Vector3d::Ones();
+};
+
+// Cylinder along its own z axis, centred on the origin (m).
+struct Cylinder {
+  double radius_m = 0.5;
+  double height_m = 1.0;
+};
+
+// Closed polyhedron: vertices in its own frame (m); each face a loop of >= 3 vertex indices,
+// counter-clockwise seen from outside (so that the right-hand normal points out).
+struct Polyhedron {
+  std::vector<Eigen::Vector3d> vertices_m;
+  std::vector<std::vector<std::uint32_t>> faces;
+};
+
+using Shape = std::variant<Box, Cylinder, Polyhedron>;
+
+struct Primitive {
+  Shape shape;
+  Eigen::Vector3d object_position_m = Eigen::Vector3d::Zero();  // primitive origin, object frame
+  Eigen::Quaterniond object_orientation = Eigen::Quaterniond::Identity();  // object_R_primitive
+  std::string material;  // name in WorldModel::materials, or empty
+  Colour colour;         // resolved: the material's colour unless the file overrides it
+
+  Eigen::Isometry3d object_T_primitive() const;
+};
+
+// An object-model instance O_i^m.
+struct ObjectModel {
+  std::string id;    // unique within the world
+  std::string type;  // class as recognized: "door", "handle", "drawer_front", "window", ...
+  Eigen::Vector3d world_position_m = Eigen::Vector3d::Zero();  // X_i: the point a percept sees
+  Eigen::Quaterniond world_orientation = Eigen::Quaterniond::Identity();  // world_R_object
+  std::optional<Eigen::Vector3d> size_m;  // extents along the object's x, y, z, when known
+  std::string parent_id;                  // id of the enclosing object (a door's cupboard), or ""
+  std::vector<Primitive> primitives;      // geometry, object frame; may be empty
+
+  Eigen::Isometry3d world_T_object() const;
+};
+
+class WorldModel {
+ public:
+  std::string name;
+  std::vector<Material> materials;
+  std::vector<ObjectModel> objects;
+
+  // Index of the object with this id, or nullopt. Valid after index_ids() (the loader calls it).
+  std::optional<std::size_t> find(const std::string& id) const;
+  const Material* find_material(const std::string& name) const;
+  // Rebuilds the id lookup; call after editing `objects`.
+  void index_ids();
+
+ private:
+  std::unordered_map<std::string, std::size_t> index_by_id_;
+};
+
+}  // namespace vsl::world
