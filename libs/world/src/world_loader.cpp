@@ -1,0 +1,248 @@
+// World-model file loader: YAML (docs/world-model.md) -> validated WorldModel.
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "vsl/config/node.hpp"
+#include "vsl/world/world_io.hpp"
+
+namespace vsl::world {
+namespace {
+
+using config::Node;
+
+Eigen::Vector3d vector3(const Node& node) {
+  const auto v = node.as_array<3>();
+  return {v[0], v[1], v[2]};
+}
+
+Eigen::Vector3d positive_vector3(const Node& node) {
+  const Eigen::Vector3d v = vector3(node);
+  if (!(v.array() > 0.0).all()) node.fail("every extent must be positive");
+  return v;
+}
+
+// Orientation from exactly one of `orientation: [w, x, y, z]`, `rpy: [roll, pitch, yaw]` (rad,
+// extrinsic x-y-z, i.e. R = Rz(yaw) Ry(pitch) Rx(roll)) or `yaw: rad`; identity when none is given.
+Eigen::Quaterniond orientation(const Node& parent) {
+  const auto quaternion = parent.find("orientation");
+  const auto rpy = parent.find("rpy");
+  const auto yaw = parent.find("yaw");
+  if (int(quaternion.has_value()) + int(rpy.has_value()) + int(yaw.has_value()) > 1) {
+    (quaternion ? *quaternion : *rpy).fail("give only one of orientation, rpy and yaw");
+  }
+  if (quaternion) {
+    const auto q = quaternion->as_array<4>();
+    Eigen::Quaterniond out(q[0], q[1], q[2], q[3]);
+    const double norm = out.norm();
+    // Accept rounding in hand-written files, reject what is clearly not a rotation.
+    if (std::abs(norm - 1.0) > 1e-3) {
+      quaternion->fail("must be a unit quaternion [w, x, y, z], norm is " + std::to_string(norm));
+    }
+    return out.normalized();
+  }
+  if (rpy) {
+    const auto a = rpy->as_array<3>();
+    return Eigen::Quaterniond(Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ()) *
+                              Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitY()) *
+                              Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitX()));
+  }
+  if (yaw) return Eigen::Quaterniond(Eigen::AngleAxisd(yaw->as_double(), Eigen::Vector3d::UnitZ()));
+  return Eigen::Quaterniond::Identity();
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+Colour colour(const Node& node) {
+  const std::string text = node.as_string();
+  bool ok = text.size() == 7 && text[0] == '#';
+  for (std::size_t i = 1; ok && i < 7; ++i) ok = hex_digit(text[i]) >= 0;
+  if (!ok) node.fail("expected a colour \"#rrggbb\", got '" + text + "'");
+  auto byte = [&](std::size_t at) {
+    return static_cast<std::uint8_t>(hex_digit(text[at]) * 16 + hex_digit(text[at + 1]));
+  };
+  return Colour{byte(1), byte(3), byte(5)};
+}
+
+Polyhedron polyhedron(const Node& node) {
+  node.expect_keys({"vertices", "faces"});
+  Polyhedron out;
+  const Node vertices = node.at("vertices");
+  for (std::size_t i = 0; i < vertices.size(); ++i) out.vertices_m.push_back(vector3(vertices[i]));
+  if (out.vertices_m.size() < 4) vertices.fail("a polyhedron needs at least 4 vertices");
+  const Node faces = node.at("faces");
+  if (faces.size() < 4) faces.fail("a polyhedron needs at least 4 faces");
+  // A closed, consistently oriented surface uses every directed edge exactly once and its reverse
+  // exactly once; the renderer relies on that for outward normals.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed_edges;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Node face = faces[f];
+    if (face.size() < 3) face.fail("a face needs at least 3 vertex indices");
+    std::vector<std::uint32_t> loop;
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const std::int64_t index = face[k].as_int();
+      if (index < 0 || index >= static_cast<std::int64_t>(out.vertices_m.size())) {
+        face[k].fail("vertex index " + std::to_string(index) + " out of range [0, " +
+                     std::to_string(out.vertices_m.size() - 1) + "]");
+      }
+      loop.push_back(static_cast<std::uint32_t>(index));
+    }
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const auto edge = std::make_pair(loop[k], loop[(k + 1) % loop.size()]);
+      if (++directed_edges[edge] > 1) {
+        face.fail("edge " + std::to_string(edge.first) + "-" + std::to_string(edge.second) +
+                  " is used twice in the same direction: faces must all be counter-clockwise "
+                  "seen from outside");
+      }
+    }
+    out.faces.push_back(std::move(loop));
+  }
+  for (const auto& [edge, count] : directed_edges) {
+    if (!directed_edges.count({edge.second, edge.first})) {
+      faces.fail("the surface is not closed: edge " + std::to_string(edge.first) + "-" +
+                 std::to_string(edge.second) + " has no neighbouring face");
+    }
+  }
+  // Signed volume (divergence theorem over fan triangles) must be positive for outward faces.
+  double volume = 0.0;
+  for (const auto& loop : out.faces) {
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      volume += out.vertices_m[loop[0]].dot(out.vertices_m[loop[k]].cross(out.vertices_m[loop[k + 1]]));
+    }
+  }
+  if (!(volume > 0.0)) faces.fail("faces are clockwise seen from outside (or the volume is zero)");
+  return out;
+}
+
+Primitive primitive(const Node& node, const WorldModel& world) {
+  node.expect_keys({"box", "cylinder", "polyhedron", "position", "orientation", "rpy", "yaw",
+                    "material", "colour"});
+  Primitive out;
+  const auto box = node.find("box");
+  const auto cylinder = node.find("cylinder");
+  const auto poly = node.find("polyhedron");
+  const int shapes = int(box.has_value()) + int(cylinder.has_value()) + int(poly.has_value());
+  if (shapes != 1) node.fail("a primitive needs exactly one of box, cylinder, polyhedron");
+  if (box) {
+    out.shape = Box{positive_vector3(*box)};
+  } else if (cylinder) {
+    cylinder->expect_keys({"radius", "height"});
+    out.shape = Cylinder{cylinder->at("radius").as_positive_double(),
+                         cylinder->at("height").as_positive_double()};
+  } else {
+    out.shape = polyhedron(*poly);
+  }
+  if (const auto position = node.find("position")) out.object_position_m = vector3(*position);
+  out.object_orientation = orientation(node);
+  if (const auto material = node.find("material")) {
+    out.material = material->as_string();
+    const Material* found = world.find_material(out.material);
+    if (found == nullptr) material->fail("unknown material '" + out.material + "'");
+    out.colour = found->colour;
+  }
+  if (const auto override_colour = node.find("colour")) out.colour = colour(*override_colour);
+  return out;
+}
+
+struct ParentReference {
+  std::size_t object;
+  Node node;  // the `parent:` value, for the error's line
+};
+
+ObjectModel object(const Node& node, const WorldModel& world) {
+  node.expect_keys({"id", "type", "position", "orientation", "rpy", "yaw", "size", "parent",
+                    "primitives"});
+  ObjectModel out;
+  out.id = node.at("id").as_string();
+  out.type = node.at("type").as_string();
+  out.world_position_m = vector3(node.at("position"));
+  out.world_orientation = orientation(node);
+  if (const auto size = node.find("size")) out.size_m = positive_vector3(*size);
+  if (const auto parent = node.find("parent")) out.parent_id = parent->as_string();
+  if (const auto primitives = node.find("primitives")) {
+    const std::size_t count = primitives->size();
+    out.primitives.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) out.primitives.push_back(primitive((*primitives)[i], world));
+  }
+  return out;
+}
+
+void check_parents(const WorldModel& world, const std::vector<ParentReference>& references) {
+  for (const ParentReference& reference : references) {
+    const ObjectModel& child = world.objects[reference.object];
+    if (!world.find(child.parent_id)) {
+      reference.node.fail("unknown parent '" + child.parent_id + "'");
+    }
+  }
+  // Parent chains must end: walk each chain at most objects.size() steps, memoising finished ones.
+  std::vector<std::uint8_t> state(world.objects.size(), 0);  // 0 new, 1 on the current walk, 2 ok
+  for (const ParentReference& reference : references) {
+    std::vector<std::size_t> walk;
+    std::size_t at = reference.object;
+    while (state[at] == 0) {
+      state[at] = 1;
+      walk.push_back(at);
+      const std::string& parent = world.objects[at].parent_id;
+      if (parent.empty()) break;
+      at = *world.find(parent);
+    }
+    if (state[at] == 1 && !world.objects[at].parent_id.empty()) {
+      reference.node.fail("parent chain of '" + world.objects[reference.object].id +
+                          "' forms a cycle through '" + world.objects[at].id + "'");
+    }
+    for (std::size_t i : walk) state[i] = 2;
+  }
+}
+
+WorldModel world_from(const Node& root) {
+  WorldModel world;
+  std::optional<Node> objects;
+  if (root.is_sequence()) {
+    objects = root;  // the minimal file: a bare list of objects
+  } else {
+    root.expect_keys({"name", "materials", "objects"});
+    world.name = root.get("name", "");
+    if (const auto materials = root.find("materials")) {
+      for (const std::string& name : materials->keys()) {
+        const Node material = materials->at(name);
+        material.expect_keys({"colour"});
+        world.materials.push_back(Material{name, colour(material.at("colour"))});
+      }
+    }
+    objects = root.at("objects");
+  }
+  const std::size_t count = objects->size();
+  world.objects.reserve(count);
+  std::unordered_map<std::string, std::size_t> first_line_by_id;
+  first_line_by_id.reserve(count);
+  std::vector<ParentReference> parents;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Node node = (*objects)[i];
+    world.objects.push_back(object(node, world));
+    const auto [it, inserted] =
+        first_line_by_id.emplace(world.objects.back().id, static_cast<std::size_t>(node.line()));
+    if (!inserted) {
+      node.at("id").fail("duplicate id '" + it->first + "' (first defined on line " +
+                         std::to_string(it->second) + ")");
+    }
+    if (!world.objects.back().parent_id.empty()) parents.push_back({i, node.at("parent")});
+  }
+  world.index_ids();
+  check_parents(world, parents);
+  return world;
+}
+
+}  // namespace
+
+WorldModel load_world(const std::string& path) { return world_from(Node::load_file(path)); }
+
+WorldModel load_world_from_string(const std::string& text, const std::string& source_name) {
+  return world_from(Node::load_string(text, source_name));
+}
+
+}  // namespace vsl::world

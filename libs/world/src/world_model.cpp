@@ -1,0 +1,39 @@
+#include "vsl/world/world_model.hpp"
+
+#include <algorithm>
+
+namespace vsl::world {
+
+Eigen::Isometry3d Primitive::object_T_primitive() const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = object_orientation.toRotationMatrix();
+  pose.translation() = object_position_m;
+  return pose;
+}
+
+Eigen::Isometry3d ObjectModel::world_T_object() const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = world_orientation.toRotationMatrix();
+  pose.translation() = world_position_m;
+  return pose;
+}
+
+std::optional<std::size_t> WorldModel::find(const std::string& id) const {
+  const auto found = index_by_id_.find(id);
+  if (found == index_by_id_.end()) return std::nullopt;
+  return found->second;
+}
+
+const Material* WorldModel::find_material(const std::string& material_name) const {
+  const auto found = std::find_if(materials.begin(), materials.end(),
+                                  [&](const Material& m) { return m.name == material_name; });
+  return found == materials.end() ? nullptr : &*found;
+}
+
+void WorldModel::index_ids() {
+  index_by_id_.clear();
+  index_by_id_.reserve(objects.size());
+  for (std::size_t i = 0; i < objects.size(); ++i) index_by_id_.emplace(objects[i].id, i);
+}
+
+}  // namespace vsl::world

@@ -1,0 +1,157 @@
+// World-model file writer: the inverse of world_loader.cpp, in the same format.
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <ostream>
+
+#include "vsl/config/node.hpp"
+#include "vsl/world/world_io.hpp"
+
+namespace vsl::world {
+namespace {
+
+// Shortest text that reads back as `value` rounded to `resolution`: positions to a micrometre,
+// angles and quaternion components to a nanoradian. Keeps generated files short and diff-able.
+std::string number(double value, double resolution) {
+  double rounded = std::round(value / resolution) * resolution;
+  if (rounded == 0.0) rounded = 0.0;  // no "-0"
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, rounded);
+  return std::string(buffer, result.ptr);
+}
+
+constexpr double kMetre = 1e-6;
+constexpr double kUnitless = 1e-9;
+
+std::string vector3(const Eigen::Vector3d& v) {
+  return "[" + number(v.x(), kMetre) + ", " + number(v.y(), kMetre) + ", " +
+         number(v.z(), kMetre) + "]";
+}
+
+bool plain_safe(const std::string& text) {
+  if (text.empty()) return false;
+  for (char c : text) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-' || c == '.' || c == '/';
+    if (!ok) return false;
+  }
+  // Text that YAML would read as something else (a number, a boolean, null) gets quotes.
+  const char first = text.front();
+  if ((first >= '0' && first <= '9') || first == '-' || first == '.') return false;
+  for (const char* word : {"true", "false", "yes", "no", "on", "off", "null", "True", "False",
+                           "Null", "NULL", "TRUE", "FALSE", "Yes", "No", "On", "Off"}) {
+    if (text == word) return false;
+  }
+  return true;
+}
+
+std::string text(const std::string& value) {
+  if (plain_safe(value)) return value;
+  std::string out = "\"";
+  for (char c : value) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string colour(const Colour& c) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out = "\"#";
+  for (std::uint8_t channel : {c.r, c.g, c.b}) {
+    out += kHex[channel >> 4];
+    out += kHex[channel & 15];
+  }
+  return out + "\"";
+}
+
+// "yaw: a" for a rotation about z only (the common case in buildings), the quaternion otherwise,
+// nothing for the identity. Written as a flow-map fragment with a leading ", " or as a block line.
+std::string orientation_value(const Eigen::Quaterniond& q_in, std::string* key) {
+  Eigen::Quaterniond q = q_in.normalized();
+  if (q.w() < 0) q.coeffs() *= -1.0;
+  if (std::abs(q.x()) < 1e-12 && std::abs(q.y()) < 1e-12) {
+    const double yaw = 2.0 * std::atan2(q.z(), q.w());
+    if (std::abs(yaw) < 1e-12) return "";
+    *key = "yaw";
+    return number(yaw, kUnitless);
+  }
+  *key = "orientation";
+  return "[" + number(q.w(), kUnitless) + ", " + number(q.x(), kUnitless) + ", " +
+         number(q.y(), kUnitless) + ", " + number(q.z(), kUnitless) + "]";
+}
+
+std::string shape(const Shape& s) {
+  if (const auto* box = std::get_if<Box>(&s)) return "box: " + vector3(box->size_m);
+  if (const auto* cylinder = std::get_if<Cylinder>(&s)) {
+    return "cylinder: {radius: " + number(cylinder->radius_m, kMetre) +
+           ", height: " + number(cylinder->height_m, kMetre) + "}";
+  }
+  const auto& poly = std::get<Polyhedron>(s);
+  std::string out = "polyhedron: {vertices: [";
+  for (std::size_t i = 0; i < poly.vertices_m.size(); ++i) {
+    out += (i ? ", " : "") + vector3(poly.vertices_m[i]);
+  }
+  out += "], faces: [";
+  for (std::size_t f = 0; f < poly.faces.size(); ++f) {
+    out += f ? ", [" : "[";
+    for (std::size_t k = 0; k < poly.faces[f].size(); ++k) {
+      out += (k ? ", " : "") + std::to_string(poly.faces[f][k]);
+    }
+    out += "]";
+  }
+  return out + "]}";
+}
+
+void write_primitive(const Primitive& p, const WorldModel& world, std::ostream& out) {
+  out << "      - {" << shape(p.shape);
+  if (!p.object_position_m.isZero(0.0)) out << ", position: " << vector3(p.object_position_m);
+  std::string key;
+  const std::string value = orientation_value(p.object_orientation, &key);
+  if (!value.empty()) out << ", " << key << ": " << value;
+  const Material* material = p.material.empty() ? nullptr : world.find_material(p.material);
+  if (material != nullptr) out << ", material: " << text(p.material);
+  if (material == nullptr || !(material->colour == p.colour)) out << ", colour: " << colour(p.colour);
+  out << "}\n";
+}
+
+}  // namespace
+
+void write_world(const WorldModel& world, std::ostream& out) {
+  if (!world.name.empty()) out << "name: " << text(world.name) << "\n";
+  if (!world.materials.empty()) {
+    out << "materials:\n";
+    for (const Material& m : world.materials) {
+      out << "  " << text(m.name) << ": {colour: " << colour(m.colour) << "}\n";
+    }
+  }
+  out << "objects:\n";
+  for (const ObjectModel& o : world.objects) {
+    out << "  - id: " << text(o.id) << "\n";
+    out << "    type: " << text(o.type) << "\n";
+    out << "    position: " << vector3(o.world_position_m) << "\n";
+    std::string key;
+    const std::string value = orientation_value(o.world_orientation, &key);
+    if (!value.empty()) out << "    " << key << ": " << value << "\n";
+    if (o.size_m) out << "    size: " << vector3(*o.size_m) << "\n";
+    if (!o.parent_id.empty()) out << "    parent: " << text(o.parent_id) << "\n";
+    if (!o.primitives.empty()) {
+      out << "    primitives:\n";
+      for (const Primitive& p : o.primitives) write_primitive(p, world, out);
+    }
+  }
+}
+
+void write_world_file(const WorldModel& world, const std::string& path) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw config::Error(path + ": cannot open for writing");
+  write_world(world, out);
+  out.flush();
+  if (!out) throw config::Error(path + ": write failed");
+}
+
+}  // namespace vsl::world

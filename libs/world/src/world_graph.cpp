@@ -1,0 +1,197 @@
+#include "vsl/world/world_graph.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace vsl::world {
+namespace {
+
+// Integer cell of a point in a grid of edge `cell_m`; packed into one key for hashing. 21 bits a
+// coordinate covers +-1M cells: +-4000 km at 4 m cells.
+std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
+  constexpr std::int64_t kOffset = 1 << 20;
+  constexpr std::uint64_t kMask = (1u << 21) - 1;
+  return (static_cast<std::uint64_t>(x + kOffset) & kMask) << 42 |
+         (static_cast<std::uint64_t>(y + kOffset) & kMask) << 21 |
+         (static_cast<std::uint64_t>(z + kOffset) & kMask);
+}
+
+struct Cell {
+  std::int64_t x, y, z;
+};
+
+}  // namespace
+
+WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& options) {
+  if (!(options.link_threshold_m > 0.0) || !std::isfinite(options.link_threshold_m)) {
+    throw std::invalid_argument("link threshold must be a positive number of metres");
+  }
+  WorldGraph graph;
+  graph.link_threshold_m_ = options.link_threshold_m;
+
+  // Node set: objects of the selected types, types interned in order of first appearance.
+  std::unordered_map<std::string, TypeId> type_ids;
+  for (std::size_t i = 0; i < world.objects.size(); ++i) {
+    const ObjectModel& object = world.objects[i];
+    if (!options.node_types.empty() &&
+        std::find(options.node_types.begin(), options.node_types.end(), object.type) ==
+            options.node_types.end()) {
+      continue;
+    }
+    auto [it, inserted] = type_ids.emplace(object.type, static_cast<TypeId>(type_ids.size()));
+    if (inserted) {
+      graph.type_names_.push_back(object.type);
+      graph.type_counts_.push_back(0);
+    }
+    ++graph.type_counts_[it->second];
+    graph.object_index_.push_back(i);
+    graph.positions_.push_back(object.world_position_m);
+    graph.types_.push_back(it->second);
+  }
+  const std::size_t n = graph.positions_.size();
+
+  // Bucket nodes by grid cell: nodes sorted by cell, and each cell's range in that order.
+  const double cell_m = options.link_threshold_m;
+  std::vector<Cell> cells(n);
+  std::vector<std::pair<std::uint64_t, NodeIndex>> order(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& p = graph.positions_[i];
+    cells[i] = {static_cast<std::int64_t>(std::floor(p.x() / cell_m)),
+                static_cast<std::int64_t>(std::floor(p.y() / cell_m)),
+                static_cast<std::int64_t>(std::floor(p.z() / cell_m))};
+    order[i] = {cell_key(cells[i].x, cells[i].y, cells[i].z), static_cast<NodeIndex>(i)};
+  }
+  std::sort(order.begin(), order.end());
+  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> cell_range;
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin;
+    while (end < n && order[end].first == order[begin].first) ++end;
+    cell_range.emplace(order[begin].first, std::make_pair(begin, end));
+    begin = end;
+  }
+
+  // Links (Eq. 6): compare each node with nodes of higher index in the 27 surrounding cells, so
+  // every unordered pair is measured once.
+  const double threshold_sq = cell_m * cell_m;
+  struct Pair {
+    NodeIndex a, b;
+    float d;
+  };
+  std::vector<Pair> pairs;
+  std::vector<std::uint32_t> degree(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Cell c = cells[i];
+    // Keys of the 27 cells around; deduplicated because far-out coordinates wrap in cell_key.
+    std::array<std::uint64_t, 27> keys{};
+    std::size_t key_count = 0;
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const std::uint64_t key = cell_key(c.x + dx, c.y + dy, c.z + dz);
+          if (std::find(keys.begin(), keys.begin() + key_count, key) == keys.begin() + key_count) {
+            keys[key_count++] = key;
+          }
+        }
+      }
+    }
+    for (std::size_t k_cell = 0; k_cell < key_count; ++k_cell) {
+      const auto range = cell_range.find(keys[k_cell]);
+      if (range == cell_range.end()) continue;
+      for (std::size_t k = range->second.first; k < range->second.second; ++k) {
+        const NodeIndex j = order[k].second;
+        if (j <= i) continue;
+        const double d_sq = (graph.positions_[i] - graph.positions_[j]).squaredNorm();
+        if (d_sq < threshold_sq) {
+          pairs.push_back({static_cast<NodeIndex>(i), j, static_cast<float>(std::sqrt(d_sq))});
+          ++degree[i];
+          ++degree[j];
+        }
+      }
+    }
+  }
+
+  // Compressed adjacency rows, each sorted by neighbour index for the distance lookup.
+  graph.row_start_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) graph.row_start_[i + 1] = graph.row_start_[i] + degree[i];
+  graph.neighbours_.resize(graph.row_start_[n]);
+  std::vector<std::size_t> fill(graph.row_start_.begin(), graph.row_start_.end() - 1);
+  for (const Pair& p : pairs) {
+    graph.neighbours_[fill[p.a]++] = {p.b, p.d};
+    graph.neighbours_[fill[p.b]++] = {p.a, p.d};
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    std::sort(graph.neighbours_.begin() + static_cast<std::ptrdiff_t>(graph.row_start_[i]),
+              graph.neighbours_.begin() + static_cast<std::ptrdiff_t>(graph.row_start_[i + 1]),
+              [](const Neighbour& x, const Neighbour& y) { return x.node < y.node; });
+  }
+
+  // Typed link lists, both directions, sorted by length for the range queries of Eq. 8.
+  const std::size_t t = graph.type_names_.size();
+  graph.typed_links_.assign(t * t, {});
+  std::vector<std::size_t> typed_count(t * t, 0);
+  for (const Pair& p : pairs) {
+    ++typed_count[graph.types_[p.a] * t + graph.types_[p.b]];
+    ++typed_count[graph.types_[p.b] * t + graph.types_[p.a]];
+  }
+  for (std::size_t k = 0; k < t * t; ++k) graph.typed_links_[k].reserve(typed_count[k]);
+  for (const Pair& p : pairs) {
+    graph.typed_links_[graph.types_[p.a] * t + graph.types_[p.b]].push_back({p.d, p.a, p.b});
+    graph.typed_links_[graph.types_[p.b] * t + graph.types_[p.a]].push_back({p.d, p.b, p.a});
+  }
+  for (auto& list : graph.typed_links_) {
+    std::sort(list.begin(), list.end(), [](const TypedLink& x, const TypedLink& y) {
+      return x.length_m < y.length_m || (x.length_m == y.length_m && (x.from < y.from ||
+                                                                       (x.from == y.from && x.to < y.to)));
+    });
+  }
+  return graph;
+}
+
+std::optional<TypeId> WorldGraph::find_type(const std::string& name) const {
+  const auto found = std::find(type_names_.begin(), type_names_.end(), name);
+  if (found == type_names_.end()) return std::nullopt;
+  return static_cast<TypeId>(found - type_names_.begin());
+}
+
+std::size_t WorldGraph::count_of_type(TypeId type) const { return type_counts_.at(type); }
+
+std::span<const Neighbour> WorldGraph::neighbours(NodeIndex node) const {
+  return {neighbours_.data() + row_start_[node], row_start_[node + 1] - row_start_[node]};
+}
+
+std::optional<float> WorldGraph::distance(NodeIndex a, NodeIndex b) const {
+  const std::span<const Neighbour> row = neighbours(a);
+  const auto found = std::lower_bound(row.begin(), row.end(), b,
+                                      [](const Neighbour& x, NodeIndex v) { return x.node < v; });
+  if (found == row.end() || found->node != b) return std::nullopt;
+  return found->distance_m;
+}
+
+std::span<const TypedLink> WorldGraph::links(TypeId from_type, TypeId to_type,
+                                             double min_length_m, double max_length_m) const {
+  const std::size_t t = type_names_.size();
+  if (from_type >= t || to_type >= t || min_length_m > max_length_m) return {};
+  const std::vector<TypedLink>& list = typed_links_[from_type * t + to_type];
+  const auto begin = std::lower_bound(
+      list.begin(), list.end(), min_length_m,
+      [](const TypedLink& link, double value) { return link.length_m < value; });
+  const auto end = std::upper_bound(
+      begin, list.end(), max_length_m,
+      [](double value, const TypedLink& link) { return value < link.length_m; });
+  return {list.data() + (begin - list.begin()), static_cast<std::size_t>(end - begin)};
+}
+
+std::size_t WorldGraph::memory_bytes() const {
+  std::size_t bytes = object_index_.capacity() * sizeof(std::size_t) +
+                      positions_.capacity() * sizeof(Eigen::Vector3d) +
+                      types_.capacity() * sizeof(TypeId) +
+                      row_start_.capacity() * sizeof(std::size_t) +
+                      neighbours_.capacity() * sizeof(Neighbour);
+  for (const auto& list : typed_links_) bytes += list.capacity() * sizeof(TypedLink);
+  return bytes;
+}
+
+}  // namespace vsl::world

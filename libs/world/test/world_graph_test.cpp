@@ -1,0 +1,136 @@
+#include "vsl/world/world_graph.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <set>
+#include <tuple>
+
+namespace vsl::world {
+namespace {
+
+WorldModel random_world(std::uint32_t seed, std::size_t count, double extent_m) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> coordinate(-extent_m, extent_m);
+  std::uniform_real_distribution<double> height(0.0, 2.5);
+  const char* types[] = {"door", "handle", "window", "drawer_front"};
+  WorldModel world;
+  for (std::size_t i = 0; i < count; ++i) {
+    ObjectModel object;
+    object.id = "o" + std::to_string(i);
+    object.type = types[rng() % 4];
+    object.world_position_m = {coordinate(rng), coordinate(rng), height(rng)};
+    world.objects.push_back(object);
+  }
+  world.index_ids();
+  return world;
+}
+
+TEST(WorldGraph, LinksMatchBruteForce) {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    const WorldModel world = random_world(seed, 600, 12.0);
+    const double threshold = 3.0;
+    const WorldGraph graph = WorldGraph::build(world, {threshold, {}});
+    ASSERT_EQ(graph.node_count(), world.objects.size());
+    std::size_t expected_links = 0;
+    for (std::size_t i = 0; i < world.objects.size(); ++i) {
+      for (std::size_t j = i + 1; j < world.objects.size(); ++j) {
+        const double d = (world.objects[i].world_position_m - world.objects[j].world_position_m).norm();
+        const auto lookup = graph.distance(static_cast<NodeIndex>(i), static_cast<NodeIndex>(j));
+        if (d < threshold) {
+          ++expected_links;
+          ASSERT_TRUE(lookup.has_value()) << i << "-" << j;
+          EXPECT_NEAR(*lookup, d, 1e-5);
+          EXPECT_EQ(graph.distance(static_cast<NodeIndex>(j), static_cast<NodeIndex>(i)), lookup);
+        } else {
+          EXPECT_FALSE(lookup.has_value()) << i << "-" << j;
+        }
+      }
+    }
+    EXPECT_EQ(graph.link_count(), expected_links);
+    EXPECT_GT(expected_links, 1000u);  // the test exercises a dense enough graph
+  }
+}
+
+TEST(WorldGraph, TypedQueriesMatchBruteForce) {
+  const WorldModel world = random_world(7, 500, 10.0);
+  const WorldGraph graph = WorldGraph::build(world, {3.5, {}});
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> phi(0.0, 3.5);
+  for (int query = 0; query < 200; ++query) {
+    const TypeId a = static_cast<TypeId>(rng() % graph.type_count());
+    const TypeId b = static_cast<TypeId>(rng() % graph.type_count());
+    const double center = phi(rng);
+    const double tau = 0.05 + 0.3 * (rng() % 4);
+    std::set<std::pair<NodeIndex, NodeIndex>> expected;
+    for (NodeIndex i = 0; i < graph.node_count(); ++i) {
+      for (NodeIndex j = 0; j < graph.node_count(); ++j) {
+        if (i == j || graph.type(i) != a || graph.type(j) != b) continue;
+        const double d = (graph.world_position_m(i) - graph.world_position_m(j)).norm();
+        // Compare in float, as stored: the query's bounds are inclusive.
+        const float df = static_cast<float>(d);
+        if (d < 3.5 && df >= center - tau && df <= center + tau) expected.insert({i, j});
+      }
+    }
+    std::set<std::pair<NodeIndex, NodeIndex>> got;
+    float previous = 0.0f;
+    for (const TypedLink& link : graph.links(a, b, center - tau, center + tau)) {
+      EXPECT_EQ(graph.type(link.from), a);
+      EXPECT_EQ(graph.type(link.to), b);
+      EXPECT_GE(link.length_m, previous);  // sorted by length
+      previous = link.length_m;
+      got.insert({link.from, link.to});
+    }
+    EXPECT_EQ(got, expected) << "query " << query;
+  }
+}
+
+TEST(WorldGraph, NodeTypesSelectTheNodeSet) {
+  const WorldModel world = random_world(5, 200, 5.0);
+  const WorldGraph graph = WorldGraph::build(world, {2.0, {"door", "handle"}});
+  std::size_t expected = 0;
+  for (const ObjectModel& o : world.objects) expected += (o.type == "door" || o.type == "handle");
+  EXPECT_EQ(graph.node_count(), expected);
+  EXPECT_EQ(graph.type_count(), 2u);
+  EXPECT_FALSE(graph.find_type("window").has_value());
+  for (NodeIndex i = 0; i < graph.node_count(); ++i) {
+    EXPECT_EQ(world.objects[graph.object_index(i)].type, graph.type_name(graph.type(i)));
+  }
+  EXPECT_EQ(graph.count_of_type(*graph.find_type("door")) + graph.count_of_type(*graph.find_type("handle")),
+            expected);
+}
+
+TEST(WorldGraph, LinkThresholdIsStrict) {
+  WorldModel world;
+  for (int i = 0; i < 3; ++i) {
+    ObjectModel o;
+    o.id = std::to_string(i);
+    o.type = "door";
+    o.world_position_m = {2.0 * i, 0, 0};
+    world.objects.push_back(o);
+  }
+  // Eq. 6: |X_i - X_j| < varpi. Points exactly varpi apart are not linked.
+  EXPECT_EQ(WorldGraph::build(world, {2.0, {}}).link_count(), 0u);
+  EXPECT_EQ(WorldGraph::build(world, {2.0001, {}}).link_count(), 2u);
+  EXPECT_EQ(WorldGraph::build(world, {4.0001, {}}).link_count(), 3u);
+  EXPECT_THROW(WorldGraph::build(world, {0.0, {}}), std::invalid_argument);
+}
+
+TEST(WorldGraph, FarAwayCoordinatesStillLinkCorrectly) {
+  WorldModel world;
+  for (int i = 0; i < 2; ++i) {
+    ObjectModel o;
+    o.id = std::to_string(i);
+    o.type = "door";
+    o.world_position_m = {-5.0e6 + i, 3.0e6, 0};
+    world.objects.push_back(o);
+  }
+  const WorldGraph graph = WorldGraph::build(world, {2.0, {}});
+  EXPECT_EQ(graph.link_count(), 1u);
+  EXPECT_EQ(graph.neighbours(0).size(), 1u);
+}
+
+}  // namespace
+}  // namespace vsl::world
