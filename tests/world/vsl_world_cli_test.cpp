@@ -1,0 +1,74 @@
+// vsl-world as a user runs it: a separate process, its output and exit code.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "run_command.hpp"
+
+namespace {
+
+using vsl::testing::line_count;
+using vsl::testing::run_command;
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(VslWorldCli, CheckAcceptsAGoodFile) {
+  const std::string path = write_temp("good_world.yaml",
+                                      "- {id: d, type: door, position: [0, 0, 1]}\n"
+                                      "- {id: h, type: handle, position: [0.3, 0, 1]}\n");
+  const auto result = run_command({VSL_WORLD_BIN, "check", path});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.out, path + ": ok (2 objects, 0 primitives)\n");
+}
+
+TEST(VslWorldCli, CheckRejectsABadFileWithOneLineAndExitCode2) {
+  const std::string path = write_temp("bad_world.yaml",
+                                      "objects:\n  - {id: d, type: door, position: [0, 0, 1]}\n"
+                                      "  - {id: h, type: handle, position: [0.3, 0]}\n");
+  const auto result = run_command({VSL_WORLD_BIN, "check", path});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err, path + ":3: objects[1].position: expected 3 numbers, got 2\n");
+  EXPECT_EQ(line_count(result.err), 1);
+  EXPECT_EQ(result.out, "");
+}
+
+TEST(VslWorldCli, MissingFileAndBadUsageExit2) {
+  auto result = run_command({VSL_WORLD_BIN, "check", "/nonexistent/world.yaml"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err, "/nonexistent/world.yaml: cannot open file\n");
+  result = run_command({VSL_WORLD_BIN, "frobnicate", "x"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(line_count(result.err), 1);
+  result = run_command({VSL_WORLD_BIN, "stats", "x", "--link-threshold", "-1"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--link-threshold must be a positive number"), std::string::npos);
+  result = run_command({VSL_WORLD_BIN, "--help"});
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_NE(result.out.find("usage: vsl-world check FILE"), std::string::npos);
+}
+
+TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
+  const std::string path = write_temp(
+      "stats_world.yaml",
+      "objects:\n"
+      "  - {id: d, type: door, position: [0, 0, 1], primitives: [{box: [1, 0.02, 2]}]}\n"
+      "  - {id: h, type: handle, position: [0.3, 0, 1], parent: d,\n"
+      "     primitives: [{cylinder: {radius: 0.01, height: 0.2}}]}\n"
+      "  - {id: w, type: window, position: [10, 0, 1]}\n");
+  const auto result = run_command({VSL_WORLD_BIN, "stats", path, "--link-threshold", "2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("primitives: 2\n"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("  box                         1\n"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("  cylinder                    1\n"), std::string::npos);
+  EXPECT_NE(result.out.find("objects: 3\n"), std::string::npos);
+  EXPECT_NE(result.out.find("graph: 3 nodes, 1 links (link threshold 2 m)"), std::string::npos);
+  EXPECT_NE(result.out.find("bounding box: [-0.500, -0.010, 0.000] .. [10.000, 0.010, 2.000] m"),
+            std::string::npos)
+      << result.out;
+}
+
+}  // namespace

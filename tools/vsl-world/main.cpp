@@ -1,0 +1,164 @@
+// vsl-world: check a world-model file, or print what is in it.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "vsl/config/node.hpp"
+#include "vsl/world/world_graph.hpp"
+#include "vsl/world/world_io.hpp"
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: vsl-world check FILE
+       vsl-world stats FILE [--link-threshold METRES] [--node-types TYPE,TYPE,...]
+
+Validates a vsl world-model file (format: docs/world-model.md).
+  check   validate; prints a one-line summary, or the one-line error and exits 2
+  stats   primitives by kind, objects by type, world-graph links (paper Eq. 6) and the
+          bounding box of all geometry (world frame, metres)
+options:
+  --link-threshold M   varpi of Eq. 6, metres (default 4)
+  --node-types LIST    only these object types become graph nodes (default: all)
+exit codes: 0 ok, 2 bad file or usage
+)";
+
+using vsl::world::Box;
+using vsl::world::Cylinder;
+using vsl::world::Polyhedron;
+
+struct Options {
+  std::string command;
+  std::string file;
+  vsl::world::WorldGraphOptions graph;
+};
+
+[[noreturn]] void usage_error(const std::string& what) {
+  std::cerr << "vsl-world: " << what << " (see vsl-world --help)\n";
+  std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+  Options options;
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (arg == "--link-threshold" || arg == "--node-types") {
+      if (i + 1 >= argc) usage_error(arg + " needs a value");
+      const std::string value = argv[++i];
+      if (arg == "--link-threshold") {
+        try {
+          std::size_t used = 0;
+          options.graph.link_threshold_m = std::stod(value, &used);
+          if (used != value.size() || !(options.graph.link_threshold_m > 0)) throw 0;
+        } catch (...) {
+          usage_error("--link-threshold must be a positive number of metres, got '" + value + "'");
+        }
+      } else {
+        std::stringstream list(value);
+        for (std::string type; std::getline(list, type, ',');) {
+          if (!type.empty()) options.graph.node_types.push_back(type);
+        }
+      }
+    } else if (!arg.empty() && arg[0] == '-') {
+      usage_error("unknown option " + arg);
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if (positional.size() != 2 || (positional[0] != "check" && positional[0] != "stats")) {
+    usage_error("expected 'check FILE' or 'stats FILE'");
+  }
+  options.command = positional[0];
+  options.file = positional[1];
+  return options;
+}
+
+// Corners of a primitive's bounding box in its own frame.
+std::vector<Eigen::Vector3d> extreme_points(const vsl::world::Shape& shape) {
+  Eigen::Vector3d half;
+  if (const auto* box = std::get_if<Box>(&shape)) {
+    half = box->size_m / 2;
+  } else if (const auto* cylinder = std::get_if<Cylinder>(&shape)) {
+    half = {cylinder->radius_m, cylinder->radius_m, cylinder->height_m / 2};
+  } else {
+    return std::get<Polyhedron>(shape).vertices_m;
+  }
+  std::vector<Eigen::Vector3d> corners;
+  for (int k = 0; k < 8; ++k) {
+    corners.emplace_back((k & 1 ? 1 : -1) * half.x(), (k & 2 ? 1 : -1) * half.y(),
+                         (k & 4 ? 1 : -1) * half.z());
+  }
+  return corners;
+}
+
+void print_stats(const vsl::world::WorldModel& world, const Options& options, double load_s) {
+  std::map<std::string, std::size_t> primitives_by_kind{{"box", 0}, {"cylinder", 0}, {"polyhedron", 0}};
+  std::map<std::string, std::size_t> objects_by_type;
+  Eigen::AlignedBox3d bounds;
+  for (const auto& object : world.objects) {
+    ++objects_by_type[object.type];
+    bounds.extend(object.world_position_m);
+    const Eigen::Isometry3d world_T_object = object.world_T_object();
+    for (const auto& primitive : object.primitives) {
+      const char* kind = std::holds_alternative<Box>(primitive.shape)        ? "box"
+                         : std::holds_alternative<Cylinder>(primitive.shape) ? "cylinder"
+                                                                             : "polyhedron";
+      ++primitives_by_kind[kind];
+      const Eigen::Isometry3d world_T_primitive = world_T_object * primitive.object_T_primitive();
+      for (const Eigen::Vector3d& p : extreme_points(primitive.shape)) bounds.extend(world_T_primitive * p);
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const auto graph = vsl::world::WorldGraph::build(world, options.graph);
+  const double graph_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::printf("world: %s (%s)\n", world.name.empty() ? "(unnamed)" : world.name.c_str(),
+              options.file.c_str());
+  std::size_t total_primitives = 0;
+  for (const auto& [kind, count] : primitives_by_kind) total_primitives += count;
+  std::printf("primitives: %zu\n", total_primitives);
+  for (const auto& [kind, count] : primitives_by_kind) std::printf("  %-20s %8zu\n", kind.c_str(), count);
+  std::printf("objects: %zu\n", world.objects.size());
+  for (const auto& [type, count] : objects_by_type) std::printf("  %-20s %8zu\n", type.c_str(), count);
+  std::printf("materials: %zu\n", world.materials.size());
+  std::printf("graph: %zu nodes, %zu links (link threshold %.3g m)\n", graph.node_count(),
+              graph.link_count(), graph.link_threshold_m());
+  if (world.objects.empty()) {
+    std::printf("bounding box: empty\n");
+  } else {
+    const Eigen::Vector3d lo = bounds.min(), hi = bounds.max(), size = hi - lo;
+    std::printf("bounding box: [%.3f, %.3f, %.3f] .. [%.3f, %.3f, %.3f] m (%.2f x %.2f x %.2f m)\n",
+                lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z(), size.x(), size.y(), size.z());
+  }
+  std::printf("time: load %.3f s, graph %.3f s\n", load_s, graph_s);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options options = parse(argc, argv);
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const vsl::world::WorldModel world = vsl::world::load_world(options.file);
+    const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.command == "check") {
+      std::size_t primitives = 0;
+      for (const auto& object : world.objects) primitives += object.primitives.size();
+      std::printf("%s: ok (%zu objects, %zu primitives)\n", options.file.c_str(), world.objects.size(),
+                  primitives);
+    } else {
+      print_stats(world, options, load_s);
+    }
+  } catch (const vsl::config::Error& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
