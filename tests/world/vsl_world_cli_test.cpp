@@ -46,6 +46,12 @@ TEST(VslWorldCli, MissingFileAndBadUsageExit2) {
   result = run_command({VSL_WORLD_BIN, "stats", "x", "--link-threshold", "-1"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("--link-threshold must be a positive number"), std::string::npos);
+  const std::string bad_config =
+      write_temp("bad_localizer.yaml", "world_graph:\n  link_threshold_m: 4\n  node_type: [door]\n");
+  result = run_command({VSL_WORLD_BIN, "stats", "x", "--config", bad_config});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err, bad_config + ":3: world_graph.node_type: unknown key (allowed: "
+                                     "link_threshold_m, node_types)\n");
   result = run_command({VSL_WORLD_BIN, "--help"});
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.out.find("usage: vsl-world check FILE"), std::string::npos);
@@ -59,7 +65,10 @@ TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
       "  - {id: h, type: handle, position: [0.3, 0, 1], parent: d,\n"
       "     primitives: [{cylinder: {radius: 0.01, height: 0.2}}]}\n"
       "  - {id: w, type: window, position: [10, 0, 1]}\n");
-  const auto result = run_command({VSL_WORLD_BIN, "stats", path, "--link-threshold", "2"});
+  const std::string config = write_temp("localizer.yaml", "world_graph: {link_threshold_m: 0.5}\n");
+  // --link-threshold overrides the config file's value.
+  const auto result =
+      run_command({VSL_WORLD_BIN, "stats", path, "--config", config, "--link-threshold", "2"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("primitives: 2\n"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("  box                         1\n"), std::string::npos) << result.out;
@@ -69,6 +78,9 @@ TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
   EXPECT_NE(result.out.find("bounding box: [-0.500, -0.010, 0.000] .. [10.000, 0.010, 2.000] m"),
             std::string::npos)
       << result.out;
+  const auto typed = run_command({VSL_WORLD_BIN, "stats", path, "--config", config});
+  EXPECT_NE(typed.out.find("graph: 3 nodes, 0 links (link threshold 0.5 m)"), std::string::npos)
+      << typed.out;
 }
 
 }  // namespace

@@ -3,26 +3,31 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "vsl/config/node.hpp"
 #include "vsl/world/world_graph.hpp"
+#include "vsl/world/world_graph_options.hpp"
 #include "vsl/world/world_io.hpp"
 
 namespace {
 
 constexpr const char* kUsage = R"(usage: vsl-world check FILE
-       vsl-world stats FILE [--link-threshold METRES] [--node-types TYPE,TYPE,...]
+       vsl-world stats FILE [--config FILE] [--link-threshold METRES] [--node-types T,T,...]
 
 Validates a vsl world-model file (format: docs/world-model.md).
   check   validate; prints a one-line summary, or the one-line error and exits 2
   stats   primitives by kind, objects by type, world-graph links (paper Eq. 6) and the
           bounding box of all geometry (world frame, metres)
 options:
-  --link-threshold M   varpi of Eq. 6, metres (default 4)
-  --node-types LIST    only these object types become graph nodes (default: all)
+  --config FILE        read the world_graph section (link_threshold_m, node_types) of a
+                       localizer config such as config/localizer.yaml
+  --link-threshold M   varpi of Eq. 6, metres (default 4; overrides --config)
+  --node-types LIST    only these object types become graph nodes (default: all; overrides
+                       --config)
 exit codes: 0 ok, 2 bad file or usage
 )";
 
@@ -44,28 +49,15 @@ struct Options {
 Options parse(int argc, char** argv) {
   Options options;
   std::vector<std::string> positional;
+  std::optional<std::string> config_file, threshold, node_types;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--link-threshold" || arg == "--node-types") {
+    } else if (arg == "--link-threshold" || arg == "--node-types" || arg == "--config") {
       if (i + 1 >= argc) usage_error(arg + " needs a value");
-      const std::string value = argv[++i];
-      if (arg == "--link-threshold") {
-        try {
-          std::size_t used = 0;
-          options.graph.link_threshold_m = std::stod(value, &used);
-          if (used != value.size() || !(options.graph.link_threshold_m > 0)) throw 0;
-        } catch (...) {
-          usage_error("--link-threshold must be a positive number of metres, got '" + value + "'");
-        }
-      } else {
-        std::stringstream list(value);
-        for (std::string type; std::getline(list, type, ',');) {
-          if (!type.empty()) options.graph.node_types.push_back(type);
-        }
-      }
+      (arg == "--config" ? config_file : arg == "--link-threshold" ? threshold : node_types) = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
       usage_error("unknown option " + arg);
     } else {
@@ -77,6 +69,29 @@ Options parse(int argc, char** argv) {
   }
   options.command = positional[0];
   options.file = positional[1];
+  if (config_file) {
+    const auto root = vsl::config::Node::load_file(*config_file);
+    root.expect_map();
+    if (const auto section = root.find("world_graph")) {
+      options.graph = vsl::world::world_graph_options_from(*section);
+    }
+  }
+  if (threshold) {
+    try {
+      std::size_t used = 0;
+      options.graph.link_threshold_m = std::stod(*threshold, &used);
+      if (used != threshold->size() || !(options.graph.link_threshold_m > 0)) throw 0;
+    } catch (...) {
+      usage_error("--link-threshold must be a positive number of metres, got '" + *threshold + "'");
+    }
+  }
+  if (node_types) {
+    options.graph.node_types.clear();
+    std::stringstream list(*node_types);
+    for (std::string type; std::getline(list, type, ',');) {
+      if (!type.empty()) options.graph.node_types.push_back(type);
+    }
+  }
   return options;
 }
 
@@ -143,8 +158,8 @@ void print_stats(const vsl::world::WorldModel& world, const Options& options, do
 }  // namespace
 
 int main(int argc, char** argv) {
-  const Options options = parse(argc, argv);
   try {
+    const Options options = parse(argc, argv);
     const auto start = std::chrono::steady_clock::now();
     const vsl::world::WorldModel world = vsl::world::load_world(options.file);
     const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
