@@ -65,7 +65,7 @@ TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
       "  - {id: h, type: handle, position: [0.3, 0, 1], parent: d,\n"
       "     primitives: [{cylinder: {radius: 0.01, height: 0.2}}]}\n"
       "  - {id: w, type: window, position: [10, 0, 1]}\n");
-  const std::string config = write_temp("localizer.yaml", "world_graph: {link_threshold_m: 0.5}\n");
+  const std::string config = write_temp("localizer.yaml", "world_graph: {link_threshold_m: 0.2}\n");
   // --link-threshold overrides the config file's value.
   const auto result =
       run_command({VSL_WORLD_BIN, "stats", path, "--config", config, "--link-threshold", "2"});
@@ -79,7 +79,7 @@ TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
             std::string::npos)
       << result.out;
   const auto typed = run_command({VSL_WORLD_BIN, "stats", path, "--config", config});
-  EXPECT_NE(typed.out.find("graph: 3 nodes, 0 links (link threshold 0.5 m)"), std::string::npos)
+  EXPECT_NE(typed.out.find("graph: 3 nodes, 0 links (link threshold 0.2 m)"), std::string::npos)
       << typed.out;
 }
 
