@@ -57,6 +57,18 @@ TEST(WorldGraph, LinksMatchBruteForce) {
 TEST(WorldGraph, TypedQueriesMatchBruteForce) {
   const WorldModel world = random_world(7, 500, 10.0);
   const WorldGraph graph = WorldGraph::build(world, {3.5, {}});
+  // Every ordered pair within the threshold, measured once by brute force.
+  struct OrderedPair {
+    NodeIndex i, j;
+    double d;
+  };
+  std::vector<OrderedPair> close_pairs;
+  for (NodeIndex i = 0; i < graph.node_count(); ++i) {
+    for (NodeIndex j = 0; j < graph.node_count(); ++j) {
+      const double d = (graph.world_position_m(i) - graph.world_position_m(j)).norm();
+      if (i != j && d < 3.5) close_pairs.push_back({i, j, d});
+    }
+  }
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> phi(0.0, 3.5);
   for (int query = 0; query < 200; ++query) {
@@ -65,13 +77,11 @@ TEST(WorldGraph, TypedQueriesMatchBruteForce) {
     const double center = phi(rng);
     const double tau = 0.05 + 0.3 * (rng() % 4);
     std::set<std::pair<NodeIndex, NodeIndex>> expected;
-    for (NodeIndex i = 0; i < graph.node_count(); ++i) {
-      for (NodeIndex j = 0; j < graph.node_count(); ++j) {
-        if (i == j || graph.type(i) != a || graph.type(j) != b) continue;
-        const double d = (graph.world_position_m(i) - graph.world_position_m(j)).norm();
-        // Compare in float, as stored: the query's bounds are inclusive.
-        const float df = static_cast<float>(d);
-        if (d < 3.5 && df >= center - tau && df <= center + tau) expected.insert({i, j});
+    for (const OrderedPair& p : close_pairs) {
+      // Compare in float, as stored: the query's bounds are inclusive.
+      const float df = static_cast<float>(p.d);
+      if (graph.type(p.i) == a && graph.type(p.j) == b && df >= center - tau && df <= center + tau) {
+        expected.insert({p.i, p.j});
       }
     }
     std::set<std::pair<NodeIndex, NodeIndex>> got;
