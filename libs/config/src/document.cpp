@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <string_view>
 #include <unordered_map>
 
 #include "vsl/config/node.hpp"
@@ -23,33 +24,39 @@ struct EventGuard {
   ~EventGuard() { yaml_event_delete(&event); }
 };
 
-bool is_plain_null(const yaml_event_t& event, const std::string& text) {
+bool is_plain_null(const yaml_event_t& event, std::string_view text) {
   if (event.data.scalar.style != YAML_PLAIN_SCALAR_STYLE) return false;
   return text.empty() || text == "~" || text == "null" || text == "Null" || text == "NULL";
 }
 
-// A container being filled: its entry and the children seen so far.
+// A container being filled: its entry, and where its children start in the shared pending stack.
 struct Open {
   std::uint32_t entry;
-  std::vector<std::uint32_t> children;
+  std::size_t first_pending;
 };
 
-void check_duplicate_keys(const Document& doc, const Open& map) {
-  // Maps in world and config files are small except the occasional palette; sort a copy of keys.
-  std::vector<std::pair<const std::string*, std::uint32_t>> keys;
-  keys.reserve(map.children.size() / 2);
-  for (std::size_t i = 0; i < map.children.size(); i += 2) {
-    keys.emplace_back(&doc.entries[map.children[i]].scalar, map.children[i]);
-  }
-  if (keys.size() < 2) return;
-  std::sort(keys.begin(), keys.end(),
-            [](const auto& a, const auto& b) { return *a.first < *b.first || (*a.first == *b.first && a.second < b.second); });
-  for (std::size_t i = 1; i < keys.size(); ++i) {
-    if (*keys[i].first == *keys[i - 1].first) {
-      const auto& later = doc.entries[std::max(keys[i].second, keys[i - 1].second)];
-      throw Error(format_error(doc.source, static_cast<int>(later.line), *keys[i].first,
-                               "duplicate key"));
+// `keys` are the entry indices of one map's keys. Config and world maps are small; the rare big one
+// (a material palette) is sorted.
+void check_duplicate_keys(const Document& doc, const std::uint32_t* keys, std::size_t count) {
+  auto report = [&](std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t later = std::max(a, b);
+    throw Error(format_error(doc.source, static_cast<int>(doc.entries[later].line),
+                             std::string(doc.scalar(later)), "duplicate key"));
+  };
+  if (count <= 16) {
+    for (std::size_t i = 1; i < count; ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (doc.scalar(keys[i]) == doc.scalar(keys[j])) report(keys[j], keys[i]);
+      }
     }
+    return;
+  }
+  std::vector<std::uint32_t> sorted(keys, keys + count);
+  std::sort(sorted.begin(), sorted.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return doc.scalar(a) < doc.scalar(b) || (doc.scalar(a) == doc.scalar(b) && a < b);
+  });
+  for (std::size_t i = 1; i < count; ++i) {
+    if (doc.scalar(sorted[i]) == doc.scalar(sorted[i - 1])) report(sorted[i - 1], sorted[i]);
   }
 }
 
@@ -67,6 +74,9 @@ Document Document::parse(const std::string& text, const std::string& source_name
                                text.size());
 
   std::vector<Open> stack;
+  // Children of all open containers, innermost last: one buffer instead of a vector per container.
+  std::vector<std::uint32_t> pending;
+  doc.text.reserve(text.size() / 2);
   std::unordered_map<std::string, std::uint32_t> anchors;
   bool document_done = false;
 
@@ -77,9 +87,10 @@ Document Document::parse(const std::string& text, const std::string& source_name
       if (doc.root == kNone) doc.root = index;
       return;
     }
-    Open& top = stack.back();
+    const Open& top = stack.back();
     const Entry& container = doc.entries[top.entry];
-    if (container.kind == Kind::kMap && top.children.size() % 2 == 0) {
+    const std::size_t seen = pending.size() - top.first_pending;
+    if (container.kind == Kind::kMap && seen % 2 == 0) {
       // This node is a key: keys must be plain text.
       if (doc.entries[index].kind != Kind::kScalar && doc.entries[index].kind != Kind::kNull) {
         throw Error(format_error(source_name, static_cast<int>(doc.entries[index].line), "",
@@ -89,11 +100,10 @@ Document Document::parse(const std::string& text, const std::string& source_name
     if (!is_alias) {
       Entry& entry = doc.entries[index];
       entry.parent = top.entry;
-      entry.slot = container.kind == Kind::kMap
-                       ? (top.children.size() % 2 == 1 ? top.children.back() : index)
-                       : static_cast<std::uint32_t>(top.children.size());
+      entry.slot = container.kind == Kind::kMap ? (seen % 2 == 1 ? pending.back() : index)
+                                                : static_cast<std::uint32_t>(seen);
     }
-    top.children.push_back(index);
+    pending.push_back(index);
   };
 
   auto new_entry = [&](Kind kind, const yaml_event_t& event) {
@@ -138,11 +148,13 @@ Document Document::parse(const std::string& text, const std::string& source_name
         document_done = true;
         break;
       case YAML_SCALAR_EVENT: {
-        std::string value(reinterpret_cast<const char*>(event.data.scalar.value),
-                          event.data.scalar.length);
+        const std::string_view value(reinterpret_cast<const char*>(event.data.scalar.value),
+                                     event.data.scalar.length);
         const bool null = is_plain_null(event, value);
         const std::uint32_t index = new_entry(null ? Kind::kNull : Kind::kScalar, event);
-        doc.entries[index].scalar = std::move(value);
+        doc.entries[index].text_offset = doc.text.size();
+        doc.entries[index].text_length = static_cast<std::uint32_t>(value.size());
+        doc.text.append(value);
         remember_anchor(event.data.scalar.anchor, index);
         attach(index, false);
         break;
@@ -163,19 +175,31 @@ Document Document::parse(const std::string& text, const std::string& source_name
         remember_anchor(is_map ? event.data.mapping_start.anchor : event.data.sequence_start.anchor,
                         index);
         attach(index, false);
-        stack.push_back(Open{index, {}});
+        stack.push_back(Open{index, pending.size()});
         break;
       }
       case YAML_SEQUENCE_END_EVENT:
       case YAML_MAPPING_END_EVENT: {
-        Open top = std::move(stack.back());
+        const Open top = stack.back();
         stack.pop_back();
+        const std::size_t count = pending.size() - top.first_pending;
         Entry& entry = doc.entries[top.entry];
-        if (entry.kind == Kind::kMap) check_duplicate_keys(doc, top);
         entry.first_child = static_cast<std::uint32_t>(doc.children.size());
-        entry.child_count = static_cast<std::uint32_t>(
-            entry.kind == Kind::kMap ? top.children.size() / 2 : top.children.size());
-        doc.children.insert(doc.children.end(), top.children.begin(), top.children.end());
+        entry.child_count = static_cast<std::uint32_t>(entry.kind == Kind::kMap ? count / 2 : count);
+        doc.children.insert(doc.children.end(), pending.begin() + static_cast<std::ptrdiff_t>(top.first_pending), pending.end());
+        pending.resize(top.first_pending);
+        if (entry.kind == Kind::kMap) {
+          // Keys are every other child.
+          std::uint32_t keys_small[16];
+          std::vector<std::uint32_t> keys_big;
+          std::uint32_t* keys = keys_small;
+          if (entry.child_count > 16) {
+            keys_big.resize(entry.child_count);
+            keys = keys_big.data();
+          }
+          for (std::uint32_t i = 0; i < entry.child_count; ++i) keys[i] = doc.children[entry.first_child + 2 * i];
+          check_duplicate_keys(doc, keys, entry.child_count);
+        }
         break;
       }
       default:

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vsl::config {
@@ -18,13 +19,20 @@ struct Document {
     std::uint32_t slot = 0;          // in a map: the entry index of its key; in a list: position
     std::uint32_t first_child = 0;   // into `children`; maps hold key, value, key, value, ...
     std::uint32_t child_count = 0;   // number of values (pairs for maps)
-    std::string scalar;              // the text of a scalar (or of a map key)
+    std::uint64_t text_offset = 0;   // a scalar's text (or a map key's): text[offset, +length)
+    std::uint32_t text_length = 0;
   };
 
   std::string source;  // file name used in messages
   std::vector<Entry> entries;
+  std::string text;    // every scalar's text, back to back: one allocation, not one per scalar
   std::vector<std::uint32_t> children;
   std::uint32_t root = kNone;
+
+  std::string_view scalar(std::uint32_t index) const {
+    const Entry& entry = entries[index];
+    return std::string_view(text).substr(entry.text_offset, entry.text_length);
+  }
 
   // Parses with libyaml. Throws Error naming source:line for syntax errors and duplicate keys.
   static Document parse(const std::string& text, const std::string& source_name);

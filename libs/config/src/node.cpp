@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -34,12 +35,20 @@ Node::Node(std::shared_ptr<const Document> document, std::uint32_t index)
     : document_(std::move(document)), index_(index) {}
 
 Node Node::load_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw Error(format_error(path, 0, "", "is a directory, not a file"));
+  }
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw Error(format_error(path, 0, "", "cannot open file"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(format_error(path, 0, "", "cannot read file"));
-  return load_string(text.str(), path);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw Error(format_error(path, 0, "", "cannot read file"));
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(text.data(), static_cast<std::streamsize>(text.size()))) {
+    throw Error(format_error(path, 0, "", "cannot read file"));
+  }
+  return load_string(text, path);
 }
 
 Node Node::load_string(const std::string& text, const std::string& source_name) {
@@ -59,7 +68,7 @@ std::string Node::path() const {
     const Document::Entry& entry = document_->entries[index];
     const Document::Entry& parent = document_->entries[entry.parent];
     if (parent.kind == Kind::kMap) {
-      parts.push_back("." + document_->entries[entry.slot].scalar);
+      parts.push_back("." + std::string(document_->scalar(entry.slot)));
     } else {
       parts.push_back("[" + std::to_string(entry.slot) + "]");
     }
@@ -75,7 +84,7 @@ bool Node::is_map() const { return document_->entries[index_].kind == Kind::kMap
 bool Node::is_sequence() const { return document_->entries[index_].kind == Kind::kSequence; }
 bool Node::is_scalar() const { return document_->entries[index_].kind == Kind::kScalar; }
 bool Node::is_null() const { return document_->entries[index_].kind == Kind::kNull; }
-const std::string& Node::scalar() const { return document_->entries[index_].scalar; }
+std::string_view Node::scalar() const { return document_->scalar(index_); }
 
 void Node::fail(const std::string& what) const {
   throw Error(format_error(source(), line(), path(), what));
@@ -88,7 +97,7 @@ std::string Node::describe_kind() const {
     case Kind::kSequence: return "a list";
     case Kind::kScalar: break;
   }
-  return "'" + scalar() + "'";
+  return "'" + std::string(scalar()) + "'";
 }
 
 void Node::expect_map() const {
@@ -110,7 +119,7 @@ std::optional<Node> Node::find(const std::string& key) const {
   const Document::Entry& entry = document_->entries[index_];
   for (std::uint32_t i = 0; i < entry.child_count; ++i) {
     const std::uint32_t key_index = document_->children[entry.first_child + 2 * i];
-    if (document_->entries[key_index].scalar == key) {
+    if (document_->scalar(key_index) == key) {
       const std::uint32_t value = document_->children[entry.first_child + 2 * i + 1];
       if (document_->entries[value].kind == Kind::kNull) return std::nullopt;
       return Node(document_, value);
@@ -131,7 +140,7 @@ std::vector<std::string> Node::keys() const {
       throw Error(format_error(source(), static_cast<int>(key.line), path(),
                                "map key must be text"));
     }
-    out.push_back(key.scalar);
+    out.emplace_back(document_->scalar(key_index));
   }
   return out;
 }
@@ -141,15 +150,16 @@ void Node::expect_keys(std::initializer_list<const char*> allowed) const {
   expect_map();
   const Document::Entry& entry = document_->entries[index_];
   for (std::uint32_t i = 0; i < entry.child_count; ++i) {
-    const Document::Entry& key_entry =
-        document_->entries[document_->children[entry.first_child + 2 * i]];
-    const std::string& key = key_entry.scalar;
+    const std::uint32_t key_index = document_->children[entry.first_child + 2 * i];
+    const Document::Entry& key_entry = document_->entries[key_index];
+    const std::string_view key = document_->scalar(key_index);
     const bool known = std::any_of(allowed.begin(), allowed.end(),
                                    [&](const char* name) { return key == name; });
     if (!known) {
       std::string list;
       for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
-      throw Error(format_error(source(), static_cast<int>(key_entry.line), join_path(path(), key),
+      throw Error(format_error(source(), static_cast<int>(key_entry.line),
+                               join_path(path(), std::string(key)),
                                "unknown key (allowed: " + list + ")"));
     }
   }
@@ -167,33 +177,33 @@ Node Node::operator[](std::size_t index) const {
 
 double Node::as_double() const {
   if (!is_scalar()) fail("expected a number, got " + describe_kind());
-  const std::string& text = scalar();
+  const std::string_view text = scalar();
   double value = 0.0;
   const char* begin = text.data();
   const char* end = text.data() + text.size();
   if (begin != end && *begin == '+') ++begin;
   const auto [ptr, ec] = std::from_chars(begin, end, value);
   if (ec != std::errc() || ptr != end || begin == end) {
-    fail("expected a number, got '" + text + "'");
+    fail("expected a number, got '" + std::string(text) + "'");
   }
-  if (!std::isfinite(value)) fail("expected a finite number, got '" + text + "'");
+  if (!std::isfinite(value)) fail("expected a finite number, got '" + std::string(text) + "'");
   return value;
 }
 
 std::int64_t Node::as_int() const {
   if (!is_scalar()) fail("expected an integer, got " + describe_kind());
-  const std::string& text = scalar();
+  const std::string_view text = scalar();
   std::int64_t value = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || ptr != text.data() + text.size() || text.empty()) {
-    fail("expected an integer, got '" + text + "'");
+    fail("expected an integer, got '" + std::string(text) + "'");
   }
   return value;
 }
 
 bool Node::as_bool() const {
   if (is_scalar()) {
-    const std::string& text = scalar();
+    const std::string_view text = scalar();
     if (text == "true" || text == "True" || text == "yes" || text == "on") return true;
     if (text == "false" || text == "False" || text == "no" || text == "off") return false;
   }
@@ -202,7 +212,7 @@ bool Node::as_bool() const {
 
 std::string Node::as_string() const {
   if (!is_scalar()) fail("expected text, got " + describe_kind());
-  return scalar();
+  return std::string(scalar());
 }
 
 std::vector<double> Node::as_doubles() const {
@@ -236,7 +246,7 @@ double Node::as_double_in(double min, double max) const {
 
 double Node::as_positive_double() const {
   const double value = as_double();
-  if (!(value > 0.0)) fail("must be positive, got " + scalar());
+  if (!(value > 0.0)) fail("must be positive, got " + std::string(scalar()));
   return value;
 }
 

@@ -96,6 +96,7 @@ TEST(ConfigNode, AliasesResolveToTheAnchoredNode) {
 TEST(ConfigNode, MissingFileIsOneLine) {
   EXPECT_EQ(error_of([] { Node::load_file("/nonexistent/vsl.yaml"); }),
             "/nonexistent/vsl.yaml: cannot open file");
+  EXPECT_EQ(error_of([] { Node::load_file("/tmp"); }), "/tmp: is a directory, not a file");
 }
 
 TEST(ConfigNode, LoadsFromFile) {

@@ -10,18 +10,23 @@
 namespace vsl::world {
 namespace {
 
-// Shortest text that reads back as `value` rounded to `resolution`: positions to a micrometre,
-// angles and quaternion components to a nanoradian. Keeps generated files short and diff-able.
-std::string number(double value, double resolution) {
-  double rounded = std::round(value / resolution) * resolution;
-  if (rounded == 0.0) rounded = 0.0;  // no "-0"
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, rounded);
-  return std::string(buffer, result.ptr);
+// Fixed-point text with trailing zeros dropped: positions to a micrometre, angles and quaternion
+// components to a nanoradian. Keeps generated files short and diff-able.
+std::string number(double value, int decimals) {
+  char buffer[64];
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+  std::string out(buffer, result.ptr);
+  if (out.find('.') != std::string::npos) {
+    while (out.back() == '0') out.pop_back();
+    if (out.back() == '.') out.pop_back();
+  }
+  if (out == "-0") out = "0";
+  return out;
 }
 
-constexpr double kMetre = 1e-6;
-constexpr double kUnitless = 1e-9;
+constexpr int kMetre = 6;     // decimals: 1 um
+constexpr int kUnitless = 9;  // decimals: 1 nrad
 
 std::string vector3(const Eigen::Vector3d& v) {
   return "[" + number(v.x(), kMetre) + ", " + number(v.y(), kMetre) + ", " +
@@ -75,8 +80,10 @@ std::string orientation_value(const Eigen::Quaterniond& q_in, std::string* key) 
   Eigen::Quaterniond q = q_in.normalized();
   if (q.w() < 0) q.coeffs() *= -1.0;
   if (std::abs(q.x()) < 1e-12 && std::abs(q.y()) < 1e-12) {
-    const double yaw = 2.0 * std::atan2(q.z(), q.w());
+    double yaw = 2.0 * std::atan2(q.z(), q.w());
     if (std::abs(yaw) < 1e-12) return "";
+    // Half a turn either way is the same rotation; always write +pi so that text round-trips.
+    if (yaw < -M_PI + 1e-9) yaw = M_PI;
     *key = "yaw";
     return number(yaw, kUnitless);
   }

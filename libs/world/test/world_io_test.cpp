@@ -168,5 +168,20 @@ TEST(WorldWriter, RoundTripsThroughTheLoader) {
   EXPECT_EQ(again.str(), text.str());
 }
 
+TEST(WorldWriter, HalfTurnYawRoundTripsAsText) {
+  for (double yaw : {M_PI, -M_PI, M_PI - 1e-10, -M_PI + 1e-10, 3.0, -3.0}) {
+    WorldModel world;
+    ObjectModel object;
+    object.id = "a";
+    object.type = "door";
+    object.world_orientation = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
+    world.objects = {object};
+    std::ostringstream first, second;
+    write_world(world, first);
+    write_world(load_world_from_string(first.str(), "first.yaml"), second);
+    EXPECT_EQ(first.str(), second.str()) << "yaw " << yaw;
+  }
+}
+
 }  // namespace
 }  // namespace vsl::world

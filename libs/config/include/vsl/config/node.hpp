@@ -14,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vsl::config {
@@ -90,7 +91,7 @@ class Node {
   Node(std::shared_ptr<const Document> document, std::uint32_t index);
   std::vector<double> as_doubles_of_size(std::size_t n) const;
   std::string describe_kind() const;
-  const std::string& scalar() const;
+  std::string_view scalar() const;
 
   std::shared_ptr<const Document> document_;
   std::uint32_t index_ = 0;

@@ -1,0 +1,94 @@
+// A small logger object (there is no global one): one line per message,
+//   [2025-01-31T12:00:00.123456Z] [vsl-fusion] INFO fused 12 percepts
+// written to stderr with a single write() so that lines from several processes do not interleave.
+// Copyable: the bus and the daemon hold copies that share the sink.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+namespace vsl::runtime {
+
+enum class Level { kDebug, kInfo, kWarn, kError };
+
+// "debug", "info", "warn", "error" -> Level; nullopt for anything else.
+std::optional<Level> parse_level(std::string_view name);
+std::string_view level_name(Level level);  // "DEBUG", "INFO", "WARN", "ERROR"
+
+enum class TimeFormat { kIso, kUtime };  // ISO 8601 UTC with microseconds, or utime
+
+namespace detail {
+void append(std::string& out, std::string_view text);
+void append(std::string& out, const char* text);
+void append(std::string& out, char c);
+void append(std::string& out, bool value);
+void append_signed(std::string& out, long long value);
+void append_unsigned(std::string& out, unsigned long long value);
+void append_double(std::string& out, double value);
+template <class T>
+requires std::is_arithmetic_v<T>
+void append(std::string& out, T value) {
+  if constexpr (std::is_floating_point_v<T>) {
+    append_double(out, static_cast<double>(value));
+  } else if constexpr (std::is_signed_v<T>) {
+    append_signed(out, value);
+  } else {
+    append_unsigned(out, value);
+  }
+}
+}  // namespace detail
+
+class Logger {
+ public:
+  // Receives one complete line, '\n' included.
+  using Sink = std::function<void(std::string_view line)>;
+
+  // An empty sink writes to stderr.
+  explicit Logger(std::string process, Level level = Level::kInfo, Sink sink = {},
+                  TimeFormat time_format = TimeFormat::kIso);
+
+  const std::string& process() const { return process_; }
+  Level level() const { return level_; }
+  bool enabled(Level level) const { return level >= level_; }
+
+  // Writes one line; newlines inside `message` are escaped so that it stays one line.
+  void write(Level level, std::string_view message) const;
+
+  // log.info("fused ", n, " percepts in ", seconds, " s"): the arguments are concatenated (numbers
+  // in their shortest exact form) only when the level is enabled.
+  template <class... Args>
+  void log(Level level, const Args&... args) const {
+    if (!enabled(level)) return;
+    std::string text;
+    (detail::append(text, args), ...);
+    write(level, text);
+  }
+  template <class... Args>
+  void debug(const Args&... args) const {
+    log(Level::kDebug, args...);
+  }
+  template <class... Args>
+  void info(const Args&... args) const {
+    log(Level::kInfo, args...);
+  }
+  template <class... Args>
+  void warn(const Args&... args) const {
+    log(Level::kWarn, args...);
+  }
+  template <class... Args>
+  void error(const Args&... args) const {
+    log(Level::kError, args...);
+  }
+
+ private:
+  std::string process_;
+  Level level_;
+  Sink sink_;
+  TimeFormat time_format_;
+};
+
+}  // namespace vsl::runtime
