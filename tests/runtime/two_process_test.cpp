@@ -22,7 +22,7 @@ namespace vsl::runtime {
 namespace {
 
 using namespace std::chrono_literals;
-using testing::ChildProcess;
+using vsl::testing::ChildProcess;
 
 // recv_buf_size: with the kernel's default socket buffer (rmem_default, 208 KiB) liblcm 1.3.1
 // loses a message of about 200 kB (several UDP fragments) on this box; stereo frames are larger.

@@ -13,7 +13,7 @@
 
 extern char** environ;
 
-namespace vsl::runtime::testing {
+namespace vsl::testing {
 
 namespace {
 
@@ -142,4 +142,4 @@ std::optional<int> ChildProcess::wait(std::chrono::milliseconds timeout) {
   return status_;
 }
 
-}  // namespace vsl::runtime::testing
+}  // namespace vsl::testing

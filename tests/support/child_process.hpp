@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace vsl::runtime::testing {
+namespace vsl::testing {
 
 class ChildProcess {
  public:
@@ -42,4 +42,4 @@ class ChildProcess {
   std::string err_;
 };
 
-}  // namespace vsl::runtime::testing
+}  // namespace vsl::testing
