@@ -44,8 +44,10 @@ struct Loader {
 const std::vector<Loader>& loaders() {
   static const std::vector<Loader> kLoaders = {
       {"config/worlds/", load_world_file},
-      {"config/layouts/kitchen", [](const std::string& p) { vsl::worldgen::load_kitchen_layout(p); }},
-      {"config/layouts/building", [](const std::string& p) { vsl::worldgen::load_building_layout(p); }},
+      {"config/layouts/kitchen",
+       [](const std::string& p) { vsl::worldgen::load_kitchen_layout(p); }},
+      {"config/layouts/building",
+       [](const std::string& p) { vsl::worldgen::load_building_layout(p); }},
       {"config/localizer.yaml", load_localizer_config},
   };
   return kLoaders;

@@ -46,25 +46,26 @@ TEST(VslWorldCli, MissingFileAndBadUsageExit2) {
   result = run_command({VSL_WORLD_BIN, "stats", "x", "--link-threshold", "-1"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("--link-threshold must be a positive number"), std::string::npos);
-  const std::string bad_config =
-      write_temp("bad_localizer.yaml", "world_graph:\n  link_threshold_m: 4\n  node_type: [door]\n");
+  const std::string bad_config = write_temp(
+      "bad_localizer.yaml", "world_graph:\n  link_threshold_m: 4\n  node_type: [door]\n");
   result = run_command({VSL_WORLD_BIN, "stats", "x", "--config", bad_config});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_EQ(result.err, bad_config + ":3: world_graph.node_type: unknown key (allowed: "
-                                     "link_threshold_m, node_types)\n");
+  EXPECT_EQ(result.err, bad_config +
+                            ":3: world_graph.node_type: unknown key (allowed: "
+                            "link_threshold_m, node_types)\n");
   result = run_command({VSL_WORLD_BIN, "--help"});
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.out.find("usage: vsl-world check FILE"), std::string::npos);
 }
 
 TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
-  const std::string path = write_temp(
-      "stats_world.yaml",
-      "objects:\n"
-      "  - {id: d, type: door, position: [0, 0, 1], primitives: [{box: [1, 0.02, 2]}]}\n"
-      "  - {id: h, type: handle, position: [0.3, 0, 1], parent: d,\n"
-      "     primitives: [{cylinder: {radius: 0.01, height: 0.2}}]}\n"
-      "  - {id: w, type: window, position: [10, 0, 1]}\n");
+  const std::string path =
+      write_temp("stats_world.yaml",
+                 "objects:\n"
+                 "  - {id: d, type: door, position: [0, 0, 1], primitives: [{box: [1, 0.02, 2]}]}\n"
+                 "  - {id: h, type: handle, position: [0.3, 0, 1], parent: d,\n"
+                 "     primitives: [{cylinder: {radius: 0.01, height: 0.2}}]}\n"
+                 "  - {id: w, type: window, position: [10, 0, 1]}\n");
   const std::string config = write_temp("localizer.yaml", "world_graph: {link_threshold_m: 0.2}\n");
   // --link-threshold overrides the config file's value.
   const auto result =

@@ -57,7 +57,9 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     } else if (arg == "--link-threshold" || arg == "--node-types" || arg == "--config") {
       if (i + 1 >= argc) usage_error(arg + " needs a value");
-      (arg == "--config" ? config_file : arg == "--link-threshold" ? threshold : node_types) = argv[++i];
+      (arg == "--config"           ? config_file
+       : arg == "--link-threshold" ? threshold
+                                   : node_types) = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
       usage_error("unknown option " + arg);
     } else {
@@ -114,7 +116,8 @@ std::vector<Eigen::Vector3d> extreme_points(const vsl::world::Shape& shape) {
 }
 
 void print_stats(const vsl::world::WorldModel& world, const Options& options, double load_s) {
-  std::map<std::string, std::size_t> primitives_by_kind{{"box", 0}, {"cylinder", 0}, {"polyhedron", 0}};
+  std::map<std::string, std::size_t> primitives_by_kind{
+      {"box", 0}, {"cylinder", 0}, {"polyhedron", 0}};
   std::map<std::string, std::size_t> objects_by_type;
   Eigen::AlignedBox3d bounds;
   for (const auto& object : world.objects) {
@@ -127,21 +130,25 @@ void print_stats(const vsl::world::WorldModel& world, const Options& options, do
                                                                              : "polyhedron";
       ++primitives_by_kind[kind];
       const Eigen::Isometry3d world_T_primitive = world_T_object * primitive.object_T_primitive();
-      for (const Eigen::Vector3d& p : extreme_points(primitive.shape)) bounds.extend(world_T_primitive * p);
+      for (const Eigen::Vector3d& p : extreme_points(primitive.shape))
+        bounds.extend(world_T_primitive * p);
     }
   }
   const auto start = std::chrono::steady_clock::now();
   const auto graph = vsl::world::WorldGraph::build(world, options.graph);
-  const double graph_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double graph_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::printf("world: %s (%s)\n", world.name.empty() ? "(unnamed)" : world.name.c_str(),
               options.file.c_str());
   std::size_t total_primitives = 0;
   for (const auto& [kind, count] : primitives_by_kind) total_primitives += count;
   std::printf("primitives: %zu\n", total_primitives);
-  for (const auto& [kind, count] : primitives_by_kind) std::printf("  %-20s %8zu\n", kind.c_str(), count);
+  for (const auto& [kind, count] : primitives_by_kind)
+    std::printf("  %-20s %8zu\n", kind.c_str(), count);
   std::printf("objects: %zu\n", world.objects.size());
-  for (const auto& [type, count] : objects_by_type) std::printf("  %-20s %8zu\n", type.c_str(), count);
+  for (const auto& [type, count] : objects_by_type)
+    std::printf("  %-20s %8zu\n", type.c_str(), count);
   std::printf("materials: %zu\n", world.materials.size());
   std::printf("graph: %zu nodes, %zu links (link threshold %.3g m)\n", graph.node_count(),
               graph.link_count(), graph.link_threshold_m());
@@ -162,12 +169,13 @@ int main(int argc, char** argv) {
     const Options options = parse(argc, argv);
     const auto start = std::chrono::steady_clock::now();
     const vsl::world::WorldModel world = vsl::world::load_world(options.file);
-    const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double load_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.command == "check") {
       std::size_t primitives = 0;
       for (const auto& object : world.objects) primitives += object.primitives.size();
-      std::printf("%s: ok (%zu objects, %zu primitives)\n", options.file.c_str(), world.objects.size(),
-                  primitives);
+      std::printf("%s: ok (%zu objects, %zu primitives)\n", options.file.c_str(),
+                  world.objects.size(), primitives);
     } else {
       print_stats(world, options, load_s);
     }

@@ -124,8 +124,8 @@ Document Document::parse(const std::string& text, const std::string& source_name
       std::string what = "YAML syntax error: ";
       what += parser->problem != nullptr ? parser->problem : "unknown problem";
       if (parser->context != nullptr) what += std::string(" ") + parser->context;
-      throw Error(format_error(source_name, static_cast<int>(parser->problem_mark.line + 1), "",
-                               what));
+      throw Error(
+          format_error(source_name, static_cast<int>(parser->problem_mark.line + 1), "", what));
     }
     const yaml_event_t& event = guard.event;
     switch (event.type) {
@@ -185,8 +185,11 @@ Document Document::parse(const std::string& text, const std::string& source_name
         const std::size_t count = pending.size() - top.first_pending;
         Entry& entry = doc.entries[top.entry];
         entry.first_child = static_cast<std::uint32_t>(doc.children.size());
-        entry.child_count = static_cast<std::uint32_t>(entry.kind == Kind::kMap ? count / 2 : count);
-        doc.children.insert(doc.children.end(), pending.begin() + static_cast<std::ptrdiff_t>(top.first_pending), pending.end());
+        entry.child_count =
+            static_cast<std::uint32_t>(entry.kind == Kind::kMap ? count / 2 : count);
+        doc.children.insert(doc.children.end(),
+                            pending.begin() + static_cast<std::ptrdiff_t>(top.first_pending),
+                            pending.end());
         pending.resize(top.first_pending);
         if (entry.kind == Kind::kMap) {
           // Keys are every other child.
@@ -197,7 +200,8 @@ Document Document::parse(const std::string& text, const std::string& source_name
             keys_big.resize(entry.child_count);
             keys = keys_big.data();
           }
-          for (std::uint32_t i = 0; i < entry.child_count; ++i) keys[i] = doc.children[entry.first_child + 2 * i];
+          for (std::uint32_t i = 0; i < entry.child_count; ++i)
+            keys[i] = doc.children[entry.first_child + 2 * i];
           check_duplicate_keys(doc, keys, entry.child_count);
         }
         break;

@@ -14,18 +14,18 @@ struct Document {
 
   struct Entry {
     Kind kind = Kind::kNull;
-    std::uint32_t line = 0;          // 1-based line of the node's first character
-    std::uint32_t parent = kNone;    // containing map or sequence; kNone for the root
-    std::uint32_t slot = 0;          // in a map: the entry index of its key; in a list: position
-    std::uint32_t first_child = 0;   // into `children`; maps hold key, value, key, value, ...
-    std::uint32_t child_count = 0;   // number of values (pairs for maps)
-    std::uint64_t text_offset = 0;   // a scalar's text (or a map key's): text[offset, +length)
+    std::uint32_t line = 0;         // 1-based line of the node's first character
+    std::uint32_t parent = kNone;   // containing map or sequence; kNone for the root
+    std::uint32_t slot = 0;         // in a map: the entry index of its key; in a list: position
+    std::uint32_t first_child = 0;  // into `children`; maps hold key, value, key, value, ...
+    std::uint32_t child_count = 0;  // number of values (pairs for maps)
+    std::uint64_t text_offset = 0;  // a scalar's text (or a map key's): text[offset, +length)
     std::uint32_t text_length = 0;
   };
 
   std::string source;  // file name used in messages
   std::vector<Entry> entries;
-  std::string text;    // every scalar's text, back to back: one allocation, not one per scalar
+  std::string text;  // every scalar's text, back to back: one allocation, not one per scalar
   std::vector<std::uint32_t> children;
   std::uint32_t root = kNone;
 

@@ -57,8 +57,12 @@ Node Node::load_string(const std::string& text, const std::string& source_name) 
   return Node(std::move(document), root);
 }
 
-const std::string& Node::source() const { return document_->source; }
-int Node::line() const { return static_cast<int>(document_->entries[index_].line); }
+const std::string& Node::source() const {
+  return document_->source;
+}
+int Node::line() const {
+  return static_cast<int>(document_->entries[index_].line);
+}
 
 std::string Node::path() const {
   // Rebuilt from parent links only when a message needs it: the hot path never pays for it.
@@ -80,11 +84,21 @@ std::string Node::path() const {
   return out;
 }
 
-bool Node::is_map() const { return document_->entries[index_].kind == Kind::kMap; }
-bool Node::is_sequence() const { return document_->entries[index_].kind == Kind::kSequence; }
-bool Node::is_scalar() const { return document_->entries[index_].kind == Kind::kScalar; }
-bool Node::is_null() const { return document_->entries[index_].kind == Kind::kNull; }
-std::string_view Node::scalar() const { return document_->scalar(index_); }
+bool Node::is_map() const {
+  return document_->entries[index_].kind == Kind::kMap;
+}
+bool Node::is_sequence() const {
+  return document_->entries[index_].kind == Kind::kSequence;
+}
+bool Node::is_scalar() const {
+  return document_->entries[index_].kind == Kind::kScalar;
+}
+bool Node::is_null() const {
+  return document_->entries[index_].kind == Kind::kNull;
+}
+std::string_view Node::scalar() const {
+  return document_->scalar(index_);
+}
 
 void Node::fail(const std::string& what) const {
   throw Error(format_error(source(), line(), path(), what));
@@ -92,10 +106,14 @@ void Node::fail(const std::string& what) const {
 
 std::string Node::describe_kind() const {
   switch (document_->entries[index_].kind) {
-    case Kind::kNull: return "nothing";
-    case Kind::kMap: return "a map";
-    case Kind::kSequence: return "a list";
-    case Kind::kScalar: break;
+    case Kind::kNull:
+      return "nothing";
+    case Kind::kMap:
+      return "a map";
+    case Kind::kSequence:
+      return "a list";
+    case Kind::kScalar:
+      break;
   }
   return "'" + std::string(scalar()) + "'";
 }
@@ -137,8 +155,8 @@ std::vector<std::string> Node::keys() const {
     const std::uint32_t key_index = document_->children[entry.first_child + 2 * i];
     const Document::Entry& key = document_->entries[key_index];
     if (key.kind != Kind::kScalar) {
-      throw Error(format_error(source(), static_cast<int>(key.line), path(),
-                               "map key must be text"));
+      throw Error(
+          format_error(source(), static_cast<int>(key.line), path(), "map key must be text"));
     }
     out.emplace_back(document_->scalar(key_index));
   }
@@ -153,8 +171,8 @@ void Node::expect_keys(std::initializer_list<const char*> allowed) const {
     const std::uint32_t key_index = document_->children[entry.first_child + 2 * i];
     const Document::Entry& key_entry = document_->entries[key_index];
     const std::string_view key = document_->scalar(key_index);
-    const bool known = std::any_of(allowed.begin(), allowed.end(),
-                                   [&](const char* name) { return key == name; });
+    const bool known =
+        std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return key == name; });
     if (!known) {
       std::string list;
       for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);

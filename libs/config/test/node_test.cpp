@@ -71,12 +71,14 @@ TEST(ConfigNode, RejectsNonFiniteAndOutOfRange) {
   const Node root = Node::load_string("a: nan\nb: 1e999\nc: -1\nd: 1.5x\n", "r.yaml");
   EXPECT_EQ(error_of([&] { root.at("a").as_double(); }),
             "r.yaml:1: a: expected a finite number, got 'nan'");
-  EXPECT_EQ(error_of([&] { root.at("b").as_double(); }), "r.yaml:2: b: expected a number, got '1e999'");
+  EXPECT_EQ(error_of([&] { root.at("b").as_double(); }),
+            "r.yaml:2: b: expected a number, got '1e999'");
   EXPECT_EQ(error_of([&] { root.at("c").as_positive_double(); }),
             "r.yaml:3: c: must be positive, got -1");
   EXPECT_EQ(error_of([&] { root.at("c").as_double_in(0, 1); }),
             "r.yaml:3: c: must be in [0, 1], got -1");
-  EXPECT_EQ(error_of([&] { root.at("d").as_int(); }), "r.yaml:4: d: expected an integer, got '1.5x'");
+  EXPECT_EQ(error_of([&] { root.at("d").as_int(); }),
+            "r.yaml:4: d: expected an integer, got '1.5x'");
 }
 
 TEST(ConfigNode, SyntaxErrorsAndDuplicateKeysGiveTheLine) {

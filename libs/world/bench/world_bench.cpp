@@ -65,11 +65,16 @@ void BM_BuildGraphKitchen(benchmark::State& state) {
   const WorldModel world = vsl::world::load_world(kKitchen);
   const WorldGraphOptions all_objects{4.0, {}};
   for (auto _ : state) {
-    const WorldGraph graph = WorldGraph::build(world, state.range(0) ? localizer_graph_options() : all_objects);
+    const WorldGraph graph =
+        WorldGraph::build(world, state.range(0) ? localizer_graph_options() : all_objects);
     state.counters["links"] = static_cast<double>(graph.link_count());
   }
 }
-BENCHMARK(BM_BuildGraphKitchen)->Arg(0)->Arg(1)->ArgNames({"typed_only"})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BuildGraphKitchen)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgNames({"typed_only"})
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_BuildGraphBuilding(benchmark::State& state) {
   const WorldModel& world = building(static_cast<std::size_t>(state.range(0)));
@@ -100,8 +105,8 @@ BENCHMARK(BM_LoadAndBuildGraphBuilding)->Arg(100000)->Unit(benchmark::kMilliseco
 
 // Eq. 8: all door-handle links of length phi +- tau, phi drawn from the link lengths.
 void BM_TypedLinkQuery(benchmark::State& state) {
-  const WorldGraph graph =
-      WorldGraph::build(building(static_cast<std::size_t>(state.range(0))), localizer_graph_options());
+  const WorldGraph graph = WorldGraph::build(building(static_cast<std::size_t>(state.range(0))),
+                                             localizer_graph_options());
   const auto door = graph.find_type("door"), handle = graph.find_type("handle");
   if (!door || !handle) {
     state.SkipWithError("building has no doors or handles");
@@ -115,7 +120,8 @@ void BM_TypedLinkQuery(benchmark::State& state) {
     found += links.size();
     benchmark::DoNotOptimize(links.data());
   }
-  state.counters["links_per_query"] = benchmark::Counter(static_cast<double>(found), benchmark::Counter::kAvgIterations);
+  state.counters["links_per_query"] =
+      benchmark::Counter(static_cast<double>(found), benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_TypedLinkQuery)->Arg(1000)->Arg(100000);
 
@@ -123,7 +129,8 @@ void BM_DistanceLookup(benchmark::State& state) {
   const WorldGraph graph = WorldGraph::build(building(static_cast<std::size_t>(state.range(0))),
                                              localizer_graph_options());
   std::mt19937 rng(5);
-  std::uniform_int_distribution<vsl::world::NodeIndex> node(0, static_cast<vsl::world::NodeIndex>(graph.node_count() - 1));
+  std::uniform_int_distribution<vsl::world::NodeIndex> node(
+      0, static_cast<vsl::world::NodeIndex>(graph.node_count() - 1));
   for (auto _ : state) {
     const auto a = node(rng);
     const auto row = graph.neighbours(a);

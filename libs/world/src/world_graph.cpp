@@ -30,8 +30,9 @@ struct Cell {
 // a third of the graph build.
 void sort_by_length(std::vector<TypedLink>& links) {
   if (links.size() < 512) {
-    std::stable_sort(links.begin(), links.end(),
-                     [](const TypedLink& x, const TypedLink& y) { return x.length_m < y.length_m; });
+    std::stable_sort(links.begin(), links.end(), [](const TypedLink& x, const TypedLink& y) {
+      return x.length_m < y.length_m;
+    });
     return;
   }
   std::vector<TypedLink> buffer(links.size());
@@ -195,7 +196,9 @@ std::optional<TypeId> WorldGraph::find_type(const std::string& name) const {
   return static_cast<TypeId>(found - type_names_.begin());
 }
 
-std::size_t WorldGraph::count_of_type(TypeId type) const { return type_counts_.at(type); }
+std::size_t WorldGraph::count_of_type(TypeId type) const {
+  return type_counts_.at(type);
+}
 
 std::span<const Neighbour> WorldGraph::neighbours(NodeIndex node) const {
   return {neighbours_.data() + row_start_[node], row_start_[node + 1] - row_start_[node]};
@@ -209,26 +212,25 @@ std::optional<float> WorldGraph::distance(NodeIndex a, NodeIndex b) const {
   return found->distance_m;
 }
 
-std::span<const TypedLink> WorldGraph::links(TypeId from_type, TypeId to_type,
-                                             double min_length_m, double max_length_m) const {
+std::span<const TypedLink> WorldGraph::links(TypeId from_type, TypeId to_type, double min_length_m,
+                                             double max_length_m) const {
   const std::size_t t = type_names_.size();
   if (from_type >= t || to_type >= t || min_length_m > max_length_m) return {};
   const std::vector<TypedLink>& list = typed_links_[from_type * t + to_type];
-  const auto begin = std::lower_bound(
-      list.begin(), list.end(), min_length_m,
-      [](const TypedLink& link, double value) { return link.length_m < value; });
-  const auto end = std::upper_bound(
-      begin, list.end(), max_length_m,
-      [](double value, const TypedLink& link) { return value < link.length_m; });
+  const auto begin =
+      std::lower_bound(list.begin(), list.end(), min_length_m,
+                       [](const TypedLink& link, double value) { return link.length_m < value; });
+  const auto end =
+      std::upper_bound(begin, list.end(), max_length_m,
+                       [](double value, const TypedLink& link) { return value < link.length_m; });
   return {list.data() + (begin - list.begin()), static_cast<std::size_t>(end - begin)};
 }
 
 std::size_t WorldGraph::memory_bytes() const {
-  std::size_t bytes = object_index_.capacity() * sizeof(std::size_t) +
-                      positions_.capacity() * sizeof(Eigen::Vector3d) +
-                      types_.capacity() * sizeof(TypeId) +
-                      row_start_.capacity() * sizeof(std::size_t) +
-                      neighbours_.capacity() * sizeof(Neighbour);
+  std::size_t bytes =
+      object_index_.capacity() * sizeof(std::size_t) +
+      positions_.capacity() * sizeof(Eigen::Vector3d) + types_.capacity() * sizeof(TypeId) +
+      row_start_.capacity() * sizeof(std::size_t) + neighbours_.capacity() * sizeof(Neighbour);
   for (const auto& list : typed_links_) bytes += list.capacity() * sizeof(TypedLink);
   return bytes;
 }

@@ -10,7 +10,8 @@ WorldGraphOptions world_graph_options_from(const config::Node& section) {
     options.link_threshold_m = threshold->as_double_in(0.01, 1000.0);
   }
   if (const auto types = section.find("node_types")) {
-    for (std::size_t i = 0; i < types->size(); ++i) options.node_types.push_back((*types)[i].as_string());
+    for (std::size_t i = 0; i < types->size(); ++i)
+      options.node_types.push_back((*types)[i].as_string());
   }
   return options;
 }

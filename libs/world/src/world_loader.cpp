@@ -112,7 +112,8 @@ Polyhedron polyhedron(const Node& node) {
   double volume = 0.0;
   for (const auto& loop : out.faces) {
     for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
-      volume += out.vertices_m[loop[0]].dot(out.vertices_m[loop[k]].cross(out.vertices_m[loop[k + 1]]));
+      volume +=
+          out.vertices_m[loop[0]].dot(out.vertices_m[loop[k]].cross(out.vertices_m[loop[k + 1]]));
     }
   }
   if (!(volume > 0.0)) faces.fail("faces are clockwise seen from outside (or the volume is zero)");
@@ -155,8 +156,8 @@ struct ParentReference {
 };
 
 ObjectModel object(const Node& node, const WorldModel& world) {
-  node.expect_keys({"id", "type", "position", "orientation", "rpy", "yaw", "size", "parent",
-                    "primitives"});
+  node.expect_keys(
+      {"id", "type", "position", "orientation", "rpy", "yaw", "size", "parent", "primitives"});
   ObjectModel out;
   out.id = node.at("id").as_string();
   out.type = node.at("type").as_string();
@@ -167,7 +168,8 @@ ObjectModel object(const Node& node, const WorldModel& world) {
   if (const auto primitives = node.find("primitives")) {
     const std::size_t count = primitives->size();
     out.primitives.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) out.primitives.push_back(primitive((*primitives)[i], world));
+    for (std::size_t i = 0; i < count; ++i)
+      out.primitives.push_back(primitive((*primitives)[i], world));
   }
   return out;
 }
@@ -239,7 +241,9 @@ WorldModel world_from(const Node& root) {
 
 }  // namespace
 
-WorldModel load_world(const std::string& path) { return world_from(Node::load_file(path)); }
+WorldModel load_world(const std::string& path) {
+  return world_from(Node::load_file(path));
+}
 
 WorldModel load_world_from_string(const std::string& text, const std::string& source_name) {
   return world_from(Node::load_string(text, source_name));

@@ -29,8 +29,8 @@ constexpr int kMetre = 6;     // decimals: 1 um
 constexpr int kUnitless = 9;  // decimals: 1 nrad
 
 std::string vector3(const Eigen::Vector3d& v) {
-  return "[" + number(v.x(), kMetre) + ", " + number(v.y(), kMetre) + ", " +
-         number(v.z(), kMetre) + "]";
+  return "[" + number(v.x(), kMetre) + ", " + number(v.y(), kMetre) + ", " + number(v.z(), kMetre) +
+         "]";
 }
 
 bool plain_safe(const std::string& text) {
@@ -122,7 +122,8 @@ void write_primitive(const Primitive& p, const WorldModel& world, std::ostream& 
   if (!value.empty()) out << ", " << key << ": " << value;
   const Material* material = p.material.empty() ? nullptr : world.find_material(p.material);
   if (material != nullptr) out << ", material: " << text(p.material);
-  if (material == nullptr || !(material->colour == p.colour)) out << ", colour: " << colour(p.colour);
+  if (material == nullptr || !(material->colour == p.colour))
+    out << ", colour: " << colour(p.colour);
   out << "}\n";
 }
 

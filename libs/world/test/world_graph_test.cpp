@@ -37,7 +37,8 @@ TEST(WorldGraph, LinksMatchBruteForce) {
     std::size_t expected_links = 0;
     for (std::size_t i = 0; i < world.objects.size(); ++i) {
       for (std::size_t j = i + 1; j < world.objects.size(); ++j) {
-        const double d = (world.objects[i].world_position_m - world.objects[j].world_position_m).norm();
+        const double d =
+            (world.objects[i].world_position_m - world.objects[j].world_position_m).norm();
         const auto lookup = graph.distance(static_cast<NodeIndex>(i), static_cast<NodeIndex>(j));
         if (d < threshold) {
           ++expected_links;
@@ -80,7 +81,8 @@ TEST(WorldGraph, TypedQueriesMatchBruteForce) {
     for (const OrderedPair& p : close_pairs) {
       // Compare in float, as stored: the query's bounds are inclusive.
       const float df = static_cast<float>(p.d);
-      if (graph.type(p.i) == a && graph.type(p.j) == b && df >= center - tau && df <= center + tau) {
+      if (graph.type(p.i) == a && graph.type(p.j) == b && df >= center - tau &&
+          df <= center + tau) {
         expected.insert({p.i, p.j});
       }
     }
@@ -108,7 +110,8 @@ TEST(WorldGraph, NodeTypesSelectTheNodeSet) {
   for (NodeIndex i = 0; i < graph.node_count(); ++i) {
     EXPECT_EQ(world.objects[graph.object_index(i)].type, graph.type_name(graph.type(i)));
   }
-  EXPECT_EQ(graph.count_of_type(*graph.find_type("door")) + graph.count_of_type(*graph.find_type("handle")),
+  EXPECT_EQ(graph.count_of_type(*graph.find_type("door")) +
+                graph.count_of_type(*graph.find_type("handle")),
             expected);
 }
 

@@ -24,7 +24,8 @@ constexpr const char* kTetrahedron =
 
 TEST(WorldLoader, MinimalFileIsAListOfIdTypePosition) {
   const WorldModel world = load_world_from_string(
-      "- {id: d1, type: door, position: [1, 2, 0.9]}\n- {id: h1, type: handle, position: [1, 2, 1]}\n",
+      "- {id: d1, type: door, position: [1, 2, 0.9]}\n- {id: h1, type: handle, position: [1, 2, "
+      "1]}\n",
       "minimal.yaml");
   ASSERT_EQ(world.objects.size(), 2u);
   EXPECT_EQ(world.objects[1].type, "handle");
@@ -38,14 +39,16 @@ TEST(WorldLoader, FullFormat) {
       std::string("name: test\n"
                   "materials:\n  panel: {colour: \"#d9c7a3\"}\n  steel: {colour: \"#3C3F44\"}\n"
                   "objects:\n"
-                  "  - id: cup\n    type: cupboard\n    position: [0, 0, 0.4]\n    yaw: 1.5707963267948966\n"
+                  "  - id: cup\n    type: cupboard\n    position: [0, 0, 0.4]\n    yaw: "
+                  "1.5707963267948966\n"
                   "  - id: door\n    type: door\n    position: [0.3, 0, 0.4]\n"
                   "    orientation: [1, 0, 0, 0]\n    size: [0.6, 0.02, 0.7]\n    parent: cup\n"
                   "    primitives:\n"
                   "      - {box: [0.6, 0.02, 0.7], material: panel}\n"
                   "      - {cylinder: {radius: 0.006, height: 0.16}, position: [0, 0.03, 0], "
                   "rpy: [1.5707963267948966, 0, 0], material: steel, colour: \"#ff0000\"}\n"
-                  "      - {") + kTetrahedron + "}\n",
+                  "      - {") +
+          kTetrahedron + "}\n",
       "full.yaml");
   EXPECT_EQ(world.name, "test");
   ASSERT_EQ(world.objects.size(), 2u);
@@ -88,12 +91,14 @@ TEST(WorldLoader, EveryErrorNamesFileLineKeyAndWhat) {
                      "orientation: [2, 0, 0, 0]}\n"),
             "w.yaml:2: objects[0].orientation: must be a unit quaternion [w, x, y, z], norm is "
             "2.000000");
-  EXPECT_EQ(error_of("objects:\n  - {id: a, type: door, position: [0, 0, 0], yaw: 1, rpy: [0, 0, 1]}\n"),
-            "w.yaml:2: objects[0].rpy: give only one of orientation, rpy and yaw");
-  EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
-                     "    primitives:\n      - {box: [1, 1, 1], cylinder: {radius: 1, height: 1}}\n"),
-            "w.yaml:6: objects[0].primitives[0]: a primitive needs exactly one of box, cylinder, "
-            "polyhedron");
+  EXPECT_EQ(
+      error_of("objects:\n  - {id: a, type: door, position: [0, 0, 0], yaw: 1, rpy: [0, 0, 1]}\n"),
+      "w.yaml:2: objects[0].rpy: give only one of orientation, rpy and yaw");
+  EXPECT_EQ(
+      error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
+               "    primitives:\n      - {box: [1, 1, 1], cylinder: {radius: 1, height: 1}}\n"),
+      "w.yaml:6: objects[0].primitives[0]: a primitive needs exactly one of box, cylinder, "
+      "polyhedron");
   EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
                      "    primitives:\n      - {box: [1, 1, 1], material: oak}\n"),
             "w.yaml:6: objects[0].primitives[0].material: unknown material 'oak'");
@@ -102,23 +107,31 @@ TEST(WorldLoader, EveryErrorNamesFileLineKeyAndWhat) {
   EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
                      "    primitives:\n      - {cylinder: {radius: -1, height: 1}}\n"),
             "w.yaml:6: objects[0].primitives[0].cylinder.radius: must be positive, got -1");
-  EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
-                     "    primitives:\n      - {polyhedron: {vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "
-                     "faces: [[0,1,2],[0,1,3],[0,3,2],[1,2,3]]}}\n"),
-            "w.yaml:6: objects[0].primitives[0].polyhedron.faces[1]: edge 0-1 is used twice in the "
-            "same direction: faces must all be counter-clockwise seen from outside");
-  EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
-                     "    primitives:\n      - {polyhedron: {vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "
-                     "faces: [[0,2,1],[0,1,3],[0,3,2],[1,2,7]]}}\n"),
-            "w.yaml:6: objects[0].primitives[0].polyhedron.faces[3][2]: vertex index 7 out of range "
-            "[0, 3]");
-  EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
-                     "    primitives:\n      - {polyhedron: {vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "
-                     "faces: [[0,1,2],[0,3,1],[0,2,3],[1,3,2]]}}\n"),
-            "w.yaml:6: objects[0].primitives[0].polyhedron.faces: faces are clockwise seen from "
-            "outside (or the volume is zero)");
+  EXPECT_EQ(
+      error_of(
+          "objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
+          "    primitives:\n      - {polyhedron: {vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "
+          "faces: [[0,1,2],[0,1,3],[0,3,2],[1,2,3]]}}\n"),
+      "w.yaml:6: objects[0].primitives[0].polyhedron.faces[1]: edge 0-1 is used twice in the "
+      "same direction: faces must all be counter-clockwise seen from outside");
+  EXPECT_EQ(
+      error_of(
+          "objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
+          "    primitives:\n      - {polyhedron: {vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "
+          "faces: [[0,2,1],[0,1,3],[0,3,2],[1,2,7]]}}\n"),
+      "w.yaml:6: objects[0].primitives[0].polyhedron.faces[3][2]: vertex index 7 out of range "
+      "[0, 3]");
+  EXPECT_EQ(
+      error_of(
+          "objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
+          "    primitives:\n      - {polyhedron: {vertices: [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "
+          "faces: [[0,1,2],[0,3,1],[0,2,3],[1,3,2]]}}\n"),
+      "w.yaml:6: objects[0].primitives[0].polyhedron.faces: faces are clockwise seen from "
+      "outside (or the volume is zero)");
   EXPECT_EQ(error_of("name: x\n"), "w.yaml:1: objects: missing required key");
-  EXPECT_EQ(error_of("objects: [\n"), "w.yaml:2: YAML syntax error: did not find expected node content while parsing a flow node");
+  EXPECT_EQ(
+      error_of("objects: [\n"),
+      "w.yaml:2: YAML syntax error: did not find expected node content while parsing a flow node");
 }
 
 TEST(WorldWriter, RoundTripsThroughTheLoader) {
@@ -129,7 +142,8 @@ TEST(WorldWriter, RoundTripsThroughTheLoader) {
   door.id = "door-1";
   door.type = "door";
   door.world_position_m = {1.25, -2.5, 0.875};
-  door.world_orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
+  door.world_orientation =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
   door.size_m = Eigen::Vector3d(0.6, 0.02, 0.7);
   Primitive panel;
   panel.shape = Box{Eigen::Vector3d(0.6, 0.02, 0.7)};
@@ -160,8 +174,9 @@ TEST(WorldWriter, RoundTripsThroughTheLoader) {
   EXPECT_NEAR(back.objects[0].world_orientation.angularDistance(door.world_orientation), 0.0, 1e-8);
   EXPECT_EQ(back.objects[0].primitives[0].material, "panel");
   EXPECT_EQ(back.objects[0].primitives[1].colour, (Colour{1, 2, 3}));
-  EXPECT_NEAR(back.objects[0].primitives[1].object_orientation.angularDistance(bar.object_orientation),
-              0.0, 1e-8);
+  EXPECT_NEAR(
+      back.objects[0].primitives[1].object_orientation.angularDistance(bar.object_orientation), 0.0,
+      1e-8);
   // Writing what was read gives the same text: the format is a fixed point.
   std::ostringstream again;
   write_world(back, again);
