@@ -62,7 +62,8 @@ void check_duplicate_keys(const Document& doc, const std::uint32_t* keys, std::s
 
 }  // namespace
 
-Document Document::parse(const std::string& text, const std::string& source_name) {
+Document Document::parse(std::string_view text, const std::string& source_name,
+                         std::uint32_t first_line) {
   Document doc;
   doc.source = source_name;
   std::unique_ptr<yaml_parser_t, ParserDeleter> parser(new yaml_parser_t);
@@ -109,7 +110,7 @@ Document Document::parse(const std::string& text, const std::string& source_name
   auto new_entry = [&](Kind kind, const yaml_event_t& event) {
     Entry entry;
     entry.kind = kind;
-    entry.line = static_cast<std::uint32_t>(event.start_mark.line + 1);
+    entry.line = static_cast<std::uint32_t>(event.start_mark.line + first_line);
     doc.entries.push_back(std::move(entry));
     return static_cast<std::uint32_t>(doc.entries.size() - 1);
   };
@@ -125,7 +126,7 @@ Document Document::parse(const std::string& text, const std::string& source_name
       what += parser->problem != nullptr ? parser->problem : "unknown problem";
       if (parser->context != nullptr) what += std::string(" ") + parser->context;
       throw Error(
-          format_error(source_name, static_cast<int>(parser->problem_mark.line + 1), "", what));
+          format_error(source_name, static_cast<int>(parser->problem_mark.line + first_line), "", what));
     }
     const yaml_event_t& event = guard.event;
     switch (event.type) {
@@ -133,14 +134,14 @@ Document Document::parse(const std::string& text, const std::string& source_name
         if (doc.root == kNone) {
           // An empty file is an empty document: a null root.
           Entry entry;
-          entry.line = 1;
+          entry.line = first_line;
           doc.entries.push_back(entry);
           doc.root = 0;
         }
         return doc;
       case YAML_DOCUMENT_START_EVENT:
         if (document_done) {
-          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + 1), "",
+          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + first_line), "",
                                    "only one YAML document per file is supported"));
         }
         break;
@@ -162,7 +163,7 @@ Document Document::parse(const std::string& text, const std::string& source_name
       case YAML_ALIAS_EVENT: {
         const auto found = anchors.find(reinterpret_cast<const char*>(event.data.alias.anchor));
         if (found == anchors.end()) {
-          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + 1), "",
+          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + first_line), "",
                                    "unknown alias"));
         }
         attach(found->second, true);

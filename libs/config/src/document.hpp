@@ -35,7 +35,10 @@ struct Document {
   }
 
   // Parses with libyaml. Throws Error naming source:line for syntax errors and duplicate keys.
-  static Document parse(const std::string& text, const std::string& source_name);
+  // `first_line` is the line of `text`'s first character in the file (for documents cut out of a
+  // multi-document stream).
+  static Document parse(std::string_view text, const std::string& source_name,
+                        std::uint32_t first_line = 1);
 };
 
 }  // namespace vsl::config

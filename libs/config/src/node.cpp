@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <sstream>
 
 namespace vsl::config {
@@ -34,7 +35,9 @@ using Kind = Document::Kind;
 Node::Node(std::shared_ptr<const Document> document, std::uint32_t index)
     : document_(std::move(document)), index_(index) {}
 
-Node Node::load_file(const std::string& path) {
+namespace {
+
+std::string read_file(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
     throw Error(format_error(path, 0, "", "is a directory, not a file"));
@@ -48,7 +51,84 @@ Node Node::load_file(const std::string& path) {
   if (!in.read(text.data(), static_cast<std::streamsize>(text.size()))) {
     throw Error(format_error(path, 0, "", "cannot read file"));
   }
-  return load_string(text, path);
+  return text;
+}
+
+// A line that starts a document: `---` followed by a blank or the end of the line. YAML forbids
+// such a line inside any node (c-forbidden), so cutting the stream there never splits a node.
+bool is_document_marker(std::string_view text, std::size_t at) {
+  if (text.compare(at, 3, "---") != 0) return false;
+  if (at + 3 == text.size()) return true;
+  const char next = text[at + 3];
+  return next == ' ' || next == '\t' || next == '\n' || next == '\r';
+}
+
+struct Piece {
+  std::string_view text;
+  std::uint32_t first_line;
+};
+
+std::vector<Piece> split_documents(std::string_view text) {
+  std::vector<Piece> pieces;
+  std::size_t start = 0;
+  std::uint32_t start_line = 1, line = 1;
+  for (std::size_t at = 0; at < text.size();) {
+    if (at != start && is_document_marker(text, at)) {
+      pieces.push_back({text.substr(start, at - start), start_line});
+      start = at;
+      start_line = line;
+    }
+    const std::size_t newline = text.find('\n', at);
+    if (newline == std::string_view::npos) break;
+    at = newline + 1;
+    ++line;
+  }
+  pieces.push_back({text.substr(start), start_line});
+  return pieces;
+}
+
+}  // namespace
+
+Node Node::load_file(const std::string& path) { return load_string(read_file(path), path); }
+
+std::vector<Node> Node::load_file_documents(const std::string& path, unsigned threads) {
+  return load_string_documents(read_file(path), path, threads);
+}
+
+std::vector<Node> Node::load_string_documents(const std::string& text,
+                                              const std::string& source_name, unsigned threads) {
+  const std::vector<Piece> pieces = split_documents(text);
+  std::vector<std::shared_ptr<const Document>> documents(pieces.size());
+  std::vector<std::exception_ptr> errors(pieces.size());
+  const std::size_t workers = std::max<std::size_t>(
+      1, std::min<std::size_t>(threads ? threads : std::thread::hardware_concurrency(),
+                               pieces.size()));
+  auto parse_every_nth = [&](std::size_t worker) {
+    for (std::size_t k = worker; k < pieces.size(); k += workers) {
+      try {
+        documents[k] = std::make_shared<const Document>(
+            Document::parse(pieces[k].text, source_name, pieces[k].first_line));
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(parse_every_nth, w);
+    parse_every_nth(0);
+  }
+  // The first error in file order is the one reported, whichever thread met it first.
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+  std::vector<Node> nodes;
+  for (const auto& document : documents) {
+    Node node(document, document->root);
+    if (!node.is_null()) nodes.push_back(node);
+  }
+  if (nodes.empty()) nodes.push_back(Node(documents.front(), documents.front()->root));
+  return nodes;
 }
 
 Node Node::load_string(const std::string& text, const std::string& source_name) {

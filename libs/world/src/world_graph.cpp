@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 #include <unordered_map>
 
 namespace vsl::world {
@@ -111,42 +112,64 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
     NodeIndex a, b;
     float d;
   };
-  std::vector<Pair> pairs;
-  std::vector<std::uint32_t> degree(n, 0);
-  std::vector<Neighbour> found;  // partners of the current node
-  for (std::size_t i = 0; i < n; ++i) {
-    const Cell c = cells[i];
-    // Keys of the 27 cells around; deduplicated because far-out coordinates wrap in cell_key.
-    std::array<std::uint64_t, 27> keys{};
-    std::size_t key_count = 0;
-    for (std::int64_t dx = -1; dx <= 1; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const std::uint64_t key = cell_key(c.x + dx, c.y + dy, c.z + dz);
-          if (std::find(keys.begin(), keys.begin() + key_count, key) == keys.begin() + key_count) {
-            keys[key_count++] = key;
+  auto find_pairs = [&](std::size_t first, std::size_t last, std::vector<Pair>& pairs) {
+    std::vector<Neighbour> found;  // partners of the current node
+    for (std::size_t i = first; i < last; ++i) {
+      const Cell c = cells[i];
+      // Keys of the 27 cells around; deduplicated because far-out coordinates wrap in cell_key.
+      std::array<std::uint64_t, 27> keys{};
+      std::size_t key_count = 0;
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            const std::uint64_t key = cell_key(c.x + dx, c.y + dy, c.z + dz);
+            if (std::find(keys.begin(), keys.begin() + key_count, key) == keys.begin() + key_count) {
+              keys[key_count++] = key;
+            }
           }
         }
       }
-    }
-    found.clear();
-    for (std::size_t k_cell = 0; k_cell < key_count; ++k_cell) {
-      const auto range = cell_range.find(keys[k_cell]);
-      if (range == cell_range.end()) continue;
-      for (std::size_t k = range->second.first; k < range->second.second; ++k) {
-        const NodeIndex j = order[k].second;
-        if (j <= i) continue;
-        const double d_sq = (graph.positions_[i] - graph.positions_[j]).squaredNorm();
-        if (d_sq < threshold_sq) found.push_back({j, static_cast<float>(std::sqrt(d_sq))});
+      found.clear();
+      for (std::size_t k_cell = 0; k_cell < key_count; ++k_cell) {
+        const auto range = cell_range.find(keys[k_cell]);
+        if (range == cell_range.end()) continue;
+        for (std::size_t k = range->second.first; k < range->second.second; ++k) {
+          const NodeIndex j = order[k].second;
+          if (j <= i) continue;
+          const double d_sq = (graph.positions_[i] - graph.positions_[j]).squaredNorm();
+          if (d_sq < threshold_sq) found.push_back({j, static_cast<float>(std::sqrt(d_sq))});
+        }
+      }
+      std::sort(found.begin(), found.end(),
+                [](const Neighbour& x, const Neighbour& y) { return x.node < y.node; });
+      for (const Neighbour& partner : found) {
+        pairs.push_back({static_cast<NodeIndex>(i), partner.node, partner.distance_m});
       }
     }
-    std::sort(found.begin(), found.end(),
-              [](const Neighbour& x, const Neighbour& y) { return x.node < y.node; });
-    for (const Neighbour& partner : found) {
-      pairs.push_back({static_cast<NodeIndex>(i), partner.node, partner.distance_m});
-      ++degree[i];
-      ++degree[partner.node];
+  };
+  // Node ranges searched on separate threads, concatenated in range order: the result does not
+  // depend on the number of threads.
+  const std::size_t threads = std::max<std::size_t>(
+      1, std::min<std::size_t>(options.threads ? options.threads : std::thread::hardware_concurrency(),
+                               n / 1024 + 1));
+  std::vector<std::vector<Pair>> chunk_pairs(threads);
+  {
+    std::vector<std::jthread> workers;
+    for (std::size_t w = 1; w < threads; ++w) {
+      workers.emplace_back(find_pairs, n * w / threads, n * (w + 1) / threads,
+                           std::ref(chunk_pairs[w]));
     }
+    find_pairs(0, n / threads, chunk_pairs[0]);
+  }
+  std::vector<Pair> pairs = std::move(chunk_pairs[0]);
+  for (std::size_t w = 1; w < threads; ++w) {
+    pairs.insert(pairs.end(), chunk_pairs[w].begin(), chunk_pairs[w].end());
+    std::vector<Pair>().swap(chunk_pairs[w]);
+  }
+  std::vector<std::uint32_t> degree(n, 0);
+  for (const Pair& p : pairs) {
+    ++degree[p.a];
+    ++degree[p.b];
   }
 
   // Compressed adjacency rows. Row r receives first its partners a < r (in increasing a, as pairs
@@ -177,8 +200,19 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
     if (ta <= tb) graph.typed_links_[ta * t + tb].push_back({p.d, p.a, p.b});
     if (tb <= ta) graph.typed_links_[tb * t + ta].push_back({p.d, p.b, p.a});
   }
+  // Each unordered type pair's list is sorted (and mirrored) independently: spread the lists over
+  // the threads, the largest first.
+  std::vector<std::pair<std::size_t, std::size_t>> lists;  // (lo, hi)
   for (std::size_t lo = 0; lo < t; ++lo) {
-    for (std::size_t hi = lo; hi < t; ++hi) {
+    for (std::size_t hi = lo; hi < t; ++hi) lists.emplace_back(lo, hi);
+  }
+  std::sort(lists.begin(), lists.end(), [&](const auto& x, const auto& y) {
+    return graph.typed_links_[x.first * t + x.second].size() >
+           graph.typed_links_[y.first * t + y.second].size();
+  });
+  auto sort_lists = [&](std::size_t worker) {
+    for (std::size_t k = worker; k < lists.size(); k += threads) {
+      const auto [lo, hi] = lists[k];
       auto& list = graph.typed_links_[lo * t + hi];
       sort_by_length(list);
       if (lo == hi) continue;
@@ -186,6 +220,11 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
       reverse.reserve(list.size());
       for (const TypedLink& link : list) reverse.push_back({link.length_m, link.to, link.from});
     }
+  };
+  {
+    std::vector<std::jthread> workers;
+    for (std::size_t w = 1; w < threads; ++w) workers.emplace_back(sort_lists, w);
+    sort_lists(0);
   }
   return graph;
 }

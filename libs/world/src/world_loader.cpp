@@ -1,6 +1,7 @@
 // World-model file loader: YAML (docs/world-model.md) -> validated WorldModel.
 #include <cmath>
 #include <map>
+#include <thread>
 #include <unordered_map>
 
 #include "vsl/config/node.hpp"
@@ -201,38 +202,87 @@ void check_parents(const WorldModel& world, const std::vector<ParentReference>& 
   }
 }
 
-WorldModel world_from(const Node& root) {
+// The objects of one document, converted on its own thread.
+struct DocumentObjects {
+  Node list;
+  std::vector<ObjectModel> objects;
+};
+
+// Documents after the first hold more objects: a bare list, or a map with only `objects`.
+Node objects_of(const Node& document, bool first, WorldModel& world) {
+  if (document.is_sequence()) return document;
+  if (!first) {
+    document.expect_keys({"objects"});
+    return document.at("objects");
+  }
+  document.expect_keys({"name", "materials", "objects"});
+  world.name = document.get("name", "");
+  if (const auto materials = document.find("materials")) {
+    for (const std::string& name : materials->keys()) {
+      const Node material = materials->at(name);
+      material.expect_keys({"colour"});
+      world.materials.push_back(Material{name, colour(material.at("colour"))});
+    }
+  }
+  return document.at("objects");
+}
+
+WorldModel world_from(const std::vector<Node>& documents) {
   WorldModel world;
-  std::optional<Node> objects;
-  if (root.is_sequence()) {
-    objects = root;  // the minimal file: a bare list of objects
-  } else {
-    root.expect_keys({"name", "materials", "objects"});
-    world.name = root.get("name", "");
-    if (const auto materials = root.find("materials")) {
-      for (const std::string& name : materials->keys()) {
-        const Node material = materials->at(name);
-        material.expect_keys({"colour"});
-        world.materials.push_back(Material{name, colour(material.at("colour"))});
+  std::vector<DocumentObjects> parts;
+  for (std::size_t d = 0; d < documents.size(); ++d) {
+    parts.push_back({objects_of(documents[d], d == 0, world), {}});
+    parts.back().list.size();  // a list, or the error names where
+  }
+
+  // Convert each document's objects on its own thread (materials are complete and read-only).
+  std::vector<std::exception_ptr> errors(parts.size());
+  const std::size_t workers = std::max<std::size_t>(
+      1, std::min<std::size_t>(std::thread::hardware_concurrency(), parts.size()));
+  auto convert_every_nth = [&](std::size_t worker) {
+    for (std::size_t k = worker; k < parts.size(); k += workers) {
+      try {
+        const std::size_t count = parts[k].list.size();
+        parts[k].objects.reserve(count);
+        for (std::size_t i = 0; i < count; ++i) {
+          parts[k].objects.push_back(object(parts[k].list[i], world));
+        }
+      } catch (...) {
+        errors[k] = std::current_exception();
       }
     }
-    objects = root.at("objects");
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(convert_every_nth, w);
+    convert_every_nth(0);
   }
-  const std::size_t count = objects->size();
-  world.objects.reserve(count);
-  std::unordered_map<std::string, std::size_t> first_line_by_id;
-  first_line_by_id.reserve(count);
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+
+  std::size_t total = 0;
+  for (const DocumentObjects& part : parts) total += part.objects.size();
+  world.objects.reserve(total);
+  // Where each id was first defined (document, position), for the rare duplicate's message.
+  std::unordered_map<std::string, std::pair<std::size_t, std::size_t>> first_definition;
+  first_definition.reserve(total);
   std::vector<ParentReference> parents;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Node node = (*objects)[i];
-    world.objects.push_back(object(node, world));
-    const auto [it, inserted] =
-        first_line_by_id.emplace(world.objects.back().id, static_cast<std::size_t>(node.line()));
-    if (!inserted) {
-      node.at("id").fail("duplicate id '" + it->first + "' (first defined on line " +
-                         std::to_string(it->second) + ")");
+  for (std::size_t d = 0; d < parts.size(); ++d) {
+    DocumentObjects& part = parts[d];
+    for (std::size_t i = 0; i < part.objects.size(); ++i) {
+      world.objects.push_back(std::move(part.objects[i]));
+      const ObjectModel& added = world.objects.back();
+      const auto [it, inserted] = first_definition.emplace(added.id, std::make_pair(d, i));
+      if (!inserted) {
+        const int first_line = parts[it->second.first].list[it->second.second].line();
+        part.list[i].at("id").fail("duplicate id '" + it->first + "' (first defined on line " +
+                                   std::to_string(first_line) + ")");
+      }
+      if (!added.parent_id.empty()) {
+        parents.push_back({world.objects.size() - 1, part.list[i].at("parent")});
+      }
     }
-    if (!world.objects.back().parent_id.empty()) parents.push_back({i, node.at("parent")});
   }
   world.index_ids();
   check_parents(world, parents);
@@ -242,11 +292,11 @@ WorldModel world_from(const Node& root) {
 }  // namespace
 
 WorldModel load_world(const std::string& path) {
-  return world_from(Node::load_file(path));
+  return world_from(Node::load_file_documents(path));
 }
 
 WorldModel load_world_from_string(const std::string& text, const std::string& source_name) {
-  return world_from(Node::load_string(text, source_name));
+  return world_from(Node::load_string_documents(text, source_name));
 }
 
 }  // namespace vsl::world

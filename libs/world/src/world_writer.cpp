@@ -130,6 +130,11 @@ void write_primitive(const Primitive& p, const WorldModel& world, std::ostream& 
 }  // namespace
 
 void write_world(const WorldModel& world, std::ostream& out) {
+  if (world.objects.empty()) {
+    if (!world.name.empty()) out << "name: " << text(world.name) << "\n";
+    out << "objects: []\n";
+    return;
+  }
   if (!world.name.empty()) out << "name: " << text(world.name) << "\n";
   if (!world.materials.empty()) {
     out << "materials:\n";
@@ -138,7 +143,10 @@ void write_world(const WorldModel& world, std::ostream& out) {
     }
   }
   out << "objects:\n";
-  for (const ObjectModel& o : world.objects) {
+  for (std::size_t index = 0; index < world.objects.size(); ++index) {
+    // Big worlds become a stream of documents that load_world parses in parallel.
+    if (index > 0 && index % kObjectsPerDocument == 0) out << "---\nobjects:\n";
+    const ObjectModel& o = world.objects[index];
     out << "  - id: " << text(o.id) << "\n";
     out << "    type: " << text(o.type) << "\n";
     out << "    position: " << vector3(o.world_position_m) << "\n";

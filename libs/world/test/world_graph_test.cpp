@@ -99,6 +99,33 @@ TEST(WorldGraph, TypedQueriesMatchBruteForce) {
   }
 }
 
+TEST(WorldGraph, SameGraphWithAnyNumberOfThreads) {
+  const WorldModel world = random_world(9, 5000, 30.0);
+  WorldGraphOptions one{3.0, {}, 1};
+  WorldGraphOptions three{3.0, {}, 3};
+  const WorldGraph a = WorldGraph::build(world, one);
+  const WorldGraph b = WorldGraph::build(world, three);
+  ASSERT_EQ(a.link_count(), b.link_count());
+  for (NodeIndex i = 0; i < a.node_count(); ++i) {
+    const auto ra = a.neighbours(i), rb = b.neighbours(i);
+    ASSERT_EQ(ra.size(), rb.size());
+    for (std::size_t k = 0; k < ra.size(); ++k) {
+      ASSERT_EQ(ra[k].node, rb[k].node);
+      ASSERT_EQ(ra[k].distance_m, rb[k].distance_m);
+    }
+  }
+  for (TypeId x = 0; x < a.type_count(); ++x) {
+    for (TypeId y = 0; y < a.type_count(); ++y) {
+      const auto la = a.links(x, y, 0.0, 3.0), lb = b.links(x, y, 0.0, 3.0);
+      ASSERT_EQ(la.size(), lb.size());
+      for (std::size_t k = 0; k < la.size(); ++k) {
+        ASSERT_EQ(la[k].from, lb[k].from);
+        ASSERT_EQ(la[k].to, lb[k].to);
+      }
+    }
+  }
+}
+
 TEST(WorldGraph, NodeTypesSelectTheNodeSet) {
   const WorldModel world = random_world(5, 200, 5.0);
   const WorldGraph graph = WorldGraph::build(world, {2.0, {"door", "handle"}});

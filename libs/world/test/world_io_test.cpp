@@ -183,6 +183,63 @@ TEST(WorldWriter, RoundTripsThroughTheLoader) {
   EXPECT_EQ(again.str(), text.str());
 }
 
+TEST(WorldLoader, AStreamOfDocumentsIsOneWorld) {
+  const std::string text =
+      "name: split\nmaterials: {panel: {colour: \"#102030\"}}\n"
+      "objects:\n  - {id: a, type: door, position: [0, 0, 1]}\n"
+      "---\n"
+      "# more objects\n"
+      "objects:\n  - {id: b, type: handle, position: [0.3, 0, 1], parent: a,\n"
+      "     primitives: [{box: [1, 1, 1], material: panel}]}\n"
+      "---\n"
+      "- {id: c, type: window, position: [2, 0, 1], parent: b}\n";
+  const WorldModel world = load_world_from_string(text, "split.yaml");
+  ASSERT_EQ(world.objects.size(), 3u);
+  EXPECT_EQ(world.name, "split");
+  EXPECT_EQ(world.objects[1].primitives[0].colour, (Colour{0x10, 0x20, 0x30}));
+  EXPECT_EQ(world.objects[2].parent_id, "b");
+  // Errors name the line in the whole file, whichever document it is in.
+  EXPECT_EQ(error_of("objects:\n  - {id: a, type: door, position: [0, 0, 1]}\n---\n"
+                     "objects:\n  - {id: b, type: door, position: [0, 1]}\n"),
+            "w.yaml:5: objects[0].position: expected 3 numbers, got 2");
+  EXPECT_EQ(error_of("objects:\n  - {id: a, type: door, position: [0, 0, 1]}\n---\n"
+                     "objects:\n  - {id: a, type: door, position: [0, 1, 1]}\n"),
+            "w.yaml:5: objects[0].id: duplicate id 'a' (first defined on line 2)");
+  EXPECT_EQ(error_of("objects: []\n---\nname: x\nobjects: []\n"),
+            "w.yaml:3: name: unknown key (allowed: objects)");
+  EXPECT_EQ(error_of("objects: []\n---\nobjects: [\n"),
+            "w.yaml:4: YAML syntax error: did not find expected node content while parsing a flow "
+            "node");
+}
+
+TEST(WorldWriter, BigWorldsAreWrittenAsDocumentsAndReadBack) {
+  WorldModel world;
+  world.name = "big";
+  for (std::size_t i = 0; i < 2 * kObjectsPerDocument + 5; ++i) {
+    ObjectModel o;
+    o.id = "o" + std::to_string(i);
+    o.type = i % 2 ? "door" : "handle";
+    o.world_position_m = {0.001 * static_cast<double>(i), 1.0, 2.0};
+    if (i > 0) o.parent_id = "o" + std::to_string(i - 1);
+    world.objects.push_back(o);
+  }
+  std::ostringstream text;
+  write_world(world, text);
+  std::size_t markers = 0;
+  for (std::size_t at = text.str().find("\n---\n"); at != std::string::npos;
+       at = text.str().find("\n---\n", at + 1)) {
+    ++markers;
+  }
+  EXPECT_EQ(markers, 2u);
+  const WorldModel back = load_world_from_string(text.str(), "big.yaml");
+  ASSERT_EQ(back.objects.size(), world.objects.size());
+  EXPECT_EQ(back.objects.back().parent_id, world.objects[world.objects.size() - 2].id);
+  EXPECT_EQ(back.find("o12345"), std::optional<std::size_t>(12345));
+  std::ostringstream again;
+  write_world(back, again);
+  EXPECT_EQ(again.str(), text.str());
+}
+
 TEST(WorldWriter, HalfTurnYawRoundTripsAsText) {
   for (double yaw : {M_PI, -M_PI, M_PI - 1e-10, -M_PI + 1e-10, 3.0, -3.0}) {
     WorldModel world;

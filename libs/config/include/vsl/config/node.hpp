@@ -36,6 +36,15 @@ class Node {
   // Parses text; `source_name` stands in for the file name in messages.
   static Node load_string(const std::string& text, const std::string& source_name);
 
+  // A file that may hold several YAML documents (a stream separated by `---` lines; a big world
+  // is written as a header document and chunks of objects). The documents are parsed in parallel
+  // on up to `threads` threads (0: one per hardware thread); every node still reports its line in
+  // the whole file. Documents holding nothing (only comments) are left out unless all are empty.
+  static std::vector<Node> load_file_documents(const std::string& path, unsigned threads = 0);
+  static std::vector<Node> load_string_documents(const std::string& text,
+                                                 const std::string& source_name,
+                                                 unsigned threads = 0);
+
   const std::string& source() const;
   std::string path() const;  // "objects[3].position", "" for the root
   int line() const;          // 1-based

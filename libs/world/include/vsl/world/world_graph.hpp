@@ -25,6 +25,8 @@ struct WorldGraphOptions {
   // Object types that become nodes; empty means every object. Walls and floors have no
   // recognizer, so leaving them out keeps the graph to what percepts can match.
   std::vector<std::string> node_types;
+  // Threads for building; 0 means one per hardware thread. The graph is the same for any value.
+  unsigned threads = 0;
 };
 
 // One end of a link as seen from the other node.
