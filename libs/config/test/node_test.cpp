@@ -90,6 +90,29 @@ TEST(ConfigNode, SyntaxErrorsAndDuplicateKeysGiveTheLine) {
             "m.yaml:2: only one YAML document per file is supported");
 }
 
+TEST(ConfigNode, DocumentStreamsKeepFileLines) {
+  const std::string text =
+      "# header comment only\n---\na: 1\n---\n- x\n- y\n--- # trailing comment\nb: [1, 2]\n"
+      "--- \n";
+  for (unsigned threads : {1u, 2u, 5u}) {
+    const std::vector<Node> documents = Node::load_string_documents(text, "s.yaml", threads);
+    ASSERT_EQ(documents.size(), 3u);  // the comment-only and the empty document are left out
+    EXPECT_EQ(documents[0].at("a").line(), 3);
+    EXPECT_EQ(documents[1][1].as_string(), "y");
+    EXPECT_EQ(documents[1][1].line(), 6);
+    EXPECT_EQ(documents[2].at("b").line(), 8);
+  }
+  // A line that merely starts with dashes is not a document marker.
+  const auto one = Node::load_string_documents("a: |\n  ---x\nb: 2\n", "t.yaml");
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].at("a").as_string(), "---x\n");
+  EXPECT_TRUE(Node::load_string_documents("", "e.yaml")[0].is_null());
+  // The first error in file order is reported, whatever thread parsed it.
+  EXPECT_EQ(error_of([] { Node::load_string_documents("a: [\n---\nb: [\n", "x.yaml", 2); })
+                .rfind("x.yaml:2: YAML syntax error", 0),
+            0u);
+}
+
 TEST(ConfigNode, AliasesResolveToTheAnchoredNode) {
   const Node root = Node::load_string("base: &b [1, 2, 3]\ncopy: *b\n", "a.yaml");
   EXPECT_EQ(root.at("copy").as_array<3>()[2], 3.0);

@@ -4,6 +4,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "vsl/config/eigen.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/world/world_io.hpp"
 
@@ -11,14 +12,10 @@ namespace vsl::world {
 namespace {
 
 using config::Node;
-
-Eigen::Vector3d vector3(const Node& node) {
-  const auto v = node.as_array<3>();
-  return {v[0], v[1], v[2]};
-}
+using config::as_vector3;
 
 Eigen::Vector3d positive_vector3(const Node& node) {
-  const Eigen::Vector3d v = vector3(node);
+  const Eigen::Vector3d v = as_vector3(node);
   if (!(v.array() > 0.0).all()) node.fail("every extent must be positive");
   return v;
 }
@@ -32,16 +29,7 @@ Eigen::Quaterniond orientation(const Node& parent) {
   if (int(quaternion.has_value()) + int(rpy.has_value()) + int(yaw.has_value()) > 1) {
     (quaternion ? *quaternion : *rpy).fail("give only one of orientation, rpy and yaw");
   }
-  if (quaternion) {
-    const auto q = quaternion->as_array<4>();
-    Eigen::Quaterniond out(q[0], q[1], q[2], q[3]);
-    const double norm = out.norm();
-    // Accept rounding in hand-written files, reject what is clearly not a rotation.
-    if (std::abs(norm - 1.0) > 1e-3) {
-      quaternion->fail("must be a unit quaternion [w, x, y, z], norm is " + std::to_string(norm));
-    }
-    return out.normalized();
-  }
+  if (quaternion) return config::as_unit_quaternion(*quaternion);
   if (rpy) {
     const auto a = rpy->as_array<3>();
     return Eigen::Quaterniond(Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitZ()) *
@@ -74,7 +62,7 @@ Polyhedron polyhedron(const Node& node) {
   node.expect_keys({"vertices", "faces"});
   Polyhedron out;
   const Node vertices = node.at("vertices");
-  for (std::size_t i = 0; i < vertices.size(); ++i) out.vertices_m.push_back(vector3(vertices[i]));
+  for (std::size_t i = 0; i < vertices.size(); ++i) out.vertices_m.push_back(as_vector3(vertices[i]));
   if (out.vertices_m.size() < 4) vertices.fail("a polyhedron needs at least 4 vertices");
   const Node faces = node.at("faces");
   if (faces.size() < 4) faces.fail("a polyhedron needs at least 4 faces");
@@ -139,7 +127,7 @@ Primitive primitive(const Node& node, const WorldModel& world) {
   } else {
     out.shape = polyhedron(*poly);
   }
-  if (const auto position = node.find("position")) out.object_position_m = vector3(*position);
+  if (const auto position = node.find("position")) out.object_position_m = as_vector3(*position);
   out.object_orientation = orientation(node);
   if (const auto material = node.find("material")) {
     out.material = material->as_string();
@@ -162,7 +150,7 @@ ObjectModel object(const Node& node, const WorldModel& world) {
   ObjectModel out;
   out.id = node.at("id").as_string();
   out.type = node.at("type").as_string();
-  out.world_position_m = vector3(node.at("position"));
+  out.world_position_m = as_vector3(node.at("position"));
   out.world_orientation = orientation(node);
   if (const auto size = node.find("size")) out.size_m = positive_vector3(*size);
   if (const auto parent = node.find("parent")) out.parent_id = parent->as_string();
