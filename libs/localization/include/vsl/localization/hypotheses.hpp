@@ -1,0 +1,75 @@
+// Hypothesis generation (paper §2.4.1, Eqs. 11-16).
+//
+// 1. Interpretation search. A seed subgraph from orientation filtering (three percepts and the
+//    model triple they may be) is extended percept by percept, as in an interpretation tree: a
+//    percept joins with a model object of its type whose distances to the seed's three objects
+//    match the percept's distances to the seed's three percepts (the pairwise checks of Eq. 8,
+//    with tau), the object being looked up where the seed's Eq. 16 pose puts the percept. Three
+//    distances fix a point up to its mirror image through the seed's plane, the pose prediction
+//    picks the side, so at most one object per percept remains and the tree does not branch
+//    below the seed. A percept that matches nothing is left out (a false positive or a bad
+//    measurement); an interpretation that can no longer reach `min_count` associations is
+//    abandoned.
+// 2. Restriction spheres. Each association <O_i^pf, O_j^m> confines the ego centre to the sphere
+//    about X_j^m of radius ||X_i^pf|| (Fig. 4a), with the radial standard deviation of the percept
+//    (Eq. 7) as a Gaussian sphere. The seed's three spheres meet in a point pair (Phi2, Eq. 12 via
+//    Eq. 11); a fourth association whose object lies off the seed's plane cuts it to a point
+//    (Phi3, Eq. 13). Location hypotheses are the Phi3 points and the Phi2 points without a
+//    descendant (Eq. 15): the pair point that the fourth sphere does not reach, or both points when
+//    there is no usable fourth association. The Gaussian spheres (maximal density) make every
+//    meet exist under noise.
+// 3. Orientation (Eq. 16). For each location, world_R_ego is the rotation that carries the
+//    percepts onto their objects about that location: estimate_pose over the generating
+//    associations plus the ego centre itself pinned at the location. The mirror location needs a
+//    reflection, so its rotation leaves large residuals and it is dropped; with gravity a tilted
+//    pose is dropped too.
+// 4. Duplicates (within same_position_m and same_angle_rad) are merged by the caller.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "vsl/geometry/gaussian_spheres.hpp"
+#include "vsl/localization/localization_context.hpp"
+#include "vsl/localization/orientation_filter.hpp"
+
+namespace vsl::localization {
+
+// A consistent association set: the seed's three first, then the extension in percept order.
+struct Interpretation {
+  std::vector<NodeAssociation> associations;
+  Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();  // Eq. 16 over the seed
+};
+
+// Extends one seed subgraph (see 1. above). nullopt when the seed's pose is degenerate or tilted
+// (with gravity), or fewer than `min_count` associations remain reachable.
+std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
+                                                    const PerceptTriple& seed,
+                                                    const ModelTriple& subgraph, int min_count);
+
+// Omega<O_i^pf, O_j^m>: centre X_j^m (world), radius ||X_i^pf||, sigma the percept's standard
+// deviation along its ray from the ego centre.
+geometry::GaussianSphere restriction_sphere(const FusedPercept& percept, const PerceptNoise& noise,
+                                            const Eigen::Vector3d& world_object_m);
+
+// Location hypotheses (Eq. 15) of three or four restriction spheres, the first three being the
+// seed's: see 2. above. Empty when the centres are collinear.
+std::vector<Eigen::Vector3d> location_hypotheses(std::span<const geometry::GaussianSphere> spheres);
+
+// The hypotheses of one interpretation: locations from its restriction spheres, orientations from
+// Eq. 16, each checked against its generating associations.
+std::vector<Eigen::Isometry3d> hypothesis_poses(const LocalizationContext& context,
+                                                const Interpretation& interpretation);
+
+// Rotation angle of a^-1 b.
+double rotation_angle_rad(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b);
+// Within same_position_m and same_angle_rad of each other.
+bool same_hypothesis(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                     const HypothesisOptions& options);
+// Angle between the ego z axis carried into the world and the world's z axis.
+double tilt_rad(const Eigen::Isometry3d& world_T_ego);
+
+}  // namespace vsl::localization

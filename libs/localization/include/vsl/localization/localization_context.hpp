@@ -1,0 +1,41 @@
+// What the stages after proximity filtering share during one localize() call: the world graph and
+// its spatial index, the fused percepts with their noise (Eq. 7) and candidate sets (Eqs. 8-9),
+// and the options. References only; it lives on the caller's stack.
+#pragma once
+
+#include <vector>
+
+#include "vsl/localization/localizer.hpp"
+#include "vsl/localization/node_grid.hpp"
+#include "vsl/localization/percept_noise.hpp"
+#include "vsl/localization/proximity_filter.hpp"
+#include "vsl/localization/refinement.hpp"
+#include "vsl/localization/typed_adjacency.hpp"
+#include "vsl/world/world_graph.hpp"
+
+namespace vsl::localization {
+
+struct LocalizationContext {
+  const world::WorldGraph& graph;
+  const TypedAdjacency& adjacency;
+  const NodeGrid& grid;
+  const std::vector<FusedPercept>& percepts;
+  const std::vector<PerceptNoise>& noise;
+  const CandidateSets& candidates;
+  const LocalizerOptions& options;
+
+  // <O_i^pf, O_j^m> as the pose estimator sees it.
+  PointCorrespondence correspondence(int percept, world::NodeIndex node) const {
+    return {percepts[percept].ego_position_m, noise[percept].ego_covariance_m2,
+            graph.world_position_m(node)};
+  }
+};
+
+// A percept -> model node pairing, the internal form of an Association.
+struct NodeAssociation {
+  int percept = -1;
+  world::NodeIndex node = 0;
+  friend bool operator==(const NodeAssociation&, const NodeAssociation&) = default;
+};
+
+}  // namespace vsl::localization

@@ -1,0 +1,139 @@
+// The localizer core (paper §2.3-2.4): from fused percepts in the ego frame and a world model to
+// a 6-DoF pose world_T_ego, or an honest "ambiguous" with every hypothesis the data support.
+// No middleware: the localizer daemon and vsl-localize drive it.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vsl/config/node.hpp"
+#include "vsl/localization/refinement.hpp"
+#include "vsl/localization/types.hpp"
+#include "vsl/world/world_graph.hpp"
+#include "vsl/world/world_model.hpp"
+
+namespace vsl::localization {
+
+// Eq. 7: a percept's positional error grows with the square of its distance to the left camera:
+// epsilon_i = ||X_i - C_L||^2 / zeta (metres, one standard deviation per axis).
+struct PerceptNoiseOptions {
+  double zeta_m = 133.0;  // zeta: 133 m gives 3 cm at 2 m
+  Eigen::Vector3d ego_camera_position_m = Eigen::Vector3d(0.0, 0.0, 1.5);  // C_L, ego frame
+  double min_sigma_m = 0.005;  // floor for percepts right in front of the camera
+};
+
+struct PruningOptions {
+  // tau of Eq. 8 for a percept pair, in sigmas of their combined Eq. 7 error.
+  double tau_sigmas = 3.0;
+  double min_tau_m = 0.01;
+  // mu_max and kappa_max of §2.3.2 (orientation filtering): the largest length (m) and angle (rad)
+  // discrepancy between percept and model displacement vectors.
+  double mu_max_m = 0.15;
+  double kappa_max_rad = 0.2;
+  // Robust Eq. 9 (proximity_filter.hpp): a candidate keeps its place while at most this fraction
+  // of the percepts it is paired with give it no support (false positives); 0 is the literal
+  // intersection.
+  double max_unsupported_fraction = 0.34;
+  // Eq. 9 intersects m link sets; each percept contributes the pairs with its `max_partners`
+  // most precise partners (smallest tau). More pairs prune little more but cost
+  // |candidates| x degree each pass.
+  int max_partners = 8;
+  // Only the most precise percepts (smallest Eq. 7 sigma) are filtered, at most this many: a far
+  // percept's tau admits nearly every node of its type, so filtering it costs much and prunes
+  // nothing, and seeds are drawn from the precise ones anyway. The others stay unconstrained
+  // (validation still uses them all).
+  int max_filtered_percepts = 16;
+  // The ego frame's z axis is up (gravity): world_R_ego is a rotation about z up to max_tilt_rad.
+  // Orientation filtering then compares displacement vectors in gravity-aligned frames, which
+  // tells a triangle from its mirror image and rejects upside-down matches (orientation_filter.hpp).
+  bool use_gravity = true;
+  double max_tilt_rad = 0.05;
+};
+
+struct HypothesisOptions {
+  // A hypothesis needs at least this many associations (3 non-collinear fix a rigid pose).
+  int min_associations = 3;
+  // Hypotheses closer than this (position m, angle rad) are the same hypothesis.
+  double same_position_m = 0.05;
+  double same_angle_rad = 0.035;
+  // Upper bound on interpretations explored, so a pathological input cannot run away.
+  int max_interpretations = 20000;
+  // Seeds (percept triples, localizer.cpp) tried at most; generation stops earlier once the best
+  // hypothesis explains every percept of `confirming_seeds` of the seeds tried: every hypothesis
+  // consistent with a seed of true percepts is generated from it, so the truth cannot be missing
+  // unless all those seeds held a false positive.
+  int max_seeds = 8;
+  int confirming_seeds = 2;
+};
+
+struct ValidationOptions {
+  // A percept confirms a hypothesis when a model object of its type lies within this many sigmas
+  // of where the hypothesis puts it.
+  double gate_sigmas = 3.0;
+  // Two hypotheses are both "consistent with all percepts" when their scores differ by less than
+  // this. Score units: nats of log-likelihood ratio (validation.hpp); 4.6 = the best must be 100
+  // times as likely as the runner-up to be picked.
+  double ambiguity_margin = 4.6;
+  // Density of clutter (false-positive percepts) per m^3, the alternative against which each
+  // explained percept's likelihood is weighed (validation.hpp).
+  double clutter_density_per_m3 = 0.025;
+  // Below this fraction of percepts explained, the best hypothesis is not reported as localized.
+  double min_explained_fraction = 0.6;
+  // LOCALIZED also asserts precision: the refined pose's covariance must put precision_sigmas
+  // standard deviations (along its worst axis) within required_position_m and
+  // required_angle_rad; otherwise the result is FAILED ("too uncertain"), pose and covariance
+  // still reported. With Eq. 7 noise a view of far objects fixes the pose only to several cm even
+  // with every association right. 0 disables the check.
+  double precision_sigmas = 2.0;
+  double required_position_m = 0.05;
+  double required_angle_rad = 0.0349;  // 2 degrees
+};
+
+struct LocalizerOptions {
+  world::WorldGraphOptions graph;
+  PerceptNoiseOptions noise;
+  PruningOptions pruning;
+  HypothesisOptions hypotheses;
+  ValidationOptions validation;
+  RefinementOptions refinement;
+};
+
+// Reads the localizer config (config/localizer.yaml: sections world_graph, percept_noise,
+// pruning, hypotheses, validation, refinement), every key validated; throws config::Error.
+LocalizerOptions localizer_options_from(const config::Node& root);
+
+// What to look at next to tell the remaining hypotheses apart (paper §2.4.2, active validation).
+struct ActiveValidationTarget {
+  std::string object_id;              // the discriminating model object
+  std::size_t hypothesis_index = 0;   // the hypothesis under which it is predicted there
+  Eigen::Vector3d ego_target_m;       // where to point the head, ego frame
+  double discrimination_m = 0.0;      // how far apart the hypotheses predict it (larger: better)
+};
+
+class Localizer {
+ public:
+  Localizer(const world::WorldModel& world, LocalizerOptions options);
+  ~Localizer();
+  Localizer(Localizer&&) noexcept;
+  Localizer& operator=(Localizer&&) noexcept;
+
+  const world::WorldModel& world() const;
+  const world::WorldGraph& graph() const;
+  const LocalizerOptions& options() const;
+
+  // Localizes from fused percepts (ego frame). Thread-safe (const, no shared mutable state).
+  LocalizationResult localize(const std::vector<FusedPercept>& percepts) const;
+
+  // For an ambiguous result: the model object that best discriminates its hypotheses and the
+  // ego-frame point to look at; nullopt when fewer than two hypotheses or nothing discriminates.
+  std::optional<ActiveValidationTarget> choose_discriminator(
+      const LocalizationResult& result) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace vsl::localization

@@ -1,0 +1,294 @@
+#include "vsl/localization/hypotheses.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "vsl/localization/pose_uncertainty.hpp"
+
+namespace vsl::localization {
+namespace {
+
+using world::NodeIndex;
+
+// A fourth sphere that misses the other pair point by less than this (chi^2, i.e. 3 sigma of one
+// radius) cannot tell the pair apart: that point keeps no descendant and stays a hypothesis.
+constexpr double kUnresolvedChi2 = 9.0;
+// Extension re-estimates the pose after each of the first kEarlyRefits associations, then after
+// every kEarlyRefits.
+constexpr std::size_t kEarlyRefits = 8;
+// Restriction spheres per location: the most precise associations of an interpretation.
+constexpr std::size_t kMaxSpheres = 8;
+// Regularizes the location's Fisher information (1 / m^2): a direction no sphere constrains is
+// known to 1 km.
+constexpr double kMinInformation = 1e-6;
+
+double gate_sigmas(const LocalizerOptions& options) {
+  return std::max(options.validation.gate_sigmas, options.pruning.tau_sigmas);
+}
+
+PoseUncertainty uncertainty_of(const LocalizationContext& context,
+                               std::span<const NodeAssociation> associations) {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> sigmas;
+  for (const NodeAssociation& a : associations) {
+    points.push_back(context.percepts[a.percept].ego_position_m);
+    sigmas.push_back(context.noise[a.percept].sigma_m);
+  }
+  return pose_uncertainty(points, sigmas);
+}
+
+// Tilt allowed for a pose known to sigma_rotation: the configured tilt plus three sigmas.
+bool upright_enough(const Eigen::Isometry3d& pose, const PoseUncertainty& uncertainty,
+                    const PruningOptions& options) {
+  if (!options.use_gravity) return true;
+  return tilt_rad(pose) <= options.max_tilt_rad + 3.0 * uncertainty.sigma_rotation_rad;
+}
+
+}  // namespace
+
+double rotation_angle_rad(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
+}
+
+bool same_hypothesis(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                     const HypothesisOptions& options) {
+  return (a.translation() - b.translation()).norm() < options.same_position_m &&
+         rotation_angle_rad(a, b) < options.same_angle_rad;
+}
+
+double tilt_rad(const Eigen::Isometry3d& world_T_ego) {
+  const double cos_tilt = std::clamp(world_T_ego.linear()(2, 2), -1.0, 1.0);
+  return std::acos(cos_tilt);
+}
+
+std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
+                                                    const PerceptTriple& seed,
+                                                    const ModelTriple& subgraph, int min_count) {
+  const LocalizerOptions& options = context.options;
+  Interpretation out;
+  std::vector<PointCorrespondence> points;
+  for (int s = 0; s < 3; ++s) {
+    out.associations.push_back({seed.percepts[s], subgraph.nodes[s]});
+    points.push_back(context.correspondence(seed.percepts[s], subgraph.nodes[s]));
+  }
+  // Eq. 16 over the seed: S_ego = S_model [S_percept]^-1, as the least-squares rigid transform.
+  auto pose = estimate_pose(points, 1e-3);
+  if (!pose) return std::nullopt;
+  PoseUncertainty uncertainty = uncertainty_of(context, out.associations);
+  if (!upright_enough(*pose, uncertainty, options.pruning)) return std::nullopt;
+  out.world_T_ego = *pose;
+
+  // Percepts to extend with, most precise first (they decide early whether the seed is hopeless).
+  std::vector<int> rest;
+  for (std::size_t l = 0; l < context.percepts.size(); ++l) {
+    const int p = static_cast<int>(l);
+    if (p == seed.percepts[0] || p == seed.percepts[1] || p == seed.percepts[2]) continue;
+    if (context.candidates.types[l]) rest.push_back(p);
+  }
+  std::sort(rest.begin(), rest.end(), [&](int a, int b) {
+    return context.noise[a].sigma_m < context.noise[b].sigma_m;
+  });
+  const int max_misses = static_cast<int>(rest.size()) + 3 - min_count;
+  if (max_misses < 0) return std::nullopt;
+
+  const double gate = gate_sigmas(options);
+  const double link_threshold_m = context.graph.link_threshold_m();
+  int misses = 0;
+  for (const int l : rest) {
+    const FusedPercept& percept = context.percepts[l];
+    const world::TypeId type = *context.candidates.types[l];
+    const double sigma_pose = uncertainty.sigma_at_m(percept.ego_position_m);
+    const double radius_m =
+        gate * std::sqrt(context.noise[l].sigma_m * context.noise[l].sigma_m + sigma_pose * sigma_pose);
+    const Eigen::Vector3d predicted_m = *pose * percept.ego_position_m;
+    // Pairwise distance checks against the seed (Eq. 8 for each new pair).
+    std::array<PerceptPair, 3> pairs;
+    int anchor = -1;
+    for (int s = 0; s < 3; ++s) {
+      pairs[s] = make_percept_pair(l, seed.percepts[s], context.percepts, context.noise,
+                                   options.pruning);
+      if (pairs[s].distance_m + pairs[s].tau_m < link_threshold_m &&
+          (anchor < 0 || pairs[s].distance_m < pairs[anchor].distance_m)) {
+        anchor = s;
+      }
+    }
+    double best_cost = std::numeric_limits<double>::infinity();
+    NodeIndex best_node = 0;
+    const auto consider = [&](NodeIndex node) {
+      for (const NodeAssociation& a : out.associations) {
+        if (a.node == node) return;
+      }
+      const Eigen::Vector3d& x = context.graph.world_position_m(node);
+      // The three distances leave the seed plane's mirror side open; the seed's pose picks.
+      if ((x - predicted_m).squaredNorm() > radius_m * radius_m) return;
+      double cost = 0.0;
+      for (int s = 0; s < 3; ++s) {
+        const double d = (x - context.graph.world_position_m(subgraph.nodes[s])).norm();
+        const double r = (d - pairs[s].distance_m) / pairs[s].tau_m;
+        if (std::abs(r) > 1.0) return;
+        cost += r * r;
+      }
+      if (cost < best_cost) {
+        best_cost = cost;
+        best_node = node;
+      }
+    };
+    if (anchor >= 0) {
+      // The objects at the right distance from the nearest seed object: a graph lookup.
+      const PerceptPair& p = pairs[anchor];
+      for (const world::Neighbour& n : context.adjacency.within(
+               subgraph.nodes[anchor], type, p.distance_m - p.tau_m, p.distance_m + p.tau_m)) {
+        consider(n.node);
+      }
+    } else {
+      // Farther than any link from the seed: look where the seed's pose puts it.
+      context.grid.for_each_within(type, predicted_m, radius_m,
+                                   [&](NodeIndex node, double) { consider(node); });
+    }
+    if (!std::isfinite(best_cost)) {
+      if (++misses > max_misses) return std::nullopt;
+      continue;
+    }
+    out.associations.push_back({l, best_node});
+    points.push_back(context.correspondence(l, best_node));
+    // A seed of three percepts fixes the pose only roughly (its rotation to sigma / altitude),
+    // and far percepts sit on long lever arms; re-estimating as precise associations join keeps
+    // the prediction, and so the choice among same-type neighbours, sharp.
+    const std::size_t added = out.associations.size() - 3;
+    if (added <= kEarlyRefits || added % kEarlyRefits == 0) {
+      const auto refit = estimate_pose(points, 1e-3);
+      if (refit) {
+        pose = refit;
+        uncertainty = uncertainty_of(context, out.associations);
+      }
+    }
+  }
+  out.world_T_ego = *pose;
+  return out;
+}
+
+geometry::GaussianSphere restriction_sphere(const FusedPercept& percept, const PerceptNoise& noise,
+                                            const Eigen::Vector3d& world_object_m) {
+  const double radius_m = percept.ego_position_m.norm();
+  const Eigen::Vector3d ray =
+      radius_m > 0.0 ? Eigen::Vector3d(percept.ego_position_m / radius_m) : Eigen::Vector3d::UnitX();
+  return {{world_object_m, radius_m}, noise.sigma_along_m(ray)};
+}
+
+std::vector<Eigen::Vector3d> location_hypotheses(
+    std::span<const geometry::GaussianSphere> spheres) {
+  std::vector<Eigen::Vector3d> out;
+  if (spheres.size() < 3) return out;
+  const geometry::DensityMaximum maximum = geometry::maximal_density(spheres);
+  switch (maximum.locus) {
+    case geometry::DensityLocus::kPointPair:
+      // Phi2 (three spheres, or coplanar centres): the pair has no descendant, both points are
+      // hypotheses.
+      for (int p = 0; p < maximum.point_count(); ++p) out.push_back(maximum.points_m[p]);
+      return out;
+    case geometry::DensityLocus::kPoint:
+      break;
+    default:
+      return out;  // collinear centres: a circle, no location
+  }
+  // Phi3: one point. Its mirror image through the centres' plane is the other point of the pair
+  // it descends from; when the centres are nearly coplanar for the data (the mirror fits within
+  // kUnresolvedChi2 of the optimum) the spheres did not really pick a side, and the mirror stays
+  // a hypothesis too.
+  const Eigen::Vector3d point = maximum.points_m[0];
+  out.push_back(point);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const geometry::GaussianSphere& s : spheres) centroid += s.sphere.centre_m;
+  centroid /= static_cast<double>(spheres.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const geometry::GaussianSphere& s : spheres) {
+    const Eigen::Vector3d a = s.sphere.centre_m - centroid;
+    scatter += a * a.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(scatter);
+  const Eigen::Vector3d normal = eigen.eigenvectors().col(0);  // across the best-fit plane
+  const Eigen::Vector3d mirror = point - 2.0 * normal.dot(point - centroid) * normal;
+  if ((mirror - point).norm() > 1e-6 &&
+      geometry::chi_square(spheres, mirror) <= maximum.cost + kUnresolvedChi2) {
+    out.push_back(mirror);
+  }
+  return out;
+}
+
+std::vector<Eigen::Isometry3d> hypothesis_poses(const LocalizationContext& context,
+                                                const Interpretation& interpretation) {
+  const LocalizerOptions& options = context.options;
+  const auto& associations = interpretation.associations;
+  std::vector<Eigen::Isometry3d> out;
+  if (associations.size() < 3) return out;
+
+  // Eq. 16 over the whole subgraph.
+  std::vector<PointCorrespondence> points;
+  for (const NodeAssociation& a : associations) {
+    points.push_back(context.correspondence(a.percept, a.node));
+  }
+  const auto pose = estimate_pose(points, 1e-3);
+  if (!pose) return out;
+  const PoseUncertainty uncertainty = uncertainty_of(context, associations);
+  if (!upright_enough(*pose, uncertainty, options.pruning)) return out;
+  const double pose_sigma_m = uncertainty.sigma_at_m(Eigen::Vector3d::Zero());
+  const double gate = gate_sigmas(options);
+
+  // Phi0: restriction spheres of the subgraph's most precise associations that agree with the
+  // Eq. 16 pose (a false positive matched to some object would otherwise bend the location; far
+  // percepts add little but cost Gauss-Newton work).
+  std::vector<NodeAssociation> generating;
+  const Eigen::Isometry3d ego_T_world = pose->inverse();
+  for (const NodeAssociation& a : associations) {
+    const Eigen::Vector3d& x = context.percepts[a.percept].ego_position_m;
+    const Eigen::Vector3d ego_error = ego_T_world * context.graph.world_position_m(a.node) - x;
+    const double extra = std::pow(uncertainty.sigma_at_m(x), 2);
+    if (context.noise[a.percept].mahalanobis_sq(ego_error, extra) <= gate * gate) {
+      generating.push_back(a);
+    }
+  }
+  if (generating.size() < 3) return out;
+  std::stable_sort(generating.begin(), generating.end(),
+                   [&](const NodeAssociation& a, const NodeAssociation& b) {
+                     return context.noise[a.percept].sigma_m < context.noise[b.percept].sigma_m;
+                   });
+  if (generating.size() > kMaxSpheres) generating.resize(kMaxSpheres);
+  std::vector<geometry::GaussianSphere> spheres;
+  for (const NodeAssociation& a : generating) {
+    spheres.push_back(restriction_sphere(context.percepts[a.percept], context.noise[a.percept],
+                                         context.graph.world_position_m(a.node)));
+  }
+
+  // The subgraph stands when one of its location hypotheses (Eq. 15) is where Eq. 16 puts the ego
+  // centre, within both uncertainties. The location's covariance is the inverse Fisher
+  // information of the Gaussian spheres, sum_i u_i u_i^T / sigma_i^2 (u_i the unit vector from
+  // centre i): ranges from nearly coplanar objects fix the ego centre well across their plane and
+  // poorly along it, and only across it does the mirror location differ.
+  for (const Eigen::Vector3d& location : location_hypotheses(spheres)) {
+    Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+    for (const geometry::GaussianSphere& sphere : spheres) {
+      const Eigen::Vector3d d = location - sphere.sphere.centre_m;
+      const double n = d.norm();
+      if (n == 0.0) continue;
+      const Eigen::Vector3d u = d / n;
+      information += u * u.transpose() / (sphere.sigma_m * sphere.sigma_m);
+    }
+    const Eigen::Matrix3d covariance =
+        (information + Eigen::Matrix3d::Identity() * kMinInformation).inverse() +
+        Eigen::Matrix3d::Identity() * (pose_sigma_m * pose_sigma_m);
+    const Eigen::Vector3d error = pose->translation() - location;
+    if (error.dot(covariance.ldlt().solve(error)) <= gate * gate) {
+      out.push_back(*pose);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace vsl::localization

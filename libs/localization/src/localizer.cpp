@@ -1,0 +1,309 @@
+// Localizer: the pipeline of paper §2.3-2.4 over one set of fused percepts.
+//
+//   Eq. 7 noise -> proximity filtering (Eqs. 8-9) -> for each seed triple of percepts:
+//   orientation filtering (Eq. 10) -> interpretation search and restriction spheres (Eqs. 11-15)
+//   with Eq. 16 orientations -> validation against all percepts -> decision -> Ceres refinement.
+//
+// Seeds. Every hypothesis consistent with all percepts is consistent with any three true ones, and
+// orientation filtering enumerates every model triple that three percepts can be; so one seed of
+// true percepts yields all the hypotheses there are (up to the tolerances). A seed holding a false
+// positive yields wrong hypotheses only, which validation scores low. Seeds are therefore tried
+// in turn, each sharing as few percepts as possible with the previous ones, until the best
+// hypothesis explains every percept of `confirming_seeds` of them (then at least one of them is
+// almost surely free of false positives) or `max_seeds` are spent.
+#include "vsl/localization/localizer.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <string>
+#include <stdexcept>
+
+#include "vsl/localization/hypotheses.hpp"
+#include "vsl/localization/localization_context.hpp"
+#include "vsl/localization/node_grid.hpp"
+#include "vsl/localization/orientation_filter.hpp"
+#include "vsl/localization/percept_noise.hpp"
+#include "vsl/localization/proximity_filter.hpp"
+#include "vsl/localization/validation.hpp"
+
+namespace vsl::localization {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Adds the time since construction (or the last lap) to a stage's milliseconds.
+class StageTimer {
+ public:
+  explicit StageTimer(double& total_ms) : total_ms_(total_ms), start_(Clock::now()) {}
+  ~StageTimer() { total_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - start_).count(); }
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+ private:
+  double& total_ms_;
+  Clock::time_point start_;
+};
+
+// Hypotheses reported beside the best one when localized or failed (for inspection).
+constexpr std::size_t kReportedRunnersUp = 9;
+
+Association to_association(const world::WorldModel& world, const world::WorldGraph& graph,
+                           const NodeAssociation& a) {
+  const std::size_t object = graph.object_index(a.node);
+  return {a.percept, object, world.objects[object].id};
+}
+
+Hypothesis to_hypothesis(const world::WorldModel& world, const world::WorldGraph& graph,
+                         const ValidatedHypothesis& v) {
+  Hypothesis h;
+  h.world_T_ego = v.world_T_ego;
+  h.score = v.score;
+  for (const NodeAssociation& a : v.explanation.associations) {
+    h.associations.push_back(to_association(world, graph, a));
+  }
+  return h;
+}
+
+// Adds a validated hypothesis unless an indistinguishable one is known; of two such the better
+// ranked stays.
+void merge(std::vector<ValidatedHypothesis>& known, ValidatedHypothesis candidate,
+           const HypothesisOptions& options) {
+  for (ValidatedHypothesis& k : known) {
+    if (!indistinguishable(k, candidate, options)) continue;
+    if (ranks_before(candidate, k)) k = std::move(candidate);
+    return;
+  }
+  known.push_back(std::move(candidate));
+}
+
+// Standard deviations along the worst axes of the pose covariance.
+struct Precision {
+  double position_m = 0.0;
+  double angle_rad = 0.0;
+};
+
+Precision precision_of(const RefinedPose& refined) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  Precision out;
+  eigen.computeDirect(refined.covariance.topLeftCorner<3, 3>());
+  out.position_m = std::sqrt(std::max(0.0, eigen.eigenvalues()[2]));
+  eigen.computeDirect(refined.covariance.bottomRightCorner<3, 3>());
+  out.angle_rad = std::sqrt(std::max(0.0, eigen.eigenvalues()[2]));
+  return out;
+}
+
+std::string format_cm(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", metres * 100.0);
+  return text;
+}
+
+std::string format_deg(double radians) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", radians * 180.0 / std::numbers::pi);
+  return text;
+}
+
+}  // namespace
+
+struct Localizer::State {
+  const world::WorldModel* world;
+  LocalizerOptions options;
+  world::WorldGraph graph;
+  TypedAdjacency adjacency;
+  NodeGrid grid;
+};
+
+Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
+  world::WorldGraph graph = world::WorldGraph::build(world, options.graph);
+  TypedAdjacency adjacency = TypedAdjacency::build(graph);
+  NodeGrid grid = NodeGrid::build(graph);
+  state_ = std::make_unique<State>(State{&world, std::move(options), std::move(graph),
+                                         std::move(adjacency), std::move(grid)});
+}
+
+Localizer::~Localizer() = default;
+Localizer::Localizer(Localizer&&) noexcept = default;
+Localizer& Localizer::operator=(Localizer&&) noexcept = default;
+
+const world::WorldModel& Localizer::world() const { return *state_->world; }
+const world::WorldGraph& Localizer::graph() const { return state_->graph; }
+const LocalizerOptions& Localizer::options() const { return state_->options; }
+
+LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts) const {
+  const auto start = Clock::now();
+  const LocalizerOptions& options = state_->options;
+  const world::WorldGraph& graph = state_->graph;
+  LocalizationResult result;
+  StageTimes& times = result.timing;
+  const auto finish = [&]() {
+    times.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return result;
+  };
+
+  std::vector<PerceptNoise> noise;
+  try {
+    noise = percept_noise(percepts, options.noise);
+  } catch (const std::invalid_argument& e) {
+    result.message = e.what();
+    return finish();
+  }
+  if (percepts.size() < 3) {
+    result.message = "fewer than three percepts: a pose needs three non-collinear associations";
+    return finish();
+  }
+
+  CandidateSets candidates;
+  {
+    StageTimer timer(times.proximity_filter_ms);
+    candidates = proximity_filter(graph, state_->adjacency, percepts, noise, options.pruning);
+  }
+  const std::size_t usable = static_cast<std::size_t>(
+      std::count_if(candidates.types.begin(), candidates.types.end(),
+                    [](const auto& type) { return type.has_value(); }));
+  const LocalizationContext context{graph,       state_->adjacency, state_->grid, percepts,
+                                    noise,       candidates,        options};
+
+  std::vector<PerceptTriple> seeds;
+  {
+    StageTimer timer(times.orientation_filter_ms);
+    seeds = choose_seed_triples(percepts, noise, candidates, graph.link_threshold_m(),
+                                options.pruning,
+                                static_cast<std::size_t>(std::max(options.hypotheses.max_seeds, 1)));
+  }
+
+  // Interpretations worth extending must be able to compete: reach the explained fraction and
+  // come within the ambiguity margin of the best so far. The slack covers what validation's
+  // re-estimate adds over the seed's pose.
+  const double slack = std::max(2.0, 0.15 * static_cast<double>(usable));
+  const double floor_count =
+      std::max<double>(options.hypotheses.min_associations,
+                       options.validation.min_explained_fraction * static_cast<double>(usable));
+  std::vector<ValidatedHypothesis> validated;
+  std::size_t budget = static_cast<std::size_t>(std::max(options.hypotheses.max_interpretations, 1));
+  std::vector<std::size_t> tried;  // seeds processed
+  for (std::size_t s = 0; s < seeds.size() && budget > 0; ++s) {
+    const PerceptTriple& seed = seeds[s];
+    tried.push_back(s);
+    OrientationFilterResult subgraphs;
+    {
+      StageTimer timer(times.orientation_filter_ms);
+      subgraphs = orientation_filter(graph, state_->adjacency, percepts, noise, candidates, seed,
+                                     options.pruning, budget);
+      budget -= std::min(budget, subgraphs.subgraphs.size());
+    }
+
+    std::vector<std::pair<Eigen::Isometry3d, std::vector<NodeAssociation>>> poses;
+    {
+      StageTimer timer(times.hypothesis_generation_ms);
+      // Relative to the best so far: a hypothesis explaining a quarter fewer percepts cannot come
+      // within the margin unless its fits are far tighter, which the slack allows for.
+      const double best = validated.empty() ? 0.0 : static_cast<double>(validated.front().explained());
+      const int min_count = static_cast<int>(
+          std::ceil(std::max({3.0, floor_count - slack, best - std::max(slack, 0.25 * best)})));
+      std::vector<Interpretation> interpretations;
+      for (const ModelTriple& subgraph : subgraphs.subgraphs) {
+        auto interpretation = extend_interpretation(context, seed, subgraph, min_count);
+        if (!interpretation) continue;
+        // A pose already found (from this seed or an earlier one) needs no second validation.
+        const auto known = [&](const Eigen::Isometry3d& pose) {
+          return std::any_of(validated.begin(), validated.end(),
+                             [&](const ValidatedHypothesis& v) {
+                               return same_hypothesis(v.world_T_ego, pose, options.hypotheses);
+                             }) ||
+                 std::any_of(interpretations.begin(), interpretations.end(),
+                             [&](const Interpretation& i) {
+                               return same_hypothesis(i.world_T_ego, pose, options.hypotheses);
+                             });
+        };
+        if (known(interpretation->world_T_ego)) continue;
+        interpretations.push_back(std::move(*interpretation));
+      }
+      for (const Interpretation& interpretation : interpretations) {
+        for (const Eigen::Isometry3d& pose : hypothesis_poses(context, interpretation)) {
+          poses.emplace_back(pose, interpretation.associations);
+        }
+      }
+    }
+
+    if (std::getenv("VSL_CORE_DEBUG")) std::fprintf(stderr, "DEBUG seed %zu: subgraphs %zu poses %zu validated %zu\n", s, subgraphs.subgraphs.size(), poses.size(), validated.size());
+    {
+      StageTimer timer(times.validation_ms);
+      for (const auto& [pose, generating] : poses) {
+        auto v = validate_hypothesis(context, pose, generating);
+        if (v) merge(validated, std::move(*v), options.hypotheses);
+      }
+      std::sort(validated.begin(), validated.end(), ranks_before);
+      if (!validated.empty()) {
+        const ValidatedHypothesis& top = validated.front();
+        const auto confirmed = std::count_if(tried.begin(), tried.end(), [&](std::size_t t) {
+          const auto& p = seeds[t].percepts;
+          return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
+        });
+        if (confirmed >= options.hypotheses.confirming_seeds) break;
+      }
+    }
+  }
+
+  Decision decision;
+  {
+    StageTimer timer(times.validation_ms);
+    decision = decide(validated, usable, options.validation, options.hypotheses);
+  }
+  result.status = decision.status;
+  result.message = decision.message;
+  const std::size_t reported = decision.status == Status::kAmbiguous
+                                   ? decision.contenders
+                                   : std::min(validated.size(), 1 + kReportedRunnersUp);
+  for (std::size_t h = 0; h < reported; ++h) {
+    result.hypotheses.push_back(to_hypothesis(*state_->world, graph, validated[h]));
+  }
+  if (!validated.empty() && decision.status != Status::kFailed) {
+    result.world_T_ego = validated.front().world_T_ego;
+    result.associations = result.hypotheses.front().associations;
+  }
+  if (decision.status == Status::kLocalized) {
+    StageTimer timer(times.refinement_ms);
+    std::vector<PointCorrespondence> points;
+    for (const NodeAssociation& a : validated.front().explanation.associations) {
+      points.push_back(context.correspondence(a.percept, a.node));
+    }
+    const RefinedPose refined = refine_pose(validated.front().world_T_ego, points, options.refinement);
+    if (refined.world_T_ego.matrix().allFinite()) {
+      result.world_T_ego = refined.world_T_ego;
+      result.hypotheses.front().world_T_ego = refined.world_T_ego;
+    }
+    if (refined.covariance_valid) result.covariance = refined.covariance;
+    result.message = "explains " + std::to_string(points.size()) + " of " +
+                     std::to_string(usable) + " percepts";
+    const ValidationOptions& v = options.validation;
+    if (v.precision_sigmas > 0.0) {
+      const Precision p = precision_of(refined);
+      if (!refined.covariance_valid || v.precision_sigmas * p.position_m > v.required_position_m ||
+          v.precision_sigmas * p.angle_rad > v.required_angle_rad) {
+        result.status = Status::kFailed;
+        result.message += refined.covariance_valid
+                              ? "; pose too uncertain (sigma " + format_cm(p.position_m) +
+                                    " cm, " + format_deg(p.angle_rad) + " deg)"
+                              : "; pose covariance unavailable";
+      }
+    }
+  }
+  return finish();
+}
+
+std::optional<ActiveValidationTarget> Localizer::choose_discriminator(
+    const LocalizationResult& result) const {
+  std::vector<Eigen::Isometry3d> poses;
+  for (const Hypothesis& h : result.hypotheses) poses.push_back(h.world_T_ego);
+  return localization::choose_discriminator(*state_->world, state_->graph, state_->grid, poses,
+                                            state_->options);
+}
+
+}  // namespace vsl::localization

@@ -1,0 +1,93 @@
+// config/localizer.yaml -> LocalizerOptions. Every key is optional (the defaults are the struct's)
+// and validated: a wrong value or an unknown key stops the program with file:line: key: what.
+#include "vsl/config/node.hpp"
+#include "vsl/localization/localizer.hpp"
+#include "vsl/world/world_graph_options.hpp"
+
+namespace vsl::localization {
+namespace {
+
+using config::Node;
+
+int int_in(const Node& node, std::int64_t min, std::int64_t max) {
+  const std::int64_t value = node.as_int();
+  if (value < min || value > max) {
+    node.fail("must be an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+              "], got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
+
+PerceptNoiseOptions percept_noise(const Node& section) {
+  PerceptNoiseOptions out;
+  section.expect_keys({"zeta_m", "ego_camera_position_m", "min_sigma_m"});
+  if (const auto zeta = section.find("zeta_m")) out.zeta_m = zeta->as_double_in(1.0, 1e6);
+  if (const auto camera = section.find("ego_camera_position_m")) {
+    const auto c = camera->as_array<3>();
+    out.ego_camera_position_m = {c[0], c[1], c[2]};
+  }
+  if (const auto floor = section.find("min_sigma_m")) out.min_sigma_m = floor->as_double_in(1e-6, 1.0);
+  return out;
+}
+
+PruningOptions pruning(const Node& section) {
+  PruningOptions out;
+  section.expect_keys({"tau_sigmas", "min_tau_m", "mu_max_m", "kappa_max_rad"});
+  if (const auto v = section.find("tau_sigmas")) out.tau_sigmas = v->as_double_in(0.5, 20.0);
+  if (const auto v = section.find("min_tau_m")) out.min_tau_m = v->as_double_in(0.0, 1.0);
+  if (const auto v = section.find("mu_max_m")) out.mu_max_m = v->as_double_in(0.001, 2.0);
+  if (const auto v = section.find("kappa_max_rad")) out.kappa_max_rad = v->as_double_in(0.001, 3.1416);
+  return out;
+}
+
+HypothesisOptions hypotheses(const Node& section) {
+  HypothesisOptions out;
+  section.expect_keys({"min_associations", "same_position_m", "same_angle_rad", "max_interpretations"});
+  if (const auto v = section.find("min_associations")) {
+    out.min_associations = int_in(*v, 3, 50);
+  }
+  if (const auto v = section.find("same_position_m")) out.same_position_m = v->as_double_in(1e-4, 1.0);
+  if (const auto v = section.find("same_angle_rad")) out.same_angle_rad = v->as_double_in(1e-4, 1.0);
+  if (const auto v = section.find("max_interpretations")) {
+    out.max_interpretations = int_in(*v, 1, 10000000);
+  }
+  return out;
+}
+
+ValidationOptions validation(const Node& section) {
+  ValidationOptions out;
+  section.expect_keys({"gate_sigmas", "ambiguity_margin", "min_explained_fraction"});
+  if (const auto v = section.find("gate_sigmas")) out.gate_sigmas = v->as_double_in(0.5, 20.0);
+  if (const auto v = section.find("ambiguity_margin")) out.ambiguity_margin = v->as_double_in(0.0, 100.0);
+  if (const auto v = section.find("min_explained_fraction")) {
+    out.min_explained_fraction = v->as_double_in(0.0, 1.0);
+  }
+  return out;
+}
+
+RefinementOptions refinement(const Node& section) {
+  RefinementOptions out;
+  section.expect_keys({"huber_sigmas", "planar_prior", "max_iterations"});
+  if (const auto v = section.find("huber_sigmas")) out.huber_sigmas = v->as_double_in(0.1, 100.0);
+  if (const auto v = section.find("planar_prior")) out.planar_prior = v->as_bool();
+  if (const auto v = section.find("max_iterations")) out.max_iterations = int_in(*v, 1, 1000);
+  return out;
+}
+
+}  // namespace
+
+LocalizerOptions localizer_options_from(const Node& root) {
+  LocalizerOptions options;
+  if (root.is_null()) return options;
+  root.expect_keys({"runtime", "world_graph", "percept_noise", "pruning", "hypotheses",
+                    "validation", "refinement"});
+  if (const auto s = root.find("world_graph")) options.graph = world::world_graph_options_from(*s);
+  if (const auto s = root.find("percept_noise")) options.noise = percept_noise(*s);
+  if (const auto s = root.find("pruning")) options.pruning = pruning(*s);
+  if (const auto s = root.find("hypotheses")) options.hypotheses = hypotheses(*s);
+  if (const auto s = root.find("validation")) options.validation = validation(*s);
+  if (const auto s = root.find("refinement")) options.refinement = refinement(*s);
+  return options;
+}
+
+}  // namespace vsl::localization

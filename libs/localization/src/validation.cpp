@@ -1,0 +1,201 @@
+#include "vsl/localization/validation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <tuple>
+
+#include "vsl/localization/hypotheses.hpp"
+#include "vsl/localization/percept_noise.hpp"
+
+namespace vsl::localization {
+namespace {
+
+using world::NodeIndex;
+
+PoseUncertainty uncertainty_of(const LocalizationContext& context,
+                               const std::vector<NodeAssociation>& associations) {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> sigmas;
+  for (const NodeAssociation& a : associations) {
+    points.push_back(context.percepts[a.percept].ego_position_m);
+    sigmas.push_back(context.noise[a.percept].sigma_m);
+  }
+  return pose_uncertainty(points, sigmas);
+}
+
+}  // namespace
+
+Explanation explain(const LocalizationContext& context, const Eigen::Isometry3d& world_T_ego,
+                    const PoseUncertainty& uncertainty) {
+  const double gate = context.options.validation.gate_sigmas;
+  const double gate_sq = gate * gate;
+  const Eigen::Isometry3d ego_T_world = world_T_ego.inverse();
+  struct Pairing {
+    double d2;
+    int percept;
+    NodeIndex node;
+    double log_normaliser;  // log N(0; 0, Sigma') + log(1 / clutter density)
+  };
+  const double log_clutter = -std::log(context.options.validation.clutter_density_per_m3);
+  std::vector<Pairing> pairings;
+  for (std::size_t l = 0; l < context.percepts.size(); ++l) {
+    const auto& type = context.candidates.types[l];
+    if (!type) continue;
+    const Eigen::Vector3d& x = context.percepts[l].ego_position_m;
+    const PerceptNoise& noise = context.noise[l];
+    const double extra_m2 = std::pow(uncertainty.sigma_at_m(x), 2);
+    const double radius_m = gate * std::sqrt(noise.variances_m2.maxCoeff() + extra_m2);
+    const double log_normaliser =
+        -0.5 * (2.0 * std::numbers::pi * (noise.variances_m2.array() + extra_m2)).log().sum() +
+        log_clutter;
+    context.grid.for_each_within(*type, world_T_ego * x, radius_m, [&](NodeIndex node, double) {
+      const double d2 =
+          noise.mahalanobis_sq(ego_T_world * context.graph.world_position_m(node) - x, extra_m2);
+      if (d2 <= gate_sq) pairings.push_back({d2, static_cast<int>(l), node, log_normaliser});
+    });
+  }
+  // One object per percept and one percept per object, closest pairs first.
+  std::sort(pairings.begin(), pairings.end(), [](const Pairing& a, const Pairing& b) {
+    return std::tie(a.d2, a.percept, a.node) < std::tie(b.d2, b.percept, b.node);
+  });
+  Explanation out;
+  std::vector<bool> percept_used(context.percepts.size(), false);
+  std::vector<NodeIndex> nodes_used;
+  for (const Pairing& p : pairings) {
+    if (percept_used[p.percept] ||
+        std::find(nodes_used.begin(), nodes_used.end(), p.node) != nodes_used.end()) {
+      continue;
+    }
+    percept_used[p.percept] = true;
+    nodes_used.push_back(p.node);
+    out.associations.push_back({p.percept, p.node});
+    out.chi2 += p.d2;
+    out.log_likelihood_ratio += std::max(0.0, p.log_normaliser - 0.5 * p.d2);
+  }
+  std::sort(out.associations.begin(), out.associations.end(),
+            [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
+  return out;
+}
+
+bool ValidatedHypothesis::explains(int percept) const {
+  return std::any_of(explanation.associations.begin(), explanation.associations.end(),
+                     [&](const NodeAssociation& a) { return a.percept == percept; });
+}
+
+std::optional<ValidatedHypothesis> validate_hypothesis(
+    const LocalizationContext& context, const Eigen::Isometry3d& world_T_ego,
+    const std::vector<NodeAssociation>& generating, int max_rounds) {
+  ValidatedHypothesis out;
+  out.world_T_ego = world_T_ego;
+  out.explanation = explain(context, world_T_ego, uncertainty_of(context, generating));
+  for (int round = 0; round < max_rounds; ++round) {
+    const std::vector<NodeAssociation>& current = out.explanation.associations;
+    if (current.size() < 3) break;
+    std::vector<PointCorrespondence> points;
+    for (const NodeAssociation& a : current) points.push_back(context.correspondence(a.percept, a.node));
+    const auto refit = estimate_pose(points, 1e-3);
+    if (!refit) break;
+    Explanation next = explain(context, *refit, uncertainty_of(context, current));
+    // Keep the re-estimate unless it explains less (a wrong association can pull it off).
+    if (next.log_likelihood_ratio < out.explanation.log_likelihood_ratio) break;
+    const bool stable = next.associations == current;
+    out.world_T_ego = *refit;
+    out.explanation = std::move(next);
+    if (stable) break;
+  }
+  if (out.explanation.associations.size() < 3) return std::nullopt;
+  out.score = out.explanation.log_likelihood_ratio;
+  out.uncertainty = uncertainty_of(context, out.explanation.associations);
+  return out;
+}
+
+bool indistinguishable(const ValidatedHypothesis& a, const ValidatedHypothesis& b,
+                       const HypothesisOptions& options) {
+  if (same_hypothesis(a.world_T_ego, b.world_T_ego, options)) return true;
+  constexpr double kSigmas = 2.0;
+  const Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  const double sa = a.uncertainty.sigma_at_m(origin), sb = b.uncertainty.sigma_at_m(origin);
+  const double ra = a.uncertainty.sigma_rotation_rad, rb = b.uncertainty.sigma_rotation_rad;
+  return (a.world_T_ego.translation() - b.world_T_ego.translation()).norm() <
+             kSigmas * std::sqrt(sa * sa + sb * sb) &&
+         rotation_angle_rad(a.world_T_ego, b.world_T_ego) < kSigmas * std::sqrt(ra * ra + rb * rb);
+}
+
+bool ranks_before(const ValidatedHypothesis& a, const ValidatedHypothesis& b) {
+  if (a.score != b.score) return a.score > b.score;
+  return a.explanation.chi2 < b.explanation.chi2;
+}
+
+Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usable_percepts,
+                const ValidationOptions& validation, const HypothesisOptions& hypotheses) {
+  Decision out;
+  if (ranked.empty()) {
+    out.message = "no hypothesis is consistent with the percepts";
+    return out;
+  }
+  const double best = ranked.front().score;
+  const std::size_t explained = ranked.front().explained();
+  const double needed = std::max(static_cast<double>(hypotheses.min_associations),
+                                 validation.min_explained_fraction *
+                                     static_cast<double>(usable_percepts));
+  if (static_cast<double>(explained) < needed) {
+    out.message = "the best hypothesis explains " + std::to_string(explained) + " of " +
+                  std::to_string(usable_percepts) + " percepts, fewer than needed";
+    return out;
+  }
+  out.contenders = 1;
+  while (out.contenders < ranked.size() &&
+         ranked[out.contenders].score > best - validation.ambiguity_margin) {
+    ++out.contenders;
+  }
+  if (out.contenders > 1) {
+    out.status = Status::kAmbiguous;
+    out.message = std::to_string(out.contenders) +
+                  " hypotheses explain the percepts equally well (best: " +
+                  std::to_string(explained) + " of " + std::to_string(usable_percepts) + ")";
+    return out;
+  }
+  out.status = Status::kLocalized;
+  return out;
+}
+
+std::optional<ActiveValidationTarget> choose_discriminator(
+    const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
+    const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
+    double range_m, double cap_m) {
+  if (hypotheses.size() < 2) return std::nullopt;
+  const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
+  std::optional<ActiveValidationTarget> best;
+  double best_range = 0.0;
+  for (std::size_t h = 0; h < hypotheses.size(); ++h) {
+    const Eigen::Isometry3d ego_T_world = hypotheses[h].inverse();
+    for (std::size_t t = 0; t < graph.type_count(); ++t) {
+      const auto type = static_cast<world::TypeId>(t);
+      grid.for_each_within(type, hypotheses[h] * camera, range_m, [&](NodeIndex node, double) {
+        const Eigen::Vector3d ego_target = ego_T_world * graph.world_position_m(node);
+        // What another hypothesis expects at that ego point: the nearest object of the type.
+        double discrimination = cap_m;
+        for (std::size_t other = 0; other < hypotheses.size() && discrimination > 0.0; ++other) {
+          if (other == h) continue;
+          const auto nearest = grid.nearest(type, hypotheses[other] * ego_target, cap_m);
+          if (nearest) discrimination = std::min(discrimination, nearest->distance_m);
+        }
+        // A percept at the target would be explained under the others too within its gate.
+        const double gate_m = options.validation.gate_sigmas *
+                              eq7_sigma_m(ego_target, options.noise) * std::sqrt(3.0);
+        if (discrimination <= gate_m) return;
+        const double range = (ego_target - camera).norm();
+        if (!best || discrimination > best->discrimination_m ||
+            (discrimination == best->discrimination_m && range < best_range)) {
+          best = ActiveValidationTarget{world.objects[graph.object_index(node)].id, h, ego_target,
+                                        discrimination};
+          best_range = range;
+        }
+      });
+    }
+  }
+  return best;
+}
+
+}  // namespace vsl::localization

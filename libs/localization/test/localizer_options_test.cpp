@@ -1,0 +1,59 @@
+#include <gtest/gtest.h>
+
+#include "vsl/config/node.hpp"
+#include "vsl/localization/localizer.hpp"
+
+namespace vsl::localization {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    localizer_options_from(config::Node::load_string(text, "l.yaml"));
+  } catch (const config::Error& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected an error for:\n" << text;
+  return "";
+}
+
+TEST(LocalizerOptions, ShippedConfigLoads) {
+  const LocalizerOptions options =
+      localizer_options_from(config::Node::load_file("config/localizer.yaml"));
+  EXPECT_GT(options.graph.link_threshold_m, 0.0);
+  EXPECT_GT(options.noise.zeta_m, 0.0);
+}
+
+TEST(LocalizerOptions, ReadsEverySection) {
+  const LocalizerOptions options = localizer_options_from(config::Node::load_string(
+      "world_graph: {link_threshold_m: 3.5}\n"
+      "percept_noise: {zeta_m: 100, ego_camera_position_m: [0.1, 0, 1.6], min_sigma_m: 0.002}\n"
+      "pruning: {tau_sigmas: 2.5, mu_max_m: 0.1, kappa_max_rad: 0.15}\n"
+      "hypotheses: {min_associations: 4, max_interpretations: 500}\n"
+      "validation: {gate_sigmas: 4, ambiguity_margin: 0.25}\n"
+      "refinement: {huber_sigmas: 2, planar_prior: true}\n",
+      "l.yaml"));
+  EXPECT_DOUBLE_EQ(options.graph.link_threshold_m, 3.5);
+  EXPECT_DOUBLE_EQ(options.noise.zeta_m, 100);
+  EXPECT_DOUBLE_EQ(options.noise.ego_camera_position_m.z(), 1.6);
+  EXPECT_DOUBLE_EQ(options.pruning.tau_sigmas, 2.5);
+  EXPECT_EQ(options.hypotheses.min_associations, 4);
+  EXPECT_EQ(options.hypotheses.max_interpretations, 500);
+  EXPECT_DOUBLE_EQ(options.validation.gate_sigmas, 4);
+  EXPECT_TRUE(options.refinement.planar_prior);
+}
+
+TEST(LocalizerOptions, BadValuesNameFileLineAndKey) {
+  EXPECT_EQ(error_of("percept_noise: {zeta_m: 0}\n"),
+            "l.yaml:1: percept_noise.zeta_m: must be in [1, 1e+06], got 0");
+  EXPECT_EQ(error_of("pruning:\n  mu_max: 0.1\n"),
+            "l.yaml:2: pruning.mu_max: unknown key (allowed: tau_sigmas, min_tau_m, mu_max_m, "
+            "kappa_max_rad)");
+  EXPECT_EQ(error_of("hypotheses: {min_associations: 3.5}\n"),
+            "l.yaml:1: hypotheses.min_associations: expected an integer, got '3.5'");
+  EXPECT_EQ(error_of("refinement: {planar_prior: maybe}\n"),
+            "l.yaml:1: refinement.planar_prior: expected true or false, got 'maybe'");
+  EXPECT_EQ(error_of("localiser: {}\n").rfind("l.yaml:1: localiser: unknown key", 0), 0u);
+}
+
+}  // namespace
+}  // namespace vsl::localization

@@ -1,0 +1,117 @@
+#include "vsl/localization/validation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/synthetic_percepts.hpp"
+#include "support/test_worlds.hpp"
+
+namespace vsl::localization {
+namespace {
+
+using testing::test_options;
+
+struct World {
+  explicit World(world::WorldModel model) : world(std::move(model)) {}
+  world::WorldModel world;
+  LocalizerOptions options = test_options();
+  world::WorldGraph graph = world::WorldGraph::build(world, options.graph);
+  TypedAdjacency adjacency = TypedAdjacency::build(graph);
+  NodeGrid grid = NodeGrid::build(graph);
+};
+
+TEST(Explain, TruePoseExplainsEveryTruePerceptWithItsObject) {
+  const World w(testing::bundled_kitchen());
+  const Eigen::Isometry3d truth = testing::upright_pose(2.6, 1.6, 2.0);
+  testing::SyntheticOptions o;
+  o.noise = false;
+  o.miss_rate = 0.0;
+  o.false_positive_rate = 0.0;
+  auto view = testing::synthesize_view(w.world, truth, o);
+  ASSERT_GE(view.percepts.size(), 5u);
+  // A false positive far from any object of its type.
+  view.percepts.push_back({"window", Eigen::Vector3d(1.0, 0.2, 0.3), std::nullopt, 1});
+  view.truth.emplace_back(std::nullopt);
+  const auto noise = percept_noise(view.percepts, w.options.noise);
+  const CandidateSets sets = proximity_filter(w.graph, w.adjacency, view.percepts, noise, w.options.pruning);
+  const LocalizationContext context{w.graph, w.adjacency, w.grid, view.percepts, noise, sets, w.options};
+  const Explanation e = explain(context, truth, PoseUncertainty{});
+  ASSERT_EQ(e.associations.size(), view.percepts.size() - 1);
+  for (const NodeAssociation& a : e.associations) {
+    ASSERT_TRUE(view.truth[a.percept].has_value());
+    EXPECT_EQ(w.graph.object_index(a.node), *view.truth[a.percept]);
+  }
+  EXPECT_NEAR(e.chi2, 0.0, 1e-12);
+  EXPECT_GT(e.log_likelihood_ratio, 0.0);
+
+  // Validation keeps the exact pose and scores it; a pose 0.3 m off explains less.
+  const auto v = validate_hypothesis(context, truth, e.associations);
+  ASSERT_TRUE(v.has_value());
+  EXPECT_LT(testing::position_error_m(v->world_T_ego, truth), 1e-9);
+  EXPECT_EQ(v->explained(), e.associations.size());
+  const Explanation off = explain(context, testing::upright_pose(2.9, 1.6, 2.0), PoseUncertainty{});
+  EXPECT_LT(off.log_likelihood_ratio, e.log_likelihood_ratio);
+}
+
+ValidatedHypothesis hypothesis(double score, std::size_t explained) {
+  ValidatedHypothesis h;
+  h.score = score;
+  for (std::size_t i = 0; i < explained; ++i) h.explanation.associations.push_back({static_cast<int>(i), 0});
+  return h;
+}
+
+TEST(Decide, StatusFollowsScoresAndSupport) {
+  ValidationOptions validation;  // margin 4.6 nats, 60 % explained
+  const HypothesisOptions hypotheses;
+  EXPECT_EQ(decide({}, 10, validation, hypotheses).status, Status::kFailed);
+  // Too few percepts explained.
+  EXPECT_EQ(decide({hypothesis(80.0, 5)}, 10, validation, hypotheses).status, Status::kFailed);
+  EXPECT_EQ(decide({hypothesis(20.0, 2)}, 3, validation, hypotheses).status, Status::kFailed);
+  // A clear winner.
+  const Decision clear = decide({hypothesis(80.0, 9), hypothesis(60.0, 8)}, 10, validation, hypotheses);
+  EXPECT_EQ(clear.status, Status::kLocalized);
+  EXPECT_EQ(clear.contenders, 1u);
+  // Within the margin: ambiguous with both, never a pick.
+  const Decision tie = decide({hypothesis(80.0, 9), hypothesis(77.0, 9), hypothesis(40.0, 6)}, 10,
+                              validation, hypotheses);
+  EXPECT_EQ(tie.status, Status::kAmbiguous);
+  EXPECT_EQ(tie.contenders, 2u);
+}
+
+TEST(Decide, RankingPrefersScoreThenChi2) {
+  ValidatedHypothesis a = hypothesis(50.0, 5), b = hypothesis(50.0, 5), c = hypothesis(60.0, 5);
+  a.explanation.chi2 = 3.0;
+  b.explanation.chi2 = 1.0;
+  EXPECT_TRUE(ranks_before(b, a));
+  EXPECT_TRUE(ranks_before(c, b));
+}
+
+// Two identical rooms, the second with one extra window: seen from the same ego point, only that
+// window tells the hypotheses apart.
+TEST(ChooseDiscriminator, PicksTheObjectOnlyOneHypothesisPredicts) {
+  const World w(testing::identical_rooms(2, 10.0, true));
+  const Eigen::Isometry3d room0 = testing::upright_pose(2.5, 1.5, 1.5708);
+  const Eigen::Isometry3d room1 = testing::upright_pose(12.5, 1.5, 1.5708);
+  const auto target = choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options);
+  ASSERT_TRUE(target.has_value());
+  EXPECT_EQ(target->object_id, "room1.marker");
+  EXPECT_EQ(target->hypothesis_index, 1u);
+  // Under hypothesis 1 the marker is at the ego target; under hypothesis 0 nothing of its type is
+  // within the discrimination distance of where that ego point lands.
+  const Eigen::Vector3d marker = w.world.objects[*w.world.find("room1.marker")].world_position_m;
+  EXPECT_LT((room1 * target->ego_target_m - marker).norm(), 1e-9);
+  const auto other = w.grid.nearest(*w.graph.find_type("window"), room0 * target->ego_target_m,
+                                    target->discrimination_m);
+  EXPECT_FALSE(other.has_value());
+  EXPECT_GE(target->discrimination_m, 0.9);
+}
+
+TEST(ChooseDiscriminator, NothingDiscriminatesIdenticalRoomsOrASingleHypothesis) {
+  const World w(testing::identical_rooms(2, 10.0, false));
+  const Eigen::Isometry3d room0 = testing::upright_pose(2.5, 1.5, 1.5708);
+  const Eigen::Isometry3d room1 = testing::upright_pose(12.5, 1.5, 1.5708);
+  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options).has_value());
+  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0}, w.options).has_value());
+}
+
+}  // namespace
+}  // namespace vsl::localization
