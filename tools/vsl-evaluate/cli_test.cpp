@@ -1,8 +1,8 @@
 // vsl-evaluate as a user runs it: generated scenarios and scenario files, text and JSON, errors.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "run_command.hpp"
