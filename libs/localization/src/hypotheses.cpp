@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -18,9 +19,6 @@ using world::NodeIndex;
 // A fourth sphere that misses the other pair point by less than this (chi^2, i.e. 3 sigma of one
 // radius) cannot tell the pair apart: that point keeps no descendant and stays a hypothesis.
 constexpr double kUnresolvedChi2 = 9.0;
-// Extension re-estimates the pose after each of the first kEarlyRefits associations, then after
-// every kEarlyRefits.
-constexpr std::size_t kEarlyRefits = 8;
 // Restriction spheres per location: the most precise associations of an interpretation.
 constexpr std::size_t kMaxSpheres = 8;
 // Regularizes the location's Fisher information (1 / m^2): a direction no sphere constrains is
@@ -66,9 +64,33 @@ double tilt_rad(const Eigen::Isometry3d& world_T_ego) {
   return std::acos(cos_tilt);
 }
 
+std::optional<SeedPose> seed_pose(const LocalizationContext& context, const PerceptTriple& seed,
+                                  const ModelTriple& subgraph) {
+  std::vector<PointCorrespondence> points;
+  std::vector<NodeAssociation> associations;
+  for (int s = 0; s < 3; ++s) {
+    points.push_back(context.correspondence(seed.percepts[s], subgraph.nodes[s]));
+    associations.push_back({seed.percepts[s], subgraph.nodes[s]});
+  }
+  const auto pose = estimate_pose(points, 1e-3);
+  if (!pose) return std::nullopt;
+  SeedPose out{*pose, uncertainty_of(context, associations)};
+  if (!upright_enough(out.world_T_ego, out.uncertainty, context.options.pruning)) return std::nullopt;
+  return out;
+}
+
 std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
                                                     const PerceptTriple& seed,
                                                     const ModelTriple& subgraph, int min_count) {
+  const auto start = seed_pose(context, seed, subgraph);
+  if (!start) return std::nullopt;
+  return extend_interpretation(context, seed, subgraph, *start, min_count);
+}
+
+std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
+                                                    const PerceptTriple& seed,
+                                                    const ModelTriple& subgraph,
+                                                    const SeedPose& start, int min_count) {
   const LocalizerOptions& options = context.options;
   Interpretation out;
   std::vector<PointCorrespondence> points;
@@ -76,12 +98,8 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     out.associations.push_back({seed.percepts[s], subgraph.nodes[s]});
     points.push_back(context.correspondence(seed.percepts[s], subgraph.nodes[s]));
   }
-  // Eq. 16 over the seed: S_ego = S_model [S_percept]^-1, as the least-squares rigid transform.
-  auto pose = estimate_pose(points, 1e-3);
-  if (!pose) return std::nullopt;
-  PoseUncertainty uncertainty = uncertainty_of(context, out.associations);
-  if (!upright_enough(*pose, uncertainty, options.pruning)) return std::nullopt;
-  out.world_T_ego = *pose;
+  std::optional<Eigen::Isometry3d> pose = start.world_T_ego;
+  PoseUncertainty uncertainty = start.uncertainty;
 
   // Percepts to extend with, most precise first (they decide early whether the seed is hopeless).
   std::vector<int> rest;
@@ -157,10 +175,11 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     out.associations.push_back({l, best_node});
     points.push_back(context.correspondence(l, best_node));
     // A seed of three percepts fixes the pose only roughly (its rotation to sigma / altitude),
-    // and far percepts sit on long lever arms; re-estimating as precise associations join keeps
-    // the prediction, and so the choice among same-type neighbours, sharp.
+    // and far percepts sit on long lever arms; re-estimating as precise associations join (after
+    // the 1st, 2nd, 4th, 8th, ...: the uncertainty halves with each doubling) keeps the
+    // prediction, and so the choice among same-type neighbours, sharp.
     const std::size_t added = out.associations.size() - 3;
-    if (added <= kEarlyRefits || added % kEarlyRefits == 0) {
+    if (std::has_single_bit(added)) {
       const auto refit = estimate_pose(points, 1e-3);
       if (refit) {
         pose = refit;

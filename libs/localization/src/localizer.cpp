@@ -29,6 +29,7 @@
 #include "vsl/localization/node_grid.hpp"
 #include "vsl/localization/orientation_filter.hpp"
 #include "vsl/localization/percept_noise.hpp"
+#include "vsl/localization/pose_index.hpp"
 #include "vsl/localization/proximity_filter.hpp"
 #include "vsl/localization/validation.hpp"
 
@@ -70,17 +71,47 @@ Hypothesis to_hypothesis(const world::WorldModel& world, const world::WorldGraph
   return h;
 }
 
-// Adds a validated hypothesis unless an indistinguishable one is known; of two such the better
-// ranked stays.
-void merge(std::vector<ValidatedHypothesis>& known, ValidatedHypothesis candidate,
-           const HypothesisOptions& options) {
-  for (ValidatedHypothesis& k : known) {
-    if (!indistinguishable(k, candidate, options)) continue;
-    if (ranks_before(candidate, k)) k = std::move(candidate);
-    return;
+// Validated hypotheses, kept free of indistinguishable pairs (of two such the better ranked
+// stays), found by position.
+class HypothesisSet {
+ public:
+  explicit HypothesisSet(const HypothesisOptions& options) : options_(options) {}
+
+  void add(ValidatedHypothesis candidate) {
+    // indistinguishable() reaches at most 2 sqrt(sigma_a^2 + sigma_b^2) <= 2 (0.1 + 0.1) m.
+    const double radius = std::max(options_.same_position_m, 0.4);
+    std::optional<std::size_t> same;
+    index_.for_each_near(candidate.world_T_ego.translation(), radius, [&](std::size_t id) {
+      if (!same && indistinguishable(hypotheses_[id], candidate, options_)) same = id;
+    });
+    if (same) {
+      // The better one stays; it is within the radius of the indexed position.
+      if (ranks_before(candidate, hypotheses_[*same])) {
+        index_.add(candidate.world_T_ego.translation(), *same);  // it may have moved a little
+        hypotheses_[*same] = std::move(candidate);
+      }
+      return;
+    }
+    index_.add(candidate.world_T_ego.translation(), hypotheses_.size());
+    hypotheses_.push_back(std::move(candidate));
   }
-  known.push_back(std::move(candidate));
-}
+
+  // Ranked, best first (a copy: the set keeps its own order for the index).
+  std::vector<ValidatedHypothesis> ranked() const {
+    std::vector<ValidatedHypothesis> out = hypotheses_;
+    std::sort(out.begin(), out.end(), ranks_before);
+    return out;
+  }
+  const ValidatedHypothesis* best() const {
+    const auto it = std::min_element(hypotheses_.begin(), hypotheses_.end(), ranks_before);
+    return it == hypotheses_.end() ? nullptr : &*it;
+  }
+
+ private:
+  const HypothesisOptions& options_;
+  std::vector<ValidatedHypothesis> hypotheses_;
+  PoseIndex index_{0.5};
+};
 
 // Standard deviations along the worst axes of the pose covariance.
 struct Precision {
@@ -185,7 +216,11 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
   const double floor_count =
       std::max<double>(options.hypotheses.min_associations,
                        options.validation.min_explained_fraction * static_cast<double>(usable));
-  std::vector<ValidatedHypothesis> validated;
+  HypothesisSet validated_set(options.hypotheses);
+  // Where the interpretations of every seed so far put the robot (ids into `interpreted`), to skip
+  // a subgraph whose seed pose lands on a place already explained.
+  PoseIndex interpreted_at(0.3);
+  std::vector<Interpretation> interpreted;
   std::size_t budget = static_cast<std::size_t>(std::max(options.hypotheses.max_interpretations, 1));
   std::vector<std::size_t> tried;  // seeds processed
   for (std::size_t s = 0; s < seeds.size() && budget > 0; ++s) {
@@ -204,44 +239,53 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       StageTimer timer(times.hypothesis_generation_ms);
       // Relative to the best so far: a hypothesis explaining a quarter fewer percepts cannot come
       // within the margin unless its fits are far tighter, which the slack allows for.
-      const double best = validated.empty() ? 0.0 : static_cast<double>(validated.front().explained());
+      const ValidatedHypothesis* leader = validated_set.best();
+      const double best = leader ? static_cast<double>(leader->explained()) : 0.0;
       const int min_count = static_cast<int>(
           std::ceil(std::max({3.0, floor_count - slack, best - std::max(slack, 0.25 * best)})));
-      std::vector<Interpretation> interpretations;
+      const std::size_t first_new = interpreted.size();
       for (const ModelTriple& subgraph : subgraphs.subgraphs) {
-        auto interpretation = extend_interpretation(context, seed, subgraph, min_count);
+        const auto start = seed_pose(context, seed, subgraph);
+        if (!start) continue;
+        // An interpretation near the seed pose that already gives these three percepts these
+        // three objects would be found again: nothing new to learn.
+        const double tolerance_m = std::clamp(
+            3.0 * start->uncertainty.sigma_at_m(Eigen::Vector3d::Zero()),
+            options.hypotheses.same_position_m, std::max(options.hypotheses.same_position_m, 0.3));
+        bool known = false;
+        interpreted_at.for_each_near(start->world_T_ego.translation(), tolerance_m, [&](std::size_t id) {
+          if (known) return;
+          const auto& associations = interpreted[id].associations;
+          int same = 0;
+          for (int k = 0; k < 3; ++k) {
+            same += std::any_of(associations.begin(), associations.end(), [&](const NodeAssociation& a) {
+              return a.percept == seed.percepts[k] && a.node == subgraph.nodes[k];
+            });
+          }
+          known = same == 3;
+        });
+        if (known) continue;
+        auto interpretation = extend_interpretation(context, seed, subgraph, *start, min_count);
         if (!interpretation) continue;
-        // A pose already found (from this seed or an earlier one) needs no second validation.
-        const auto known = [&](const Eigen::Isometry3d& pose) {
-          return std::any_of(validated.begin(), validated.end(),
-                             [&](const ValidatedHypothesis& v) {
-                               return same_hypothesis(v.world_T_ego, pose, options.hypotheses);
-                             }) ||
-                 std::any_of(interpretations.begin(), interpretations.end(),
-                             [&](const Interpretation& i) {
-                               return same_hypothesis(i.world_T_ego, pose, options.hypotheses);
-                             });
-        };
-        if (known(interpretation->world_T_ego)) continue;
-        interpretations.push_back(std::move(*interpretation));
+        interpreted_at.add(interpretation->world_T_ego.translation(), interpreted.size());
+        interpreted.push_back(std::move(*interpretation));
       }
-      for (const Interpretation& interpretation : interpretations) {
-        for (const Eigen::Isometry3d& pose : hypothesis_poses(context, interpretation)) {
-          poses.emplace_back(pose, interpretation.associations);
+      for (std::size_t i = first_new; i < interpreted.size(); ++i) {
+        for (const Eigen::Isometry3d& pose : hypothesis_poses(context, interpreted[i])) {
+          poses.emplace_back(pose, interpreted[i].associations);
         }
       }
     }
 
-    if (std::getenv("VSL_CORE_DEBUG")) std::fprintf(stderr, "DEBUG seed %zu: subgraphs %zu poses %zu validated %zu\n", s, subgraphs.subgraphs.size(), poses.size(), validated.size());
+    if (std::getenv("VSL_CORE_DEBUG")) std::fprintf(stderr, "DEBUG seed %zu (%d %d %d): subgraphs %zu interpretations %zu poses %zu\n", s, seed.percepts[0], seed.percepts[1], seed.percepts[2], subgraphs.subgraphs.size(), interpreted.size(), poses.size());
     {
       StageTimer timer(times.validation_ms);
       for (const auto& [pose, generating] : poses) {
         auto v = validate_hypothesis(context, pose, generating);
-        if (v) merge(validated, std::move(*v), options.hypotheses);
+        if (v) validated_set.add(std::move(*v));
       }
-      std::sort(validated.begin(), validated.end(), ranks_before);
-      if (!validated.empty()) {
-        const ValidatedHypothesis& top = validated.front();
+      if (const ValidatedHypothesis* leader = validated_set.best()) {
+        const ValidatedHypothesis& top = *leader;
         const auto confirmed = std::count_if(tried.begin(), tried.end(), [&](std::size_t t) {
           const auto& p = seeds[t].percepts;
           return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
@@ -251,6 +295,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     }
   }
 
+  const std::vector<ValidatedHypothesis> validated = validated_set.ranked();
   Decision decision;
   {
     StageTimer timer(times.validation_ms);

@@ -110,13 +110,20 @@ std::optional<ValidatedHypothesis> validate_hypothesis(
   return out;
 }
 
+constexpr double kMaxMergeSigmaM = 0.1;
+constexpr double kMaxMergeSigmaRad = 0.05;
+
 bool indistinguishable(const ValidatedHypothesis& a, const ValidatedHypothesis& b,
                        const HypothesisOptions& options) {
   if (same_hypothesis(a.world_T_ego, b.world_T_ego, options)) return true;
+  // Two sigmas of each, the sigmas capped: a pose known only to decimetres is not merged with
+  // everything within a metre of it.
   constexpr double kSigmas = 2.0;
   const Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  const double sa = a.uncertainty.sigma_at_m(origin), sb = b.uncertainty.sigma_at_m(origin);
-  const double ra = a.uncertainty.sigma_rotation_rad, rb = b.uncertainty.sigma_rotation_rad;
+  const double sa = std::min(a.uncertainty.sigma_at_m(origin), kMaxMergeSigmaM);
+  const double sb = std::min(b.uncertainty.sigma_at_m(origin), kMaxMergeSigmaM);
+  const double ra = std::min(a.uncertainty.sigma_rotation_rad, kMaxMergeSigmaRad);
+  const double rb = std::min(b.uncertainty.sigma_rotation_rad, kMaxMergeSigmaRad);
   return (a.world_T_ego.translation() - b.world_T_ego.translation()).norm() <
              kSigmas * std::sqrt(sa * sa + sb * sb) &&
          rotation_angle_rad(a.world_T_ego, b.world_T_ego) < kSigmas * std::sqrt(ra * ra + rb * rb);

@@ -35,6 +35,7 @@
 #include "vsl/geometry/gaussian_spheres.hpp"
 #include "vsl/localization/localization_context.hpp"
 #include "vsl/localization/orientation_filter.hpp"
+#include "vsl/localization/pose_uncertainty.hpp"
 
 namespace vsl::localization {
 
@@ -44,8 +45,24 @@ struct Interpretation {
   Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();  // Eq. 16 over the seed
 };
 
-// Extends one seed subgraph (see 1. above). nullopt when the seed's pose is degenerate or tilted
-// (with gravity), or fewer than `min_count` associations remain reachable.
+// Eq. 16 over a seed subgraph: S_ego = S_model [S_percept]^-1 (as the least-squares rigid
+// transform of the three pairs), with how well three percepts fix it. nullopt when degenerate, or
+// tilted beyond max_tilt_rad (plus its own uncertainty) with gravity.
+struct SeedPose {
+  Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();
+  PoseUncertainty uncertainty;
+};
+std::optional<SeedPose> seed_pose(const LocalizationContext& context, const PerceptTriple& seed,
+                                  const ModelTriple& subgraph);
+
+// Extends one seed subgraph from its seed pose (see 1. above). nullopt when fewer than
+// `min_count` associations remain reachable. The returned world_T_ego is Eq. 16 over all the
+// associations found.
+std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
+                                                    const PerceptTriple& seed,
+                                                    const ModelTriple& subgraph,
+                                                    const SeedPose& start, int min_count);
+// Both in one.
 std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
                                                     const PerceptTriple& seed,
                                                     const ModelTriple& subgraph, int min_count);
