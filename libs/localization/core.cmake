@@ -6,6 +6,7 @@ list(APPEND VSL_LOCALIZATION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/pose_uncertainty.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/proximity_filter.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/orientation_filter.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/seeds.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/hypotheses.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/validation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/localizer.cpp)
@@ -16,6 +17,7 @@ list(APPEND VSL_LOCALIZATION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/spatial_index_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/proximity_filter_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/orientation_filter_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/seeds_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/hypotheses_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/validation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/localizer_test.cpp

@@ -23,6 +23,7 @@
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/localization/orientation_filter.hpp"
+#include "vsl/localization/seeds.hpp"
 #include "vsl/localization/proximity_filter.hpp"
 #include "vsl/localization/validation.hpp"
 #include "vsl/world/world_io.hpp"
@@ -110,8 +111,7 @@ Prepared prepare(const Scene& s, const std::vector<FusedPercept>& percepts) {
   Prepared p;
   p.noise = percept_noise(percepts, options.noise);
   p.candidates = proximity_filter(s.localizer->graph(), s.adjacency, percepts, p.noise, options.pruning);
-  p.seeds = choose_seed_triples(percepts, p.noise, p.candidates, s.localizer->graph().link_threshold_m(),
-                                options.pruning, static_cast<std::size_t>(options.hypotheses.max_seeds));
+  p.seeds = choose_seed_triples(s.localizer->graph(), percepts, p.noise, p.candidates, options.pruning, static_cast<std::size_t>(options.hypotheses.max_seeds));
   if (!p.seeds.empty()) {
     p.subgraphs = orientation_filter(s.localizer->graph(), s.adjacency, percepts, p.noise, p.candidates,
                                      p.seeds.front(), options.pruning, 20000);
@@ -161,8 +161,7 @@ void BM_OrientationFilter(benchmark::State& state) {
   for (auto _ : state) {
     const std::size_t i = v++ % s.views.size();
     const Prepared& p = prepared[i];
-    const auto seeds = choose_seed_triples(s.views[i], p.noise, p.candidates,
-                                           s.localizer->graph().link_threshold_m(), options.pruning,
+    const auto seeds = choose_seed_triples(s.localizer->graph(), s.views[i], p.noise, p.candidates, options.pruning,
                                            static_cast<std::size_t>(options.hypotheses.max_seeds));
     if (seeds.empty()) continue;
     const auto result = orientation_filter(s.localizer->graph(), s.adjacency, s.views[i], p.noise,

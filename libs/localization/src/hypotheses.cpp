@@ -5,7 +5,6 @@
 #include <Eigen/LU>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -19,6 +18,8 @@ using world::NodeIndex;
 // A fourth sphere that misses the other pair point by less than this (chi^2, i.e. 3 sigma of one
 // radius) cannot tell the pair apart: that point keeps no descendant and stays a hypothesis.
 constexpr double kUnresolvedChi2 = 9.0;
+// Associations (the seed's and the first ones added) a new association is checked against.
+constexpr std::size_t kPairwiseChecks = 8;
 // Restriction spheres per location: the most precise associations of an interpretation.
 constexpr std::size_t kMaxSpheres = 8;
 // Regularizes the location's Fisher information (1 / m^2): a direction no sphere constrains is
@@ -100,6 +101,12 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
   }
   std::optional<Eigen::Isometry3d> pose = start.world_T_ego;
   PoseUncertainty uncertainty = start.uncertainty;
+  const auto refit = [&]() {
+    const auto estimate = estimate_pose(points, 1e-3);
+    if (!estimate) return;
+    pose = estimate;
+    uncertainty = uncertainty_of(context, out.associations);
+  };
 
   // Percepts to extend with, most precise first (they decide early whether the seed is hopeless).
   std::vector<int> rest;
@@ -124,15 +131,17 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     const double radius_m =
         gate * std::sqrt(context.noise[l].sigma_m * context.noise[l].sigma_m + sigma_pose * sigma_pose);
     const Eigen::Vector3d predicted_m = *pose * percept.ego_position_m;
-    // Pairwise distance checks against the seed (Eq. 8 for each new pair).
-    std::array<PerceptPair, 3> pairs;
+    // Pairwise distance checks (Eq. 8 for each new pair) against the seed and the most precise
+    // associations found since (the first ones added): a wrong object can match three distances
+    // by chance, rarely eight.
+    const std::size_t checked = std::min(out.associations.size(), kPairwiseChecks);
+    std::array<PerceptPair, kPairwiseChecks> pairs;
     int anchor = -1;
-    for (int s = 0; s < 3; ++s) {
-      pairs[s] = make_percept_pair(l, seed.percepts[s], context.percepts, context.noise,
-                                   options.pruning);
-      if (pairs[s].distance_m + pairs[s].tau_m < link_threshold_m &&
+    for (std::size_t s = 0; s < checked; ++s) {
+      pairs[s] = context.pair(l, out.associations[s].percept);
+      if (s < 3 && pairs[s].distance_m + pairs[s].tau_m < link_threshold_m &&
           (anchor < 0 || pairs[s].distance_m < pairs[anchor].distance_m)) {
-        anchor = s;
+        anchor = static_cast<int>(s);
       }
     }
     double best_cost = std::numeric_limits<double>::infinity();
@@ -142,11 +151,11 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
         if (a.node == node) return;
       }
       const Eigen::Vector3d& x = context.graph.world_position_m(node);
-      // The three distances leave the seed plane's mirror side open; the seed's pose picks.
+      // Distances leave the mirror side of the associations' plane open; the pose picks.
       if ((x - predicted_m).squaredNorm() > radius_m * radius_m) return;
       double cost = 0.0;
-      for (int s = 0; s < 3; ++s) {
-        const double d = (x - context.graph.world_position_m(subgraph.nodes[s])).norm();
+      for (std::size_t s = 0; s < checked; ++s) {
+        const double d = (x - context.graph.world_position_m(out.associations[s].node)).norm();
         const double r = (d - pairs[s].distance_m) / pairs[s].tau_m;
         if (std::abs(r) > 1.0) return;
         cost += r * r;
@@ -176,18 +185,16 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     points.push_back(context.correspondence(l, best_node));
     // A seed of three percepts fixes the pose only roughly (its rotation to sigma / altitude),
     // and far percepts sit on long lever arms; re-estimating as precise associations join (after
-    // the 1st, 2nd, 4th, 8th, ...: the uncertainty halves with each doubling) keeps the
-    // prediction, and so the choice among same-type neighbours, sharp.
+    // the 2nd and the 8th) keeps the prediction, and so the choice among same-type neighbours,
+    // sharp.
     const std::size_t added = out.associations.size() - 3;
-    if (std::has_single_bit(added)) {
-      const auto refit = estimate_pose(points, 1e-3);
-      if (refit) {
-        pose = refit;
-        uncertainty = uncertainty_of(context, out.associations);
-      }
-    }
+    if (added == 2 || added == 8) refit();
   }
+  // Eq. 16 over everything found (unless the last association already triggered it).
+  const std::size_t added = out.associations.size() - 3;
+  if (added > 0 && added != 2 && added != 8) refit();
   out.world_T_ego = *pose;
+  out.uncertainty = uncertainty;
   return out;
 }
 
@@ -247,14 +254,9 @@ std::vector<Eigen::Isometry3d> hypothesis_poses(const LocalizationContext& conte
   std::vector<Eigen::Isometry3d> out;
   if (associations.size() < 3) return out;
 
-  // Eq. 16 over the whole subgraph.
-  std::vector<PointCorrespondence> points;
-  for (const NodeAssociation& a : associations) {
-    points.push_back(context.correspondence(a.percept, a.node));
-  }
-  const auto pose = estimate_pose(points, 1e-3);
-  if (!pose) return out;
-  const PoseUncertainty uncertainty = uncertainty_of(context, associations);
+  // Eq. 16 over the whole subgraph (the interpretation search ends with it).
+  const std::optional<Eigen::Isometry3d> pose = interpretation.world_T_ego;
+  const PoseUncertainty& uncertainty = interpretation.uncertainty;
   if (!upright_enough(*pose, uncertainty, options.pruning)) return out;
   const double pose_sigma_m = uncertainty.sigma_at_m(Eigen::Vector3d::Zero());
   const double gate = gate_sigmas(options);

@@ -31,6 +31,7 @@
 #include "vsl/localization/percept_noise.hpp"
 #include "vsl/localization/pose_index.hpp"
 #include "vsl/localization/proximity_filter.hpp"
+#include "vsl/localization/seeds.hpp"
 #include "vsl/localization/validation.hpp"
 
 namespace vsl::localization {
@@ -50,6 +51,10 @@ class StageTimer {
   double& total_ms_;
   Clock::time_point start_;
 };
+
+// Cell of the spatial index (m): a validation gate (3 sigma, 0.1-0.5 m) spans one or two cells
+// per axis.
+constexpr double kGridCellM = 1.0;
 
 // Hypotheses reported beside the best one when localized or failed (for inspection).
 constexpr std::size_t kReportedRunnersUp = 9;
@@ -154,7 +159,7 @@ struct Localizer::State {
 Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
   world::WorldGraph graph = world::WorldGraph::build(world, options.graph);
   TypedAdjacency adjacency = TypedAdjacency::build(graph);
-  NodeGrid grid = NodeGrid::build(graph);
+  NodeGrid grid = NodeGrid::build(graph, kGridCellM);
   state_ = std::make_unique<State>(State{&world, std::move(options), std::move(graph),
                                          std::move(adjacency), std::move(grid)});
 }
@@ -201,12 +206,10 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
   const LocalizationContext context{graph,       state_->adjacency, state_->grid, percepts,
                                     noise,       candidates,        options};
 
-  std::vector<PerceptTriple> seeds;
+  std::optional<SeedChooser> chooser;
   {
     StageTimer timer(times.orientation_filter_ms);
-    seeds = choose_seed_triples(percepts, noise, candidates, graph.link_threshold_m(),
-                                options.pruning,
-                                static_cast<std::size_t>(std::max(options.hypotheses.max_seeds, 1)));
+    chooser.emplace(graph, percepts, noise, candidates, options.pruning);
   }
 
   // Interpretations worth extending must be able to compete: reach the explained fraction and
@@ -217,67 +220,78 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       std::max<double>(options.hypotheses.min_associations,
                        options.validation.min_explained_fraction * static_cast<double>(usable));
   HypothesisSet validated_set(options.hypotheses);
-  // Where the interpretations of every seed so far put the robot (ids into `interpreted`), to skip
-  // a subgraph whose seed pose lands on a place already explained.
-  PoseIndex interpreted_at(0.3);
+  // Where the interpretations of every seed so far put the robot (ids into `interpreted`).
+  PoseIndex interpreted_at(0.25);
   std::vector<Interpretation> interpreted;
   std::size_t budget = static_cast<std::size_t>(std::max(options.hypotheses.max_interpretations, 1));
-  std::vector<std::size_t> tried;  // seeds processed
-  for (std::size_t s = 0; s < seeds.size() && budget > 0; ++s) {
-    const PerceptTriple& seed = seeds[s];
-    tried.push_back(s);
+  std::vector<PerceptTriple> tried;  // seeds processed
+  const auto max_seeds = static_cast<std::size_t>(std::max(options.hypotheses.max_seeds, 1));
+  while (tried.size() < max_seeds && budget > 0) {
     OrientationFilterResult subgraphs;
+    PerceptTriple seed;
     {
       StageTimer timer(times.orientation_filter_ms);
+      const auto next = chooser->next();
+      if (!next) break;
+      seed = *next;
+      tried.push_back(seed);
       subgraphs = orientation_filter(graph, state_->adjacency, percepts, noise, candidates, seed,
                                      options.pruning, budget);
       budget -= std::min(budget, subgraphs.subgraphs.size());
+      if (subgraphs.subgraphs.empty()) {
+        chooser->report_empty(seed);
+        continue;
+      }
     }
 
     std::vector<std::pair<Eigen::Isometry3d, std::vector<NodeAssociation>>> poses;
     {
       StageTimer timer(times.hypothesis_generation_ms);
-      // Relative to the best so far: a hypothesis explaining a quarter fewer percepts cannot come
-      // within the margin unless its fits are far tighter, which the slack allows for.
+      // Relative to the best so far (validated, or found by this seed): an interpretation that
+      // explains a quarter fewer percepts cannot come within the margin unless its fits are far
+      // tighter, which the slack allows for. Raising the bar as better interpretations appear lets
+      // the search abandon the rest after a few misses.
+      const auto bar = [&](double best) {
+        return static_cast<int>(
+            std::ceil(std::max({3.0, floor_count - slack, best - std::max(slack, 0.25 * best)})));
+      };
       const ValidatedHypothesis* leader = validated_set.best();
-      const double best = leader ? static_cast<double>(leader->explained()) : 0.0;
-      const int min_count = static_cast<int>(
-          std::ceil(std::max({3.0, floor_count - slack, best - std::max(slack, 0.25 * best)})));
-      const std::size_t first_new = interpreted.size();
+      std::size_t best_count = leader ? leader->explained() : 0;
+      struct Candidate {
+        Eigen::Isometry3d pose;
+        std::size_t interpretation;
+      };
+      std::vector<Candidate> found;
       for (const ModelTriple& subgraph : subgraphs.subgraphs) {
-        const auto start = seed_pose(context, seed, subgraph);
-        if (!start) continue;
-        // An interpretation near the seed pose that already gives these three percepts these
-        // three objects would be found again: nothing new to learn.
-        const double tolerance_m = std::clamp(
-            3.0 * start->uncertainty.sigma_at_m(Eigen::Vector3d::Zero()),
-            options.hypotheses.same_position_m, std::max(options.hypotheses.same_position_m, 0.3));
-        bool known = false;
-        interpreted_at.for_each_near(start->world_T_ego.translation(), tolerance_m, [&](std::size_t id) {
-          if (known) return;
-          const auto& associations = interpreted[id].associations;
-          int same = 0;
-          for (int k = 0; k < 3; ++k) {
-            same += std::any_of(associations.begin(), associations.end(), [&](const NodeAssociation& a) {
-              return a.percept == seed.percepts[k] && a.node == subgraph.nodes[k];
-            });
-          }
-          known = same == 3;
-        });
-        if (known) continue;
-        auto interpretation = extend_interpretation(context, seed, subgraph, *start, min_count);
+        auto interpretation =
+            extend_interpretation(context, seed, subgraph, bar(static_cast<double>(best_count)));
         if (!interpretation) continue;
+        // The same place found again (from this seed or an earlier one; Eq. 16 over all its
+        // associations is as precise as the data) needs no second validation.
+        bool known = false;
+        const Eigen::Isometry3d& pose = interpretation->world_T_ego;
+        interpreted_at.for_each_near(pose.translation(), options.hypotheses.same_position_m,
+                                     [&](std::size_t id) {
+                                       known = known || same_hypothesis(interpreted[id].world_T_ego,
+                                                                        pose, options.hypotheses);
+                                     });
+        if (known) continue;
+        const std::vector<Eigen::Isometry3d> located = hypothesis_poses(context, *interpretation);
+        // Only an interpretation that stands as a hypothesis raises the bar.
+        if (!located.empty()) best_count = std::max(best_count, interpretation->associations.size());
+        for (const Eigen::Isometry3d& p : located) found.push_back({p, interpreted.size()});
         interpreted_at.add(interpretation->world_T_ego.translation(), interpreted.size());
         interpreted.push_back(std::move(*interpretation));
       }
-      for (std::size_t i = first_new; i < interpreted.size(); ++i) {
-        for (const Eigen::Isometry3d& pose : hypothesis_poses(context, interpreted[i])) {
-          poses.emplace_back(pose, interpreted[i].associations);
-        }
+      // Hypotheses found before the bar rose may now be below it.
+      const int final_bar = bar(static_cast<double>(best_count));
+      for (const Candidate& c : found) {
+        if (static_cast<int>(interpreted[c.interpretation].associations.size()) < final_bar) continue;
+        poses.emplace_back(c.pose, interpreted[c.interpretation].associations);
       }
     }
 
-    if (std::getenv("VSL_CORE_DEBUG")) std::fprintf(stderr, "DEBUG seed %zu (%d %d %d): subgraphs %zu interpretations %zu poses %zu\n", s, seed.percepts[0], seed.percepts[1], seed.percepts[2], subgraphs.subgraphs.size(), interpreted.size(), poses.size());
+    if (std::getenv("VSL_CORE_DEBUG")) std::fprintf(stderr, "DEBUG seed (%d %d %d): subgraphs %zu interpretations %zu poses %zu\n", seed.percepts[0], seed.percepts[1], seed.percepts[2], subgraphs.subgraphs.size(), interpreted.size(), poses.size());
     {
       StageTimer timer(times.validation_ms);
       for (const auto& [pose, generating] : poses) {
@@ -286,8 +300,8 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       }
       if (const ValidatedHypothesis* leader = validated_set.best()) {
         const ValidatedHypothesis& top = *leader;
-        const auto confirmed = std::count_if(tried.begin(), tried.end(), [&](std::size_t t) {
-          const auto& p = seeds[t].percepts;
+        const auto confirmed = std::count_if(tried.begin(), tried.end(), [&](const PerceptTriple& t) {
+          const auto& p = t.percepts;
           return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
         });
         if (confirmed >= options.hypotheses.confirming_seeds) break;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 namespace vsl::localization {
@@ -50,13 +49,6 @@ double altitude(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen:
   if (n == 0.0) return (c - a).norm();
   return ab.cross(c - a).norm() / n;
 }
-
-// A seed's frame is only as good as its shortest altitude (and, with gravity, the horizontal
-// extent of its first edge) against the percepts' sigma: below this ratio the seed's pose is off by
-// more than a tenth of a radian and its subgraphs are mostly noise.
-constexpr double kMinConditioning = 8.0;
-// Below this a seed is not tried at all (its frame's rotation is uncertain by a quarter radian).
-constexpr double kFloorConditioning = 4.0;
 
 double horizontal_extent(const Eigen::Vector3d& d) {
   return std::sqrt(d.x() * d.x() + d.y() * d.y());
@@ -193,104 +185,6 @@ OrientationFilterResult orientation_filter(const world::WorldGraph& graph,
     result.nodes[s] = std::move(used[s]);
   }
   return result;
-}
-
-std::vector<PerceptTriple> choose_seed_triples(const std::vector<FusedPercept>& percepts,
-                                               const std::vector<PerceptNoise>& noise,
-                                               const CandidateSets& candidates,
-                                               double link_threshold_m,
-                                               const PruningOptions& options,
-                                               std::size_t max_seeds) {
-  // Pool: usable percepts, the most precise first (a seed's noise sets every later tolerance).
-  std::vector<int> pool;
-  for (std::size_t a = 0; a < percepts.size(); ++a) {
-    if (!candidates.outlier[a] && candidates.types[a]) pool.push_back(static_cast<int>(a));
-  }
-  std::stable_sort(pool.begin(), pool.end(), [&](int a, int b) {
-    if (candidates.constrained[a] != candidates.constrained[b]) return candidates.constrained[a] > candidates.constrained[b];
-    return noise[a].sigma_m < noise[b].sigma_m;
-  });
-  constexpr std::size_t kPool = 16;
-  if (pool.size() > kPool) pool.resize(kPool);
-
-  struct Scored {
-    PerceptTriple triple;
-    double score;
-  };
-  std::vector<Scored> scored;
-  const auto link_ok = [&](int a, int b) {
-    const double d = (percepts[a].ego_position_m - percepts[b].ego_position_m).norm();
-    const double mu = std::max(options.mu_max_m,
-                               options.tau_sigmas * std::hypot(noise[a].sigma_m, noise[b].sigma_m));
-    return d + mu < link_threshold_m;
-  };
-  for (std::size_t p = 0; p < pool.size(); ++p) {
-    for (std::size_t q = p + 1; q < pool.size(); ++q) {
-      for (std::size_t r = q + 1; r < pool.size(); ++r) {
-        std::array<int, 3> t{pool[p], pool[q], pool[r]};
-        if (!link_ok(t[0], t[1]) || !link_ok(t[0], t[2]) || !link_ok(t[1], t[2])) continue;
-        const Eigen::Vector3d& a = percepts[t[0]].ego_position_m;
-        const Eigen::Vector3d& b = percepts[t[1]].ego_position_m;
-        const Eigen::Vector3d& c = percepts[t[2]].ego_position_m;
-        const double sigma =
-            std::max({noise[t[0]].sigma_m, noise[t[1]].sigma_m, noise[t[2]].sigma_m});
-        // Conditioning: the smallest altitude of the triangle against the noise (how well the
-        // frame's axes are defined).
-        double conditioning = std::min({altitude(a, b, c), altitude(b, c, a), altitude(c, a, b)});
-        if (options.use_gravity) {
-          // Origin and first axis: the pair with the largest horizontal extent, which fixes yaw.
-          const std::array<std::array<int, 3>, 3> orders{
-              {{t[0], t[1], t[2]}, {t[0], t[2], t[1]}, {t[1], t[2], t[0]}}};
-          double best = -1.0;
-          for (const auto& o : orders) {
-            const double h = horizontal_extent(percepts[o[1]].ego_position_m -
-                                               percepts[o[0]].ego_position_m);
-            if (h > best) {
-              best = h;
-              t = o;
-            }
-          }
-          conditioning = std::min(conditioning, best);
-        }
-        conditioning /= sigma;
-        if (conditioning < kFloorConditioning) continue;
-        double cost = 1.0;
-        for (const int x : t) {
-          cost *= candidates.constrained[x] ? std::max<double>(1.0, candidates.nodes[x].size())
-                                            : 1e6;
-        }
-        // Poorly conditioned seeds only after every well-conditioned one.
-        const double penalty = conditioning < kMinConditioning ? 1e-6 : 1.0;
-        scored.push_back({{t}, penalty * std::min(conditioning, 50.0) / std::cbrt(cost)});
-      }
-    }
-  }
-  std::stable_sort(scored.begin(), scored.end(),
-                   [](const Scored& x, const Scored& y) { return x.score > y.score; });
-
-  // Greedy: each next seed shares as few percepts as possible with the seeds already chosen.
-  std::vector<PerceptTriple> seeds;
-  std::vector<int> uses(percepts.size(), 0);
-  std::vector<bool> taken(scored.size(), false);
-  while (seeds.size() < max_seeds) {
-    int best = -1;
-    int best_shared = std::numeric_limits<int>::max();
-    for (std::size_t s = 0; s < scored.size(); ++s) {
-      if (taken[s]) continue;
-      int shared = 0;  // how often its percepts were used already
-      for (const int x : scored[s].triple.percepts) shared += uses[x];
-      if (shared < best_shared) {
-        best_shared = shared;
-        best = static_cast<int>(s);
-        if (shared == 0) break;
-      }
-    }
-    if (best < 0) break;
-    taken[best] = true;
-    seeds.push_back(scored[best].triple);
-    for (const int x : scored[best].triple.percepts) ++uses[x];
-  }
-  return seeds;
 }
 
 }  // namespace vsl::localization

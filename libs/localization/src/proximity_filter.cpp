@@ -1,5 +1,7 @@
 #include "vsl/localization/proximity_filter.hpp"
 
+#include "vsl/localization/localization_context.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -88,19 +90,46 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     }
   }
 
+  // Unselective percepts (a link set of theirs above max_link_set: reading it costs more than the
+  // pruning saves) are left unconstrained and constrain nobody; dropping them as partners can
+  // change others' lists, so repeat until stable.
+  const auto limit = static_cast<std::size_t>(std::max(options.max_link_set, 0));
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    std::vector<bool> unselective(m, false);
+    for (std::size_t a = 0; a < m; ++a) {
+      const auto& list = partners[a];
+      unselective[a] = std::any_of(list.begin(), list.end(),
+                                   [&](const Partner& p) { return p.band > limit; });
+    }
+    for (std::size_t a = 0; a < m; ++a) {
+      auto& list = partners[a];
+      const std::size_t before = list.size();
+      if (unselective[a]) {
+        list.clear();
+      } else {
+        list.erase(std::remove_if(list.begin(), list.end(),
+                                  [&](const Partner& p) { return unselective[p.percept]; }),
+                   list.end());
+      }
+      dropped = dropped || list.size() != before;
+    }
+  }
+
   // Pass 1: a node of percept a's type is a candidate when the link sets of at least
   // required_a = |partners| - f_a partners contain it. Such a node lies in at least one of any
   // f_a + 1 of those link sets, so collecting from the f_a + 1 smallest sees every candidate.
-  std::vector<Tally> tally(graph.node_count());
+  std::vector<Tally> tally;
   std::vector<int> required(m, 0);
   for (std::size_t a = 0; a < m; ++a) {
     out.nodes[a].clear();
     out.constrained[a] = false;
     std::vector<Partner>& list = partners[a];
     if (!out.types[a] || list.empty()) continue;
-    out.constrained[a] = true;
     std::sort(list.begin(), list.end(),
               [](const Partner& x, const Partner& y) { return x.band < y.band; });
+    out.constrained[a] = true;
+    if (tally.empty()) tally.resize(graph.node_count());
     const int f = allowed_unsupported(list.size(), options.max_unsupported_fraction);
     required[a] = static_cast<int>(list.size()) - f;
     const auto epoch = static_cast<std::uint32_t>(a + 1);
@@ -135,6 +164,12 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
   // every removed candidate decrements the counts of the candidates it supported (found among its
   // graph neighbours), so the whole fixed point costs O(candidates x degree), not a sweep per
   // change.
+  bool any = false;
+  for (std::size_t a = 0; a < m; ++a) any = any || out.constrained[a];
+  if (!any) {
+    for (std::size_t a = 0; a < m; ++a) out.outlier[a] = !out.types[a];
+    return;
+  }
   Membership member(graph.node_count(), m);
   for (std::size_t a = 0; a < m; ++a) {
     for (const NodeIndex u : out.nodes[a]) member.set(u, static_cast<int>(a));
@@ -220,6 +255,20 @@ PerceptPair make_percept_pair(int a, int b, const std::vector<FusedPercept>& per
   const double sb = noise[pair.b].sigma_along_m(direction);
   pair.tau_m = std::max(options.min_tau_m, options.tau_sigmas * std::sqrt(sa * sa + sb * sb));
   return pair;
+}
+
+std::vector<PerceptPair> percept_pair_table(const std::vector<FusedPercept>& percepts,
+                                            const std::vector<PerceptNoise>& noise,
+                                            const PruningOptions& options) {
+  const std::size_t n = percepts.size();
+  std::vector<PerceptPair> table(n * n);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      table[a * n + b] = table[b * n + a] =
+          make_percept_pair(static_cast<int>(a), static_cast<int>(b), percepts, noise, options);
+    }
+  }
+  return table;
 }
 
 std::vector<std::optional<world::TypeId>> percept_types(const world::WorldGraph& graph,

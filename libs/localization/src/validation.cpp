@@ -89,9 +89,14 @@ std::optional<ValidatedHypothesis> validate_hypothesis(
   ValidatedHypothesis out;
   out.world_T_ego = world_T_ego;
   out.explanation = explain(context, world_T_ego, uncertainty_of(context, generating));
+  std::vector<NodeAssociation> by_percept = generating;
+  std::sort(by_percept.begin(), by_percept.end(),
+            [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
   for (int round = 0; round < max_rounds; ++round) {
     const std::vector<NodeAssociation>& current = out.explanation.associations;
     if (current.size() < 3) break;
+    // A pose estimated from exactly what it explains is already the re-estimate.
+    if (round == 0 && current == by_percept) break;
     std::vector<PointCorrespondence> points;
     for (const NodeAssociation& a : current) points.push_back(context.correspondence(a.percept, a.node));
     const auto refit = estimate_pose(points, 1e-3);

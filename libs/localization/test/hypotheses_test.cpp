@@ -5,6 +5,7 @@
 #include <random>
 
 #include "support/synthetic_percepts.hpp"
+#include "vsl/localization/seeds.hpp"
 #include "support/test_worlds.hpp"
 
 namespace vsl::localization {
@@ -118,8 +119,7 @@ TEST(Hypotheses, NoiseFreeSeedGivesTheExactPose) {
         proximity_filter(k.graph, k.adjacency, view.percepts, noise, k.options.pruning);
     const LocalizationContext context{k.graph, k.adjacency, k.grid, view.percepts,
                                       noise,   sets,        k.options};
-    const auto seeds = choose_seed_triples(view.percepts, noise, sets, k.graph.link_threshold_m(),
-                                           k.options.pruning, 1);
+    const auto seeds = choose_seed_triples(k.graph, view.percepts, noise, sets, k.options.pruning, 1);
     ASSERT_EQ(seeds.size(), 1u);
     ModelTriple subgraph;
     for (int s = 0; s < 3; ++s) {
@@ -154,8 +154,7 @@ TEST(Hypotheses, UnreachableCountAbandonsTheInterpretation) {
   const CandidateSets sets =
       proximity_filter(k.graph, k.adjacency, view.percepts, noise, k.options.pruning);
   const LocalizationContext context{k.graph, k.adjacency, k.grid, view.percepts, noise, sets, k.options};
-  const auto seeds = choose_seed_triples(view.percepts, noise, sets, k.graph.link_threshold_m(),
-                                         k.options.pruning, 1);
+  const auto seeds = choose_seed_triples(k.graph, view.percepts, noise, sets, k.options.pruning, 1);
   ASSERT_EQ(seeds.size(), 1u);
   ModelTriple subgraph;
   for (int s = 0; s < 3; ++s) {

@@ -48,8 +48,14 @@ Rates run(const LocalizerOptions& options) {
           ++r.correct;
         } else {
           ++r.wrong_confident;
-          r.gross += testing::position_error_m(result.world_T_ego, truth) > 0.3 ||
-                     testing::angle_error_rad(result.world_T_ego, truth) > 0.1745;
+          if (testing::position_error_m(result.world_T_ego, truth) > 0.3 ||
+              testing::angle_error_rad(result.world_T_ego, truth) > 0.1745) {
+            ++r.gross;
+            std::printf("  gross error in case %d: %.2f m, %.1f deg (%s)\n", c,
+                        testing::position_error_m(result.world_T_ego, truth),
+                        testing::angle_error_rad(result.world_T_ego, truth) * 57.3,
+                        result.message.c_str());
+          }
         }
         break;
       case Status::kAmbiguous:

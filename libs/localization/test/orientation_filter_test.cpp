@@ -1,11 +1,11 @@
 #include "vsl/localization/orientation_filter.hpp"
+#include "vsl/localization/seeds.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <set>
 
 #include "support/synthetic_percepts.hpp"
 #include "support/test_worlds.hpp"
@@ -116,7 +116,7 @@ TEST(OrientationFilter, TrueSubgraphSurvivesInTheKitchen) {
     const auto noise = percept_noise(view.percepts, options.noise);
     const CandidateSets sets = proximity_filter(graph, adjacency, view.percepts, noise, options.pruning);
     for (const PerceptTriple& seed :
-         choose_seed_triples(view.percepts, noise, sets, graph.link_threshold_m(), options.pruning, 3)) {
+         choose_seed_triples(graph, view.percepts, noise, sets, options.pruning, 3)) {
       std::array<world::NodeIndex, 3> truth{};
       bool known = true;
       for (int s = 0; s < 3; ++s) {
@@ -140,42 +140,6 @@ TEST(OrientationFilter, TrueSubgraphSurvivesInTheKitchen) {
   EXPECT_GE(seeds_checked, 30);
   std::printf("orientation filter: %.1f subgraphs per seed\n",
               static_cast<double>(subgraphs) / seeds_checked);
-}
-
-TEST(SeedTriples, AreWellConditionedAndSpreadOverThePercepts) {
-  const LocalizerOptions options = test_options();
-  // Six percepts on a 2 x 1 m grid plus one collinear with the first two.
-  std::vector<FusedPercept> percepts;
-  for (int x = 0; x < 3; ++x) {
-    for (int z = 0; z < 2; ++z) {
-      percepts.push_back({"handle", Eigen::Vector3d(2.0, -1.0 + x, 0.5 + z), std::nullopt, 1});
-    }
-  }
-  percepts.push_back({"door", Eigen::Vector3d(2.0, -1.0, 2.5), std::nullopt, 1});
-  const auto noise = percept_noise(percepts, options.noise);
-  CandidateSets sets;
-  sets.types.assign(percepts.size(), world::TypeId{0});
-  sets.nodes.assign(percepts.size(), {0});
-  sets.constrained.assign(percepts.size(), true);
-  sets.outlier.assign(percepts.size(), false);
-  sets.outlier[5] = true;
-  const auto seeds = choose_seed_triples(percepts, noise, sets, 4.0, options.pruning, 4);
-  ASSERT_GE(seeds.size(), 2u);
-  for (const PerceptTriple& seed : seeds) {
-    std::set<int> distinct(seed.percepts.begin(), seed.percepts.end());
-    EXPECT_EQ(distinct.size(), 3u);
-    EXPECT_EQ(distinct.count(5), 0u);  // outliers are never seeds
-    EXPECT_TRUE(triple_frame(percepts[seed.percepts[0]].ego_position_m,
-                             percepts[seed.percepts[1]].ego_position_m,
-                             percepts[seed.percepts[2]].ego_position_m, true, 0.1)
-                    .has_value());
-  }
-  // The second seed shares at most one percept with the first.
-  int shared = 0;
-  for (const int p : seeds[1].percepts) {
-    shared += std::count(seeds[0].percepts.begin(), seeds[0].percepts.end(), p);
-  }
-  EXPECT_LE(shared, 1);
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ namespace vsl::localization {
 // A consistent association set: the seed's three first, then the extension in percept order.
 struct Interpretation {
   std::vector<NodeAssociation> associations;
-  Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();  // Eq. 16 over the seed
+  Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();  // Eq. 16 over all of them
+  PoseUncertainty uncertainty;                                     // of world_T_ego
 };
 
 // Eq. 16 over a seed subgraph: S_ego = S_model [S_percept]^-1 (as the least-squares rigid
@@ -62,7 +63,7 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
                                                     const PerceptTriple& seed,
                                                     const ModelTriple& subgraph,
                                                     const SeedPose& start, int min_count);
-// Both in one.
+// seed_pose() and the above in one.
 std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
                                                     const PerceptTriple& seed,
                                                     const ModelTriple& subgraph, int min_count);

@@ -23,6 +23,10 @@ struct LocalizationContext {
   const std::vector<PerceptNoise>& noise;
   const CandidateSets& candidates;
   const LocalizerOptions& options;
+  // Every percept pair (distance and Eq. 8 tau), row-major; see percept_pair_table().
+  const std::vector<PerceptPair>& pairs;
+
+  const PerceptPair& pair(int a, int b) const { return pairs[a * percepts.size() + b]; }
 
   // <O_i^pf, O_j^m> as the pose estimator sees it.
   PointCorrespondence correspondence(int percept, world::NodeIndex node) const {
@@ -30,6 +34,11 @@ struct LocalizationContext {
             graph.world_position_m(node)};
   }
 };
+
+// make_percept_pair for every ordered pair (a, b) at [a * n + b] (a == b: distance 0).
+std::vector<PerceptPair> percept_pair_table(const std::vector<FusedPercept>& percepts,
+                                            const std::vector<PerceptNoise>& noise,
+                                            const PruningOptions& options);
 
 // A percept -> model node pairing, the internal form of an Association.
 struct NodeAssociation {

@@ -45,6 +45,10 @@ struct PruningOptions {
   // nothing, and seeds are drawn from the precise ones anyway. The others stay unconstrained
   // (validation still uses them all).
   int max_filtered_percepts = 16;
+  // A percept with a link set (Eq. 8, one per partner) of more links than this is left
+  // unconstrained: in a large repetitive building it would keep thousands of candidates (one per
+  // identical room) at a cost far above what orientation filtering then saves.
+  int max_link_set = 5000;
   // The ego frame's z axis is up (gravity): world_R_ego is a rotation about z up to max_tilt_rad.
   // Orientation filtering then compares displacement vectors in gravity-aligned frames, which
   // tells a triangle from its mirror image and rejects upside-down matches (orientation_filter.hpp).

@@ -78,16 +78,4 @@ OrientationFilterResult orientation_filter(const world::WorldGraph& graph,
                                            const PruningOptions& options,
                                            std::size_t max_subgraphs);
 
-// Percept triples to seed hypothesis generation from, best first: well-conditioned frames
-// (altitudes of the triangle and, with gravity, the horizontal extent of delta1 large against the
-// percepts' sigma), few candidate subgraphs (small candidate sets), all three sides short enough
-// to be links. Later seeds avoid the percepts of earlier ones where possible, so that one false
-// positive cannot spoil them all.
-std::vector<PerceptTriple> choose_seed_triples(const std::vector<FusedPercept>& percepts,
-                                               const std::vector<PerceptNoise>& noise,
-                                               const CandidateSets& candidates,
-                                               double link_threshold_m,
-                                               const PruningOptions& options,
-                                               std::size_t max_seeds);
-
 }  // namespace vsl::localization

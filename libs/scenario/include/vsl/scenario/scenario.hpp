@@ -76,9 +76,9 @@ class ScenarioGenerator {
   Scenario generate(std::uint64_t seed, std::size_t index) const;
 
   // Active validation (paper §2.4.2): the head looks once at `ego_target_m` (one view centred on
-  // it). Returns the new percepts of objects recognized in that view that `scenario` has no
-  // percept of yet (misses and Eq. 7 noise apply; drawn from the scenario's `active` stream with
-  // `round` mixed in), with their truth.
+  // it; no joint limits: the robot may turn for it). Returns the new percepts of objects recognized
+  // in that view that `scenario` has no percept of yet (misses and Eq. 7 noise apply; drawn from
+  // the scenario's `active` stream with `round` mixed in), with their truth.
   std::vector<std::pair<localization::FusedPercept, PerceptTruth>> look_at(
       const Scenario& scenario, const Eigen::Vector3d& ego_target_m, int round) const;
 
