@@ -23,8 +23,8 @@
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/localization/orientation_filter.hpp"
-#include "vsl/localization/seeds.hpp"
 #include "vsl/localization/proximity_filter.hpp"
+#include "vsl/localization/seeds.hpp"
 #include "vsl/localization/validation.hpp"
 #include "vsl/world/world_io.hpp"
 #include "vsl/worldgen/building.hpp"
@@ -76,8 +76,8 @@ const Scene& scene(std::int64_t objects) {
   auto& slot = cache[objects];
   if (!slot) {
     if (objects == 0) {
-      slot = make_scene(world::load_world(std::string(VSL_SOURCE_DIR) + "/config/worlds/kitchen.yaml"),
-                        false);
+      slot = make_scene(
+          world::load_world(std::string(VSL_SOURCE_DIR) + "/config/worlds/kitchen.yaml"), false);
     } else {
       vsl::worldgen::BuildingOptions options;
       options.objects = static_cast<std::size_t>(objects);
@@ -89,7 +89,12 @@ const Scene& scene(std::int64_t objects) {
 }
 
 void world_args(benchmark::internal::Benchmark* b) {
-  b->Arg(0)->Arg(1000)->Arg(10000)->Arg(100000)->ArgNames({"objects"})->Unit(benchmark::kMillisecond);
+  b->Arg(0)
+      ->Arg(1000)
+      ->Arg(10000)
+      ->Arg(100000)
+      ->ArgNames({"objects"})
+      ->Unit(benchmark::kMillisecond);
 }
 
 double median(std::vector<double> values) {
@@ -110,11 +115,14 @@ Prepared prepare(const Scene& s, const std::vector<FusedPercept>& percepts) {
   const LocalizerOptions& options = s.localizer->options();
   Prepared p;
   p.noise = percept_noise(percepts, options.noise);
-  p.candidates = proximity_filter(s.localizer->graph(), s.adjacency, percepts, p.noise, options.pruning);
-  p.seeds = choose_seed_triples(s.localizer->graph(), percepts, p.noise, p.candidates, options.pruning, static_cast<std::size_t>(options.hypotheses.max_seeds));
+  p.candidates =
+      proximity_filter(s.localizer->graph(), s.adjacency, percepts, p.noise, options.pruning);
+  p.seeds =
+      choose_seed_triples(s.localizer->graph(), percepts, p.noise, p.candidates, options.pruning,
+                          static_cast<std::size_t>(options.hypotheses.max_seeds));
   if (!p.seeds.empty()) {
-    p.subgraphs = orientation_filter(s.localizer->graph(), s.adjacency, percepts, p.noise, p.candidates,
-                                     p.seeds.front(), options.pruning, 20000);
+    p.subgraphs = orientation_filter(s.localizer->graph(), s.adjacency, percepts, p.noise,
+                                     p.candidates, p.seeds.front(), options.pruning, 20000);
   }
   return p;
 }
@@ -161,7 +169,8 @@ void BM_OrientationFilter(benchmark::State& state) {
   for (auto _ : state) {
     const std::size_t i = v++ % s.views.size();
     const Prepared& p = prepared[i];
-    const auto seeds = choose_seed_triples(s.localizer->graph(), s.views[i], p.noise, p.candidates, options.pruning,
+    const auto seeds = choose_seed_triples(s.localizer->graph(), s.views[i], p.noise, p.candidates,
+                                           options.pruning,
                                            static_cast<std::size_t>(options.hypotheses.max_seeds));
     if (seeds.empty()) continue;
     const auto result = orientation_filter(s.localizer->graph(), s.adjacency, s.views[i], p.noise,
@@ -184,8 +193,8 @@ void BM_HypothesisGeneration(benchmark::State& state) {
     const std::size_t i = v++ % s.views.size();
     const Prepared& p = prepared[i];
     if (p.seeds.empty()) continue;
-    const LocalizationContext context{s.localizer->graph(), s.adjacency, s.grid, s.views[i],
-                                      p.noise,              p.candidates, options};
+    const LocalizationContext context{
+        s.localizer->graph(), s.adjacency, s.grid, s.views[i], p.noise, p.candidates, options};
     for (const ModelTriple& subgraph : p.subgraphs.subgraphs) {
       const auto interpretation = extend_interpretation(context, p.seeds.front(), subgraph, 3);
       if (interpretation) poses += hypothesis_poses(context, *interpretation).size();
@@ -207,10 +216,11 @@ void BM_Validation(benchmark::State& state) {
   for (const auto& view : s.views) {
     Work w{prepare(s, view), {}};
     if (!w.prepared.seeds.empty()) {
-      const LocalizationContext context{s.localizer->graph(), s.adjacency, s.grid, view,
+      const LocalizationContext context{s.localizer->graph(), s.adjacency,           s.grid, view,
                                         w.prepared.noise,     w.prepared.candidates, options};
       for (const ModelTriple& subgraph : w.prepared.subgraphs.subgraphs) {
-        const auto interpretation = extend_interpretation(context, w.prepared.seeds.front(), subgraph, 3);
+        const auto interpretation =
+            extend_interpretation(context, w.prepared.seeds.front(), subgraph, 3);
         if (!interpretation) continue;
         for (const auto& pose : hypothesis_poses(context, *interpretation)) {
           w.poses.emplace_back(pose, interpretation->associations);
@@ -223,8 +233,9 @@ void BM_Validation(benchmark::State& state) {
   for (auto _ : state) {
     const std::size_t i = v++ % s.views.size();
     const Work& w = work[i];
-    const LocalizationContext context{s.localizer->graph(), s.adjacency, s.grid, s.views[i],
-                                      w.prepared.noise,     w.prepared.candidates, options};
+    const LocalizationContext context{
+        s.localizer->graph(), s.adjacency,           s.grid, s.views[i],
+        w.prepared.noise,     w.prepared.candidates, options};
     for (const auto& [pose, generating] : w.poses) {
       benchmark::DoNotOptimize(validate_hypothesis(context, pose, generating));
     }

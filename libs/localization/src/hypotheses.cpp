@@ -76,7 +76,8 @@ std::optional<SeedPose> seed_pose(const LocalizationContext& context, const Perc
   const auto pose = estimate_pose(points, 1e-3);
   if (!pose) return std::nullopt;
   SeedPose out{*pose, uncertainty_of(context, associations)};
-  if (!upright_enough(out.world_T_ego, out.uncertainty, context.options.pruning)) return std::nullopt;
+  if (!upright_enough(out.world_T_ego, out.uncertainty, context.options.pruning))
+    return std::nullopt;
   return out;
 }
 
@@ -115,9 +116,8 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     if (p == seed.percepts[0] || p == seed.percepts[1] || p == seed.percepts[2]) continue;
     if (context.candidates.types[l]) rest.push_back(p);
   }
-  std::sort(rest.begin(), rest.end(), [&](int a, int b) {
-    return context.noise[a].sigma_m < context.noise[b].sigma_m;
-  });
+  std::sort(rest.begin(), rest.end(),
+            [&](int a, int b) { return context.noise[a].sigma_m < context.noise[b].sigma_m; });
   const int max_misses = static_cast<int>(rest.size()) + 3 - min_count;
   if (max_misses < 0) return std::nullopt;
 
@@ -128,8 +128,8 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     const FusedPercept& percept = context.percepts[l];
     const world::TypeId type = *context.candidates.types[l];
     const double sigma_pose = uncertainty.sigma_at_m(percept.ego_position_m);
-    const double radius_m =
-        gate * std::sqrt(context.noise[l].sigma_m * context.noise[l].sigma_m + sigma_pose * sigma_pose);
+    const double radius_m = gate * std::sqrt(context.noise[l].sigma_m * context.noise[l].sigma_m +
+                                             sigma_pose * sigma_pose);
     const Eigen::Vector3d predicted_m = *pose * percept.ego_position_m;
     // Pairwise distance checks (Eq. 8 for each new pair) against the seed and the most precise
     // associations found since (the first ones added): a wrong object can match three distances
@@ -201,8 +201,8 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
 geometry::GaussianSphere restriction_sphere(const FusedPercept& percept, const PerceptNoise& noise,
                                             const Eigen::Vector3d& world_object_m) {
   const double radius_m = percept.ego_position_m.norm();
-  const Eigen::Vector3d ray =
-      radius_m > 0.0 ? Eigen::Vector3d(percept.ego_position_m / radius_m) : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d ray = radius_m > 0.0 ? Eigen::Vector3d(percept.ego_position_m / radius_m)
+                                             : Eigen::Vector3d::UnitX();
   return {{world_object_m, radius_m}, noise.sigma_along_m(ray)};
 }
 

@@ -2,15 +2,27 @@
 //
 //   Eq. 7 noise -> proximity filtering (Eqs. 8-9) -> for each seed triple of percepts:
 //   orientation filtering (Eq. 10) -> interpretation search and restriction spheres (Eqs. 11-15)
-//   with Eq. 16 orientations -> validation against all percepts -> decision -> Ceres refinement.
+//   with Eq. 16 poses -> validation against all percepts -> decision -> Ceres refinement and the
+//   precision requirement.
 //
-// Seeds. Every hypothesis consistent with all percepts is consistent with any three true ones, and
-// orientation filtering enumerates every model triple that three percepts can be; so one seed of
-// true percepts yields all the hypotheses there are (up to the tolerances). A seed holding a false
-// positive yields wrong hypotheses only, which validation scores low. Seeds are therefore tried
-// in turn, each sharing as few percepts as possible with the previous ones, until the best
-// hypothesis explains every percept of `confirming_seeds` of them (then at least one of them is
-// almost surely free of false positives) or `max_seeds` are spent.
+// Seeds (seeds.hpp). Every hypothesis consistent with all percepts is consistent with any three
+// true ones, and orientation filtering enumerates every model triple that three percepts can be;
+// so one seed of true percepts yields all the hypotheses there are (up to the tolerances). A seed
+// holding a false positive yields wrong hypotheses only, which validation scores low. Seeds are
+// therefore tried in turn, each sharing as few percepts as possible with the previous ones (and
+// avoiding those of seeds that gave nothing), until the best hypothesis explains every percept of
+// `confirming_seeds` of them (then at least one of them is almost surely free of false
+// positives) or `max_seeds` are spent.
+//
+// Cost control, without losing a hypothesis the data support:
+//  - an interpretation is abandoned once it cannot explain as many percepts as needed to be
+//    reported (min_explained_fraction) or to come near the best found so far (a quarter fewer,
+//    with slack): the bar rises as hypotheses are found, so wrong subgraphs stop after a few
+//    misses;
+//  - a subgraph whose seed pose lands, within 10 cm and 3 degrees, on a hypothesis validated from
+//    an earlier seed that already gives the seed's percepts the subgraph's objects is skipped;
+//  - an interpretation whose Eq. 16 pose is the same as one already found is not validated again;
+//  - validated hypotheses are kept merged (indistinguishable ones are one) in a spatial index.
 #include "vsl/localization/localizer.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -19,10 +31,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <numbers>
-#include <string>
 #include <stdexcept>
+#include <string>
 
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/localization_context.hpp"
@@ -43,7 +54,9 @@ using Clock = std::chrono::steady_clock;
 class StageTimer {
  public:
   explicit StageTimer(double& total_ms) : total_ms_(total_ms), start_(Clock::now()) {}
-  ~StageTimer() { total_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - start_).count(); }
+  ~StageTimer() {
+    total_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - start_).count();
+  }
   StageTimer(const StageTimer&) = delete;
   StageTimer& operator=(const StageTimer&) = delete;
 
@@ -99,6 +112,28 @@ class HypothesisSet {
     }
     index_.add(candidate.world_T_ego.translation(), hypotheses_.size());
     hypotheses_.push_back(std::move(candidate));
+  }
+
+  // Whether a hypothesis within tolerance_m and tolerance_rad of `pose` already gives the three
+  // seed percepts the subgraph's three objects.
+  bool covers(const Eigen::Isometry3d& pose, double tolerance_m, double tolerance_rad,
+              const PerceptTriple& seed, const ModelTriple& subgraph) const {
+    bool covered = false;
+    index_.for_each_near(pose.translation(), tolerance_m, [&](std::size_t id) {
+      const ValidatedHypothesis& h = hypotheses_[id];
+      if (covered || (h.world_T_ego.translation() - pose.translation()).norm() >= tolerance_m ||
+          rotation_angle_rad(h.world_T_ego, pose) >= tolerance_rad) {
+        return;
+      }
+      const auto& associations = h.explanation.associations;
+      covered = std::all_of(seed.percepts.begin(), seed.percepts.end(), [&](int percept) {
+        const auto k = static_cast<std::size_t>(&percept - seed.percepts.data());
+        return std::any_of(associations.begin(), associations.end(), [&](const NodeAssociation& a) {
+          return a.percept == percept && a.node == subgraph.nodes[k];
+        });
+      });
+    });
+    return covered;
   }
 
   // Ranked, best first (a copy: the set keeps its own order for the index).
@@ -160,17 +195,23 @@ Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
   world::WorldGraph graph = world::WorldGraph::build(world, options.graph);
   TypedAdjacency adjacency = TypedAdjacency::build(graph);
   NodeGrid grid = NodeGrid::build(graph, kGridCellM);
-  state_ = std::make_unique<State>(State{&world, std::move(options), std::move(graph),
-                                         std::move(adjacency), std::move(grid)});
+  state_ = std::make_unique<State>(
+      State{&world, std::move(options), std::move(graph), std::move(adjacency), std::move(grid)});
 }
 
 Localizer::~Localizer() = default;
 Localizer::Localizer(Localizer&&) noexcept = default;
 Localizer& Localizer::operator=(Localizer&&) noexcept = default;
 
-const world::WorldModel& Localizer::world() const { return *state_->world; }
-const world::WorldGraph& Localizer::graph() const { return state_->graph; }
-const LocalizerOptions& Localizer::options() const { return state_->options; }
+const world::WorldModel& Localizer::world() const {
+  return *state_->world;
+}
+const world::WorldGraph& Localizer::graph() const {
+  return state_->graph;
+}
+const LocalizerOptions& Localizer::options() const {
+  return state_->options;
+}
 
 LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts) const {
   const auto start = Clock::now();
@@ -200,11 +241,11 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     StageTimer timer(times.proximity_filter_ms);
     candidates = proximity_filter(graph, state_->adjacency, percepts, noise, options.pruning);
   }
-  const std::size_t usable = static_cast<std::size_t>(
-      std::count_if(candidates.types.begin(), candidates.types.end(),
-                    [](const auto& type) { return type.has_value(); }));
-  const LocalizationContext context{graph,       state_->adjacency, state_->grid, percepts,
-                                    noise,       candidates,        options};
+  const std::size_t usable =
+      static_cast<std::size_t>(std::count_if(candidates.types.begin(), candidates.types.end(),
+                                             [](const auto& type) { return type.has_value(); }));
+  const LocalizationContext context{graph, state_->adjacency, state_->grid, percepts,
+                                    noise, candidates,        options};
 
   std::optional<SeedChooser> chooser;
   {
@@ -223,7 +264,8 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
   // Where the interpretations of every seed so far put the robot (ids into `interpreted`).
   PoseIndex interpreted_at(0.25);
   std::vector<Interpretation> interpreted;
-  std::size_t budget = static_cast<std::size_t>(std::max(options.hypotheses.max_interpretations, 1));
+  std::size_t budget =
+      static_cast<std::size_t>(std::max(options.hypotheses.max_interpretations, 1));
   std::vector<PerceptTriple> tried;  // seeds processed
   const auto max_seeds = static_cast<std::size_t>(std::max(options.hypotheses.max_seeds, 1));
   while (tried.size() < max_seeds && budget > 0) {
@@ -263,22 +305,35 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       };
       std::vector<Candidate> found;
       for (const ModelTriple& subgraph : subgraphs.subgraphs) {
-        auto interpretation =
-            extend_interpretation(context, seed, subgraph, bar(static_cast<double>(best_count)));
+        const auto start = seed_pose(context, seed, subgraph);
+        if (!start) continue;
+        // A place an earlier seed already found and validated, with these three percepts given
+        // these three objects, would only be found again. The tolerance is tight (at most
+        // 10 cm, 3 degrees) so that a hypothesis that converged near, but not onto, this one
+        // never hides it.
+        const double tolerance_m =
+            std::min(3.0 * start->uncertainty.sigma_at_m(Eigen::Vector3d::Zero()), 0.1);
+        const double tolerance_rad = std::min(3.0 * start->uncertainty.sigma_rotation_rad, 0.05);
+        if (validated_set.covers(start->world_T_ego, tolerance_m, tolerance_rad, seed, subgraph)) {
+          continue;
+        }
+        auto interpretation = extend_interpretation(context, seed, subgraph, *start,
+                                                    bar(static_cast<double>(best_count)));
         if (!interpretation) continue;
         // The same place found again (from this seed or an earlier one; Eq. 16 over all its
         // associations is as precise as the data) needs no second validation.
         bool known = false;
         const Eigen::Isometry3d& pose = interpretation->world_T_ego;
-        interpreted_at.for_each_near(pose.translation(), options.hypotheses.same_position_m,
-                                     [&](std::size_t id) {
-                                       known = known || same_hypothesis(interpreted[id].world_T_ego,
-                                                                        pose, options.hypotheses);
-                                     });
+        interpreted_at.for_each_near(
+            pose.translation(), options.hypotheses.same_position_m, [&](std::size_t id) {
+              known =
+                  known || same_hypothesis(interpreted[id].world_T_ego, pose, options.hypotheses);
+            });
         if (known) continue;
         const std::vector<Eigen::Isometry3d> located = hypothesis_poses(context, *interpretation);
         // Only an interpretation that stands as a hypothesis raises the bar.
-        if (!located.empty()) best_count = std::max(best_count, interpretation->associations.size());
+        if (!located.empty())
+          best_count = std::max(best_count, interpretation->associations.size());
         for (const Eigen::Isometry3d& p : located) found.push_back({p, interpreted.size()});
         interpreted_at.add(interpretation->world_T_ego.translation(), interpreted.size());
         interpreted.push_back(std::move(*interpretation));
@@ -286,12 +341,12 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       // Hypotheses found before the bar rose may now be below it.
       const int final_bar = bar(static_cast<double>(best_count));
       for (const Candidate& c : found) {
-        if (static_cast<int>(interpreted[c.interpretation].associations.size()) < final_bar) continue;
+        if (static_cast<int>(interpreted[c.interpretation].associations.size()) < final_bar)
+          continue;
         poses.emplace_back(c.pose, interpreted[c.interpretation].associations);
       }
     }
 
-    if (std::getenv("VSL_CORE_DEBUG")) std::fprintf(stderr, "DEBUG seed (%d %d %d): subgraphs %zu interpretations %zu poses %zu\n", seed.percepts[0], seed.percepts[1], seed.percepts[2], subgraphs.subgraphs.size(), interpreted.size(), poses.size());
     {
       StageTimer timer(times.validation_ms);
       for (const auto& [pose, generating] : poses) {
@@ -300,10 +355,11 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       }
       if (const ValidatedHypothesis* leader = validated_set.best()) {
         const ValidatedHypothesis& top = *leader;
-        const auto confirmed = std::count_if(tried.begin(), tried.end(), [&](const PerceptTriple& t) {
-          const auto& p = t.percepts;
-          return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
-        });
+        const auto confirmed =
+            std::count_if(tried.begin(), tried.end(), [&](const PerceptTriple& t) {
+              const auto& p = t.percepts;
+              return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
+            });
         if (confirmed >= options.hypotheses.confirming_seeds) break;
       }
     }
@@ -333,14 +389,15 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     for (const NodeAssociation& a : validated.front().explanation.associations) {
       points.push_back(context.correspondence(a.percept, a.node));
     }
-    const RefinedPose refined = refine_pose(validated.front().world_T_ego, points, options.refinement);
+    const RefinedPose refined =
+        refine_pose(validated.front().world_T_ego, points, options.refinement);
     if (refined.world_T_ego.matrix().allFinite()) {
       result.world_T_ego = refined.world_T_ego;
       result.hypotheses.front().world_T_ego = refined.world_T_ego;
     }
     if (refined.covariance_valid) result.covariance = refined.covariance;
-    result.message = "explains " + std::to_string(points.size()) + " of " +
-                     std::to_string(usable) + " percepts";
+    result.message =
+        "explains " + std::to_string(points.size()) + " of " + std::to_string(usable) + " percepts";
     const ValidationOptions& v = options.validation;
     if (v.precision_sigmas > 0.0) {
       const Precision p = precision_of(refined);
@@ -348,8 +405,8 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
           v.precision_sigmas * p.angle_rad > v.required_angle_rad) {
         result.status = Status::kFailed;
         result.message += refined.covariance_valid
-                              ? "; pose too uncertain (sigma " + format_cm(p.position_m) +
-                                    " cm, " + format_deg(p.angle_rad) + " deg)"
+                              ? "; pose too uncertain (sigma " + format_cm(p.position_m) + " cm, " +
+                                    format_deg(p.angle_rad) + " deg)"
                               : "; pose covariance unavailable";
       }
     }

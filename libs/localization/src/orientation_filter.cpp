@@ -37,8 +37,8 @@ Displacement displacement(const Eigen::Vector3d& frame_vector, double sigma_m,
   const double length = frame_vector.norm();
   double mu = std::max(options.mu_max_m, options.tau_sigmas * sigma_m);
   if (options.use_gravity) mu += length * std::sin(options.max_tilt_rad);
-  const double kappa = length > mu ? std::max(options.kappa_max_rad, std::asin(mu / length))
-                                   : std::numbers::pi;
+  const double kappa =
+      length > mu ? std::max(options.kappa_max_rad, std::asin(mu / length)) : std::numbers::pi;
   return {frame_vector, mu, kappa};
 }
 
@@ -85,14 +85,11 @@ std::optional<Eigen::Matrix3d> triple_frame(const Eigen::Vector3d& x_i, const Ei
   return r;
 }
 
-OrientationFilterResult orientation_filter(const world::WorldGraph& graph,
-                                           const TypedAdjacency& adjacency,
-                                           const std::vector<FusedPercept>& percepts,
-                                           const std::vector<PerceptNoise>& noise,
-                                           const CandidateSets& candidates,
-                                           const PerceptTriple& triple,
-                                           const PruningOptions& options,
-                                           std::size_t max_subgraphs) {
+OrientationFilterResult orientation_filter(
+    const world::WorldGraph& graph, const TypedAdjacency& adjacency,
+    const std::vector<FusedPercept>& percepts, const std::vector<PerceptNoise>& noise,
+    const CandidateSets& candidates, const PerceptTriple& triple, const PruningOptions& options,
+    std::size_t max_subgraphs) {
   OrientationFilterResult result;
   const auto [i, j, k] = triple.percepts;
   if (!candidates.types[i] || !candidates.types[j] || !candidates.types[k]) return result;
@@ -105,8 +102,8 @@ OrientationFilterResult orientation_filter(const world::WorldGraph& graph,
 
   // Side lengths with their tolerances: only links in |V| +- mu are ever looked at.
   const auto side = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, double sa, double sb) {
-    return std::make_pair((b - a).norm(), std::max(options.mu_max_m,
-                                                   options.tau_sigmas * std::hypot(sa, sb)));
+    return std::make_pair((b - a).norm(),
+                          std::max(options.mu_max_m, options.tau_sigmas * std::hypot(sa, sb)));
   };
   const auto [phi_ij, mu_ij] = side(x_i, x_j, s_i, s_j);
   const auto [phi_ik, mu_ik] = side(x_i, x_k, s_i, s_k);
@@ -138,7 +135,8 @@ OrientationFilterResult orientation_filter(const world::WorldGraph& graph,
     origins = candidates.nodes[i];
   } else {
     for (std::size_t n = 0; n < graph.node_count(); ++n) {
-      if (graph.type(static_cast<NodeIndex>(n)) == type_i) origins.push_back(static_cast<NodeIndex>(n));
+      if (graph.type(static_cast<NodeIndex>(n)) == type_i)
+        origins.push_back(static_cast<NodeIndex>(n));
     }
   }
 

@@ -61,9 +61,8 @@ int allowed_unsupported(std::size_t partners, double fraction) {
 // earlier round (its partners then included false positives) gets its candidates back. Fills
 // out.nodes, out.constrained, out.outlier.
 void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacency,
-                  const std::vector<PerceptPair>& linkable,
-                  const std::vector<bool>& excluded, const PruningOptions& options,
-                  CandidateSets& out) {
+                  const std::vector<PerceptPair>& linkable, const std::vector<bool>& excluded,
+                  const PruningOptions& options, CandidateSets& out) {
   const std::size_t m = out.types.size();
   // Each percept is filtered against its max_partners most precise partners (smallest tau), not
   // the smallest link sets: an empty link set is the mark of a false positive, and choosing by it
@@ -76,9 +75,9 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
   const auto per_percept = static_cast<std::size_t>(std::max(options.max_partners, 1));
   std::vector<std::vector<Partner>> partners(m);
   for (std::size_t a = 0; a < m; ++a) {
-    std::stable_sort(mine[a].begin(), mine[a].end(), [](const PerceptPair* x, const PerceptPair* y) {
-      return x->tau_m < y->tau_m;
-    });
+    std::stable_sort(
+        mine[a].begin(), mine[a].end(),
+        [](const PerceptPair* x, const PerceptPair* y) { return x->tau_m < y->tau_m; });
     if (mine[a].size() > per_percept) mine[a].resize(per_percept);
     for (const PerceptPair* pair : mine[a]) {
       const int b = pair->a == static_cast<int>(a) ? pair->b : pair->a;
@@ -99,8 +98,8 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     std::vector<bool> unselective(m, false);
     for (std::size_t a = 0; a < m; ++a) {
       const auto& list = partners[a];
-      unselective[a] = std::any_of(list.begin(), list.end(),
-                                   [&](const Partner& p) { return p.band > limit; });
+      unselective[a] =
+          std::any_of(list.begin(), list.end(), [&](const Partner& p) { return p.band > limit; });
     }
     for (std::size_t a = 0; a < m; ++a) {
       auto& list = partners[a];
@@ -135,7 +134,8 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     const auto epoch = static_cast<std::uint32_t>(a + 1);
     const TypeId ta = *out.types[a];
     for (std::size_t p = 0; p < list.size(); ++p) {
-      for (const world::TypedLink& link : graph.links(ta, list[p].type, list[p].lo_m, list[p].hi_m)) {
+      for (const world::TypedLink& link :
+           graph.links(ta, list[p].type, list[p].lo_m, list[p].hi_m)) {
         Tally& t = tally[link.from];
         if (t.epoch != epoch) {
           t = {epoch, static_cast<std::uint32_t>(p), 1};
@@ -147,7 +147,8 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     }
     constexpr std::uint32_t kCollected = 0xffffffffu;
     for (int p = 0; p <= f; ++p) {
-      for (const world::TypedLink& link : graph.links(ta, list[p].type, list[p].lo_m, list[p].hi_m)) {
+      for (const world::TypedLink& link :
+           graph.links(ta, list[p].type, list[p].lo_m, list[p].hi_m)) {
         Tally& t = tally[link.from];
         if (t.last_partner == kCollected || t.count < static_cast<std::uint32_t>(required[a])) {
           continue;
@@ -175,7 +176,7 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     for (const NodeIndex u : out.nodes[a]) member.set(u, static_cast<int>(a));
   }
   struct Dependent {
-    int percept;        // a, which has b as its partner number `slot`
+    int percept;  // a, which has b as its partner number `slot`
     std::size_t slot;
   };
   std::vector<std::vector<Dependent>> dependents(m);
@@ -202,21 +203,22 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
           if (member.test(n.node, p.percept) && counts[k]++ == 0) ++supported_partners[a][i];
         }
       }
-      if (supported_partners[a][i] < required[a]) removed.emplace_back(static_cast<int>(a), nodes[i]);
+      if (supported_partners[a][i] < required[a])
+        removed.emplace_back(static_cast<int>(a), nodes[i]);
     }
   }
   for (const auto& [a, u] : removed) member.reset(u, a);
   const auto slot_of = [&](int a, NodeIndex u) {
     const auto& nodes = out.nodes[a];
-    return static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), u) - nodes.begin());
+    return static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), u) -
+                                    nodes.begin());
   };
   for (std::size_t next = 0; next < removed.size(); ++next) {
     const auto [b, v] = removed[next];
     ++out.passes;
     for (const Dependent& d : dependents[b]) {
       const Partner& p = partners[d.percept][d.slot];
-      for (const world::Neighbour& n :
-           adjacency.within(v, *out.types[d.percept], p.lo_m, p.hi_m)) {
+      for (const world::Neighbour& n : adjacency.within(v, *out.types[d.percept], p.lo_m, p.hi_m)) {
         if (!member.test(n.node, d.percept)) continue;
         const std::size_t i = slot_of(d.percept, n.node);
         std::uint16_t& count = support[d.percept][i * partners[d.percept].size() + d.slot];
@@ -315,14 +317,15 @@ CandidateSets proximity_filter(const world::WorldGraph& graph, const TypedAdjace
                    [&](int a, int b) { return noise[a].sigma_m < noise[b].sigma_m; });
   std::vector<bool> filtered(m, false);
   for (std::size_t r = 0; r < by_precision.size(); ++r) {
-    filtered[by_precision[r]] = r < static_cast<std::size_t>(std::max(options.max_filtered_percepts, 0));
+    filtered[by_precision[r]] =
+        r < static_cast<std::size_t>(std::max(options.max_filtered_percepts, 0));
   }
   std::vector<PerceptPair> linkable;
   for (std::size_t a = 0; a < m; ++a) {
     for (std::size_t b = a + 1; b < m; ++b) {
       if (!filtered[a] || !filtered[b]) continue;
-      const PerceptPair pair = make_percept_pair(static_cast<int>(a), static_cast<int>(b),
-                                                 percepts, noise, options);
+      const PerceptPair pair =
+          make_percept_pair(static_cast<int>(a), static_cast<int>(b), percepts, noise, options);
       if (pair.distance_m + pair.tau_m < graph.link_threshold_m()) linkable.push_back(pair);
     }
   }

@@ -72,8 +72,8 @@ SeedChooser::SeedChooser(const world::WorldGraph& graph, const std::vector<Fused
               {{t[0], t[1], t[2]}, {t[0], t[2], t[1]}, {t[1], t[2], t[0]}}};
           double best = -1.0;
           for (const auto& o : orders) {
-            const double h = horizontal_extent(percepts[o[1]].ego_position_m -
-                                               percepts[o[0]].ego_position_m);
+            const double h =
+                horizontal_extent(percepts[o[1]].ego_position_m - percepts[o[0]].ego_position_m);
             if (h > best) {
               best = h;
               t = o;

@@ -73,8 +73,9 @@ Explanation explain(const LocalizationContext& context, const Eigen::Isometry3d&
     out.chi2 += p.d2;
     out.log_likelihood_ratio += std::max(0.0, p.log_normaliser - 0.5 * p.d2);
   }
-  std::sort(out.associations.begin(), out.associations.end(),
-            [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
+  std::sort(
+      out.associations.begin(), out.associations.end(),
+      [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
   return out;
 }
 
@@ -90,15 +91,17 @@ std::optional<ValidatedHypothesis> validate_hypothesis(
   out.world_T_ego = world_T_ego;
   out.explanation = explain(context, world_T_ego, uncertainty_of(context, generating));
   std::vector<NodeAssociation> by_percept = generating;
-  std::sort(by_percept.begin(), by_percept.end(),
-            [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
+  std::sort(
+      by_percept.begin(), by_percept.end(),
+      [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
   for (int round = 0; round < max_rounds; ++round) {
     const std::vector<NodeAssociation>& current = out.explanation.associations;
     if (current.size() < 3) break;
     // A pose estimated from exactly what it explains is already the re-estimate.
     if (round == 0 && current == by_percept) break;
     std::vector<PointCorrespondence> points;
-    for (const NodeAssociation& a : current) points.push_back(context.correspondence(a.percept, a.node));
+    for (const NodeAssociation& a : current)
+      points.push_back(context.correspondence(a.percept, a.node));
     const auto refit = estimate_pose(points, 1e-3);
     if (!refit) break;
     Explanation next = explain(context, *refit, uncertainty_of(context, current));
@@ -148,9 +151,9 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
   }
   const double best = ranked.front().score;
   const std::size_t explained = ranked.front().explained();
-  const double needed = std::max(static_cast<double>(hypotheses.min_associations),
-                                 validation.min_explained_fraction *
-                                     static_cast<double>(usable_percepts));
+  const double needed =
+      std::max(static_cast<double>(hypotheses.min_associations),
+               validation.min_explained_fraction * static_cast<double>(usable_percepts));
   if (static_cast<double>(explained) < needed) {
     out.message = "the best hypothesis explains " + std::to_string(explained) + " of " +
                   std::to_string(usable_percepts) + " percepts, fewer than needed";
@@ -163,9 +166,10 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
   }
   if (out.contenders > 1) {
     out.status = Status::kAmbiguous;
-    out.message = std::to_string(out.contenders) +
-                  " hypotheses explain the percepts equally well (best: " +
-                  std::to_string(explained) + " of " + std::to_string(usable_percepts) + ")";
+    out.message =
+        std::to_string(out.contenders) +
+        " hypotheses explain the percepts equally well (best: " + std::to_string(explained) +
+        " of " + std::to_string(usable_percepts) + ")";
     return out;
   }
   out.status = Status::kLocalized;

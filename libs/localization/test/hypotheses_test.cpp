@@ -5,8 +5,8 @@
 #include <random>
 
 #include "support/synthetic_percepts.hpp"
-#include "vsl/localization/seeds.hpp"
 #include "support/test_worlds.hpp"
+#include "vsl/localization/seeds.hpp"
 
 namespace vsl::localization {
 namespace {
@@ -35,7 +35,8 @@ TEST(LocationHypotheses, ThreeSpheresGiveThePointPair) {
   const auto points = location_hypotheses(exact_spheres(truth, centres));
   ASSERT_EQ(points.size(), 2u);
   EXPECT_LT(nearest(points, truth), 1e-9);
-  const Eigen::Vector3d normal = (centres[1] - centres[0]).cross(centres[2] - centres[0]).normalized();
+  const Eigen::Vector3d normal =
+      (centres[1] - centres[0]).cross(centres[2] - centres[0]).normalized();
   const Eigen::Vector3d mirror = truth - 2.0 * normal.dot(truth - centres[0]) * normal;
   EXPECT_LT(nearest(points, mirror), 1e-9);
 }
@@ -117,9 +118,10 @@ TEST(Hypotheses, NoiseFreeSeedGivesTheExactPose) {
     const auto noise = percept_noise(view.percepts, k.options.noise);
     const CandidateSets sets =
         proximity_filter(k.graph, k.adjacency, view.percepts, noise, k.options.pruning);
-    const LocalizationContext context{k.graph, k.adjacency, k.grid, view.percepts,
+    const LocalizationContext context{k.graph, k.adjacency, k.grid,   view.percepts,
                                       noise,   sets,        k.options};
-    const auto seeds = choose_seed_triples(k.graph, view.percepts, noise, sets, k.options.pruning, 1);
+    const auto seeds =
+        choose_seed_triples(k.graph, view.percepts, noise, sets, k.options.pruning, 1);
     ASSERT_EQ(seeds.size(), 1u);
     ModelTriple subgraph;
     for (int s = 0; s < 3; ++s) {
@@ -153,7 +155,8 @@ TEST(Hypotheses, UnreachableCountAbandonsTheInterpretation) {
   const auto noise = percept_noise(view.percepts, k.options.noise);
   const CandidateSets sets =
       proximity_filter(k.graph, k.adjacency, view.percepts, noise, k.options.pruning);
-  const LocalizationContext context{k.graph, k.adjacency, k.grid, view.percepts, noise, sets, k.options};
+  const LocalizationContext context{k.graph, k.adjacency, k.grid,   view.percepts,
+                                    noise,   sets,        k.options};
   const auto seeds = choose_seed_triples(k.graph, view.percepts, noise, sets, k.options.pruning, 1);
   ASSERT_EQ(seeds.size(), 1u);
   ModelTriple subgraph;
@@ -162,9 +165,9 @@ TEST(Hypotheses, UnreachableCountAbandonsTheInterpretation) {
         testing::node_of_object(k.graph, *view.truth[seeds[0].percepts[s]]));
   }
   // Asking for more associations than there are percepts cannot succeed.
-  EXPECT_FALSE(extend_interpretation(context, seeds[0], subgraph,
-                                     static_cast<int>(view.percepts.size()) + 1)
-                   .has_value());
+  EXPECT_FALSE(
+      extend_interpretation(context, seeds[0], subgraph, static_cast<int>(view.percepts.size()) + 1)
+          .has_value());
 }
 
 TEST(Hypotheses, SameHypothesisUsesPositionAndAngle) {
@@ -175,7 +178,8 @@ TEST(Hypotheses, SameHypothesisUsesPositionAndAngle) {
   EXPECT_FALSE(same_hypothesis(a, testing::upright_pose(1.0, 1.0, 0.4), options));
   EXPECT_NEAR(tilt_rad(a), 0.0, 1e-12);
   Eigen::Isometry3d tilted = a;
-  tilted.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()).toRotationMatrix() * a.linear();
+  tilted.linear() =
+      Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()).toRotationMatrix() * a.linear();
   EXPECT_NEAR(tilt_rad(tilted), 0.1, 1e-12);
 }
 

@@ -61,9 +61,8 @@ Rates run(const LocalizerOptions& options) {
       case Status::kAmbiguous:
         ++r.ambiguous;
         r.ambiguous_with_truth += std::any_of(
-            result.hypotheses.begin(), result.hypotheses.end(), [&](const Hypothesis& h) {
-              return testing::is_correct(h.world_T_ego, truth);
-            });
+            result.hypotheses.begin(), result.hypotheses.end(),
+            [&](const Hypothesis& h) { return testing::is_correct(h.world_T_ego, truth); });
         // An ambiguous view has few percepts, so even its true hypothesis is imprecise.
         r.ambiguous_near_truth += std::any_of(
             result.hypotheses.begin(), result.hypotheses.end(), [&](const Hypothesis& h) {
@@ -82,10 +81,11 @@ Rates run(const LocalizerOptions& options) {
 }
 
 void print(const char* what, const Rates& r) {
-  std::printf("%s: %d cases: correct-localized %d, wrong-confident %d (gross %d), ambiguous %d "
-              "(truth among hypotheses %d, within 15 cm and 6 deg %d), failed %d; median %.2f ms\n",
-              what, r.cases, r.correct, r.wrong_confident, r.gross, r.ambiguous,
-              r.ambiguous_with_truth, r.ambiguous_near_truth, r.failed, r.median_ms);
+  std::printf(
+      "%s: %d cases: correct-localized %d, wrong-confident %d (gross %d), ambiguous %d "
+      "(truth among hypotheses %d, within 15 cm and 6 deg %d), failed %d; median %.2f ms\n",
+      what, r.cases, r.correct, r.wrong_confident, r.gross, r.ambiguous, r.ambiguous_with_truth,
+      r.ambiguous_near_truth, r.failed, r.median_ms);
 }
 
 // Defaults (config/localizer.yaml): LOCALIZED only when the pose is precise to 5 cm / 2 degrees at

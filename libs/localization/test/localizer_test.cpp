@@ -103,7 +103,8 @@ TEST(Localizer, RepeatingCupboardsAreAmbiguous) {
   // Standing 1.5 m in front of cupboards 2 and 3 and seeing only them.
   const Eigen::Isometry3d truth = testing::upright_pose(1.8, 2.5, 1.5708);
   std::vector<FusedPercept> percepts;
-  for (const char* id : {"cupboard2.door", "cupboard2.handle", "cupboard3.door", "cupboard3.handle"}) {
+  for (const char* id :
+       {"cupboard2.door", "cupboard2.handle", "cupboard3.door", "cupboard3.handle"}) {
     const world::ObjectModel& o = world.objects[*world.find(id)];
     percepts.push_back({o.type, truth.inverse() * o.world_position_m, std::nullopt, 1});
   }
@@ -160,8 +161,10 @@ TEST(Localizer, RandomClutterIsNeverLocalizedConfidently) {
   for (int c = 0; c < 20; ++c) {
     std::vector<FusedPercept> clutter;
     for (int p = 0; p < 12; ++p) {
-      clutter.push_back({types[p % 4], Eigen::Vector3d(1.0 + 3.0 * u(rng), -2.0 + 4.0 * u(rng), 0.2 + 2.0 * u(rng)),
-                         std::nullopt, 1});
+      clutter.push_back(
+          {types[p % 4],
+           Eigen::Vector3d(1.0 + 3.0 * u(rng), -2.0 + 4.0 * u(rng), 0.2 + 2.0 * u(rng)),
+           std::nullopt, 1});
     }
     EXPECT_NE(localizer.localize(clutter).status, Status::kLocalized) << "case " << c;
   }
@@ -171,13 +174,13 @@ TEST(Localizer, FillsStageTimesAndIsDeterministic) {
   const Localizer& localizer = kitchen_localizer();
   testing::SyntheticOptions o;
   o.seed = 3;
-  const auto view = testing::synthesize_view(testing::bundled_kitchen(),
-                                             testing::upright_pose(2.0, 2.0, 2.5), o);
+  const auto view =
+      testing::synthesize_view(testing::bundled_kitchen(), testing::upright_pose(2.0, 2.0, 2.5), o);
   const LocalizationResult a = localizer.localize(view.percepts);
   const LocalizationResult b = localizer.localize(view.percepts);
   const StageTimes& t = a.timing;
-  for (const double ms : {t.proximity_filter_ms, t.orientation_filter_ms, t.hypothesis_generation_ms,
-                          t.validation_ms, t.refinement_ms}) {
+  for (const double ms : {t.proximity_filter_ms, t.orientation_filter_ms,
+                          t.hypothesis_generation_ms, t.validation_ms, t.refinement_ms}) {
     EXPECT_GE(ms, 0.0);
     EXPECT_LE(ms, t.total_ms);
   }

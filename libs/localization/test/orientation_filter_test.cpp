@@ -40,7 +40,9 @@ TEST(TripleFrame, IsARotationInBothModesAndRefusesCollinearPoints) {
 // the same V_{i,jk}. The gravity frame tells them apart.
 TEST(TripleFrame, PaperFrameIsMirrorBlindGravityFrameIsNot) {
   const Eigen::Vector3d a(0.0, 0.0, 0.5), b(1.0, 0.2, 1.5), c(0.3, 0.9, 0.9);
-  const auto mirror = [](const Eigen::Vector3d& p) { return Eigen::Vector3d(-p.x(), p.y(), p.z()); };
+  const auto mirror = [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(-p.x(), p.y(), p.z());
+  };
   const auto v = [](const Eigen::Matrix3d& r, const Eigen::Vector3d& j, const Eigen::Vector3d& k) {
     return Eigen::Vector3d(r.transpose() * (j - k));
   };
@@ -65,7 +67,9 @@ world::WorldModel triangle_and_mirror() {
   testing::add_object(world, "a", "door", a);
   testing::add_object(world, "b", "handle", b);
   testing::add_object(world, "c", "window", c);
-  const auto mirror = [](const Eigen::Vector3d& p) { return Eigen::Vector3d(-p.x() - 20.0, p.y(), p.z()); };
+  const auto mirror = [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(-p.x() - 20.0, p.y(), p.z());
+  };
   testing::add_object(world, "a'", "door", mirror(a));
   testing::add_object(world, "b'", "handle", mirror(b));
   testing::add_object(world, "c'", "window", mirror(c));
@@ -81,8 +85,8 @@ TEST(OrientationFilter, GravityRejectsTheMirrorImagePaperFrameDoesNot) {
   const Eigen::Isometry3d ego_T_world = testing::upright_pose(1.5, 0.5, 1.3).inverse();
   std::vector<FusedPercept> percepts;
   for (int o = 0; o < 3; ++o) {
-    percepts.push_back({world.objects[o].type, ego_T_world * world.objects[o].world_position_m,
-                        std::nullopt, 1});
+    percepts.push_back(
+        {world.objects[o].type, ego_T_world * world.objects[o].world_position_m, std::nullopt, 1});
   }
   const auto noise = percept_noise(percepts, options.noise);
   const CandidateSets sets = proximity_filter(graph, adjacency, percepts, noise, options.pruning);
@@ -114,7 +118,8 @@ TEST(OrientationFilter, TrueSubgraphSurvivesInTheKitchen) {
     const auto view = testing::synthesize_view(kitchen, testing::random_kitchen_pose(rng), o);
     if (view.percepts.size() < 3) continue;
     const auto noise = percept_noise(view.percepts, options.noise);
-    const CandidateSets sets = proximity_filter(graph, adjacency, view.percepts, noise, options.pruning);
+    const CandidateSets sets =
+        proximity_filter(graph, adjacency, view.percepts, noise, options.pruning);
     for (const PerceptTriple& seed :
          choose_seed_triples(graph, view.percepts, noise, sets, options.pruning, 3)) {
       std::array<world::NodeIndex, 3> truth{};
@@ -125,8 +130,8 @@ TEST(OrientationFilter, TrueSubgraphSurvivesInTheKitchen) {
         truth[s] = static_cast<world::NodeIndex>(node);
       }
       if (!known) continue;  // proximity filtering lost it (counted in its own test)
-      const auto result =
-          orientation_filter(graph, adjacency, view.percepts, noise, sets, seed, options.pruning, 100000);
+      const auto result = orientation_filter(graph, adjacency, view.percepts, noise, sets, seed,
+                                             options.pruning, 100000);
       ++seeds_checked;
       subgraphs += result.subgraphs.size();
       EXPECT_TRUE(std::any_of(result.subgraphs.begin(), result.subgraphs.end(),

@@ -43,7 +43,9 @@ int lost_truths(const CandidateSets& sets, const testing::SyntheticView& view,
     if (!view.truth[i] || !sets.constrained[i]) continue;
     if (constrained_true) ++*constrained_true;
     const long node = node_of_object(graph, *view.truth[i]);
-    if (sets.outlier[i] || !sets.is_candidate(static_cast<int>(i), static_cast<world::NodeIndex>(node))) ++lost;
+    if (sets.outlier[i] ||
+        !sets.is_candidate(static_cast<int>(i), static_cast<world::NodeIndex>(node)))
+      ++lost;
   }
   return lost;
 }
@@ -54,7 +56,8 @@ TEST(ProximityFilter, NoiseFreeViewKeepsEveryTruthAndPrunes) {
   const auto view = view_at(testing::upright_pose(1.8, 1.9, 3.1416), false, 0.0, 0.0, 1);
   ASSERT_GE(view.percepts.size(), 10u);
   const auto noise = percept_noise(view.percepts, k.options.noise);
-  const CandidateSets sets = proximity_filter(k.graph, k.adjacency, view.percepts, noise, k.options.pruning);
+  const CandidateSets sets =
+      proximity_filter(k.graph, k.adjacency, view.percepts, noise, k.options.pruning);
   int constrained = 0;
   EXPECT_EQ(lost_truths(sets, view, k.graph, &constrained), 0);
   EXPECT_GE(constrained, 10);
@@ -87,9 +90,10 @@ TEST(ProximityFilter, FalsePositivesAndNoiseKeepNearlyAllTruths) {
   ASSERT_GT(constrained, 300);
   // A true percept loses its object only when most of its partners are false or badly measured.
   EXPECT_LE(lost, constrained / 50) << lost << " of " << constrained;
-  std::printf("proximity filter: %d of %d constrained true percepts lost their object; %d of %d "
-              "false positives found inconsistent\n",
-              lost, constrained, fp_candidates_in_outliers, fps);
+  std::printf(
+      "proximity filter: %d of %d constrained true percepts lost their object; %d of %d "
+      "false positives found inconsistent\n",
+      lost, constrained, fp_candidates_in_outliers, fps);
 }
 
 // A false positive that no model object fits is found inconsistent (an outlier) and the filter
@@ -128,7 +132,8 @@ TEST(ProximityFilter, PairsBeyondTheLinkThresholdConstrainNothing) {
       {"handle", {9.0, 0.0, 1.0}, std::nullopt, 1},  // 8 m from the others: never linked
   };
   const auto noise = percept_noise(percepts, k.options.noise);
-  const CandidateSets sets = proximity_filter(k.graph, k.adjacency, percepts, noise, k.options.pruning);
+  const CandidateSets sets =
+      proximity_filter(k.graph, k.adjacency, percepts, noise, k.options.pruning);
   EXPECT_FALSE(sets.constrained[2]);
   EXPECT_FALSE(sets.outlier[2]);
   for (const PerceptPair& pair : sets.pairs) EXPECT_NE(pair.b, 2);
@@ -143,7 +148,8 @@ TEST(ProximityFilter, UnknownTypeIsAnOutlier) {
       {"teapot", {1.0, 0.3, 0.8}, std::nullopt, 1},
   };
   const auto noise = percept_noise(percepts, k.options.noise);
-  const CandidateSets sets = proximity_filter(k.graph, k.adjacency, percepts, noise, k.options.pruning);
+  const CandidateSets sets =
+      proximity_filter(k.graph, k.adjacency, percepts, noise, k.options.pruning);
   EXPECT_FALSE(sets.types[1].has_value());
   EXPECT_TRUE(sets.outlier[1]);
 }

@@ -32,8 +32,10 @@ TEST(Explain, TruePoseExplainsEveryTruePerceptWithItsObject) {
   view.percepts.push_back({"window", Eigen::Vector3d(1.0, 0.2, 0.3), std::nullopt, 1});
   view.truth.emplace_back(std::nullopt);
   const auto noise = percept_noise(view.percepts, w.options.noise);
-  const CandidateSets sets = proximity_filter(w.graph, w.adjacency, view.percepts, noise, w.options.pruning);
-  const LocalizationContext context{w.graph, w.adjacency, w.grid, view.percepts, noise, sets, w.options};
+  const CandidateSets sets =
+      proximity_filter(w.graph, w.adjacency, view.percepts, noise, w.options.pruning);
+  const LocalizationContext context{w.graph, w.adjacency, w.grid,   view.percepts,
+                                    noise,   sets,        w.options};
   const Explanation e = explain(context, truth, PoseUncertainty{});
   ASSERT_EQ(e.associations.size(), view.percepts.size() - 1);
   for (const NodeAssociation& a : e.associations) {
@@ -55,7 +57,8 @@ TEST(Explain, TruePoseExplainsEveryTruePerceptWithItsObject) {
 ValidatedHypothesis hypothesis(double score, std::size_t explained) {
   ValidatedHypothesis h;
   h.score = score;
-  for (std::size_t i = 0; i < explained; ++i) h.explanation.associations.push_back({static_cast<int>(i), 0});
+  for (std::size_t i = 0; i < explained; ++i)
+    h.explanation.associations.push_back({static_cast<int>(i), 0});
   return h;
 }
 
@@ -67,7 +70,8 @@ TEST(Decide, StatusFollowsScoresAndSupport) {
   EXPECT_EQ(decide({hypothesis(80.0, 5)}, 10, validation, hypotheses).status, Status::kFailed);
   EXPECT_EQ(decide({hypothesis(20.0, 2)}, 3, validation, hypotheses).status, Status::kFailed);
   // A clear winner.
-  const Decision clear = decide({hypothesis(80.0, 9), hypothesis(60.0, 8)}, 10, validation, hypotheses);
+  const Decision clear =
+      decide({hypothesis(80.0, 9), hypothesis(60.0, 8)}, 10, validation, hypotheses);
   EXPECT_EQ(clear.status, Status::kLocalized);
   EXPECT_EQ(clear.contenders, 1u);
   // Within the margin: ambiguous with both, never a pick.
@@ -109,7 +113,8 @@ TEST(ChooseDiscriminator, NothingDiscriminatesIdenticalRoomsOrASingleHypothesis)
   const World w(testing::identical_rooms(2, 10.0, false));
   const Eigen::Isometry3d room0 = testing::upright_pose(2.5, 1.5, 1.5708);
   const Eigen::Isometry3d room1 = testing::upright_pose(12.5, 1.5, 1.5708);
-  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options).has_value());
+  EXPECT_FALSE(
+      choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options).has_value());
   EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0}, w.options).has_value());
 }
 

@@ -47,8 +47,9 @@ SyntheticView synthesize_view(const world::WorldModel& world, const Eigen::Isome
   const double expected = options.false_positive_rate * static_cast<double>(seen.size());
   const int count = static_cast<int>(std::floor(expected + unit(rng)));
   for (int f = 0; f < count && !options.types.empty(); ++f) {
-    const std::string type = options.types[static_cast<std::size_t>(unit(rng) * options.types.size()) %
-                                           options.types.size()];
+    const std::string type =
+        options.types[static_cast<std::size_t>(unit(rng) * options.types.size()) %
+                      options.types.size()];
     Eigen::Vector3d ego;
     if (f % 2 == 0 || seen.empty()) {
       do {

@@ -20,12 +20,12 @@ namespace vsl::localization::testing {
 
 struct SyntheticOptions {
   std::vector<std::string> types{"door", "handle", "drawer_front", "window"};
-  double range_m = 4.0;          // from the camera C_L
-  double half_fov_rad = 1.2;     // horizontal, about ego x (a scanning head)
-  double max_height_m = 2.6;     // ego z: nothing from the storey above
-  double miss_rate = 0.2;        // each seen object is dropped with this probability
+  double range_m = 4.0;              // from the camera C_L
+  double half_fov_rad = 1.2;         // horizontal, about ego x (a scanning head)
+  double max_height_m = 2.6;         // ego z: nothing from the storey above
+  double miss_rate = 0.2;            // each seen object is dropped with this probability
   double false_positive_rate = 0.1;  // false percepts per kept one (half spurious, half mistyped)
-  bool noise = true;             // Eq. 7 noise on every percept
+  bool noise = true;                 // Eq. 7 noise on every percept
   PerceptNoiseOptions noise_options;
   std::uint64_t seed = 1;
 };

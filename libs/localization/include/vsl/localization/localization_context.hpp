@@ -1,6 +1,6 @@
 // What the stages after proximity filtering share during one localize() call: the world graph and
-// its spatial index, the fused percepts with their noise (Eq. 7) and candidate sets (Eqs. 8-9),
-// and the options. References only; it lives on the caller's stack.
+// its spatial indexes, the fused percepts with their noise (Eq. 7) and candidate sets (Eqs. 8-9),
+// the options (all by reference: it lives on the caller's stack), and the table of percept pairs.
 #pragma once
 
 #include <vector>
@@ -15,7 +15,25 @@
 
 namespace vsl::localization {
 
+// make_percept_pair for every ordered pair (a, b) at [a * n + b] (a == b: distance 0).
+std::vector<PerceptPair> percept_pair_table(const std::vector<FusedPercept>& percepts,
+                                            const std::vector<PerceptNoise>& noise,
+                                            const PruningOptions& options);
+
 struct LocalizationContext {
+  LocalizationContext(const world::WorldGraph& graph_, const TypedAdjacency& adjacency_,
+                      const NodeGrid& grid_, const std::vector<FusedPercept>& percepts_,
+                      const std::vector<PerceptNoise>& noise_, const CandidateSets& candidates_,
+                      const LocalizerOptions& options_)
+      : graph(graph_),
+        adjacency(adjacency_),
+        grid(grid_),
+        percepts(percepts_),
+        noise(noise_),
+        candidates(candidates_),
+        options(options_),
+        pairs(percept_pair_table(percepts_, noise_, options_.pruning)) {}
+
   const world::WorldGraph& graph;
   const TypedAdjacency& adjacency;
   const NodeGrid& grid;
@@ -23,8 +41,8 @@ struct LocalizationContext {
   const std::vector<PerceptNoise>& noise;
   const CandidateSets& candidates;
   const LocalizerOptions& options;
-  // Every percept pair (distance and Eq. 8 tau), row-major; see percept_pair_table().
-  const std::vector<PerceptPair>& pairs;
+  // Every percept pair (distance and Eq. 8 tau), computed once per call.
+  const std::vector<PerceptPair> pairs;
 
   const PerceptPair& pair(int a, int b) const { return pairs[a * percepts.size() + b]; }
 
@@ -34,11 +52,6 @@ struct LocalizationContext {
             graph.world_position_m(node)};
   }
 };
-
-// make_percept_pair for every ordered pair (a, b) at [a * n + b] (a == b: distance 0).
-std::vector<PerceptPair> percept_pair_table(const std::vector<FusedPercept>& percepts,
-                                            const std::vector<PerceptNoise>& noise,
-                                            const PruningOptions& options);
 
 // A percept -> model node pairing, the internal form of an Association.
 struct NodeAssociation {

@@ -36,9 +36,8 @@ struct PruningOptions {
   // of the percepts it is paired with give it no support (false positives); 0 is the literal
   // intersection.
   double max_unsupported_fraction = 0.34;
-  // Eq. 9 intersects m link sets; each percept contributes the pairs with its `max_partners`
-  // most precise partners (smallest tau). More pairs prune little more but cost
-  // |candidates| x degree each pass.
+  // Eq. 9 intersects m link sets; each percept is filtered against its `max_partners` most
+  // precise partners (smallest tau). More pairs prune little more but cost candidates x partners.
   int max_partners = 8;
   // Only the most precise percepts (smallest Eq. 7 sigma) are filtered, at most this many: a far
   // percept's tau admits nearly every node of its type, so filtering it costs much and prunes
@@ -51,7 +50,8 @@ struct PruningOptions {
   int max_link_set = 5000;
   // The ego frame's z axis is up (gravity): world_R_ego is a rotation about z up to max_tilt_rad.
   // Orientation filtering then compares displacement vectors in gravity-aligned frames, which
-  // tells a triangle from its mirror image and rejects upside-down matches (orientation_filter.hpp).
+  // tells a triangle from its mirror image and rejects upside-down matches
+  // (orientation_filter.hpp).
   bool use_gravity = true;
   double max_tilt_rad = 0.05;
 };
@@ -59,12 +59,14 @@ struct PruningOptions {
 struct HypothesisOptions {
   // A hypothesis needs at least this many associations (3 non-collinear fix a rigid pose).
   int min_associations = 3;
-  // Hypotheses closer than this (position m, angle rad) are the same hypothesis.
+  // Hypotheses closer than this (position m, angle rad) are the same hypothesis (and so are two
+  // closer than twice their combined pose uncertainty, each sigma capped at 10 cm and 0.05 rad:
+  // validation.hpp).
   double same_position_m = 0.05;
   double same_angle_rad = 0.035;
   // Upper bound on interpretations explored, so a pathological input cannot run away.
   int max_interpretations = 20000;
-  // Seeds (percept triples, localizer.cpp) tried at most; generation stops earlier once the best
+  // Seeds (percept triples, seeds.hpp) tried at most; generation stops earlier once the best
   // hypothesis explains every percept of `confirming_seeds` of the seeds tried: every hypothesis
   // consistent with a seed of true percepts is generated from it, so the truth cannot be missing
   // unless all those seeds held a false positive.

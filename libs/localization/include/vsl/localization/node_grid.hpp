@@ -52,7 +52,7 @@ class NodeGrid {
   }
 
   double inverse_cell_ = 2.0;
-  std::vector<Slot> table_;  // open addressing, linear probing; size a power of two
+  std::vector<Slot> table_;                 // open addressing, linear probing; size a power of two
   std::vector<world::NodeIndex> nodes_;     // sorted by (type, cell)
   std::vector<Eigen::Vector3d> positions_;  // world positions, same order
 };

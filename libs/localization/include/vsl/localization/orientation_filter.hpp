@@ -69,13 +69,10 @@ struct OrientationFilterResult {
   std::array<std::vector<world::NodeIndex>, 3> nodes;
 };
 
-OrientationFilterResult orientation_filter(const world::WorldGraph& graph,
-                                           const TypedAdjacency& adjacency,
-                                           const std::vector<FusedPercept>& percepts,
-                                           const std::vector<PerceptNoise>& noise,
-                                           const CandidateSets& candidates,
-                                           const PerceptTriple& triple,
-                                           const PruningOptions& options,
-                                           std::size_t max_subgraphs);
+OrientationFilterResult orientation_filter(
+    const world::WorldGraph& graph, const TypedAdjacency& adjacency,
+    const std::vector<FusedPercept>& percepts, const std::vector<PerceptNoise>& noise,
+    const CandidateSets& candidates, const PerceptTriple& triple, const PruningOptions& options,
+    std::size_t max_subgraphs);
 
 }  // namespace vsl::localization

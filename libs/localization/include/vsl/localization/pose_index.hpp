@@ -23,7 +23,8 @@ class PoseIndex {
   // Calls visit(id) for every id added at a position within the cells that cover radius_m about
   // world_position_m (a superset of those within radius_m: the caller checks).
   template <typename Visit>
-  void for_each_near(const Eigen::Vector3d& world_position_m, double radius_m, Visit&& visit) const {
+  void for_each_near(const Eigen::Vector3d& world_position_m, double radius_m,
+                     Visit&& visit) const {
     const auto lo = cell_of(world_position_m - Eigen::Vector3d::Constant(radius_m));
     const auto hi = cell_of(world_position_m + Eigen::Vector3d::Constant(radius_m));
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {

@@ -3,23 +3,38 @@
 // A pair of percepts of types alpha, beta at distance phi can only be a pair of model objects of
 // those types whose link length lies within phi +- tau (Eq. 8): the link set
 // psi{alpha, beta, phi, tau}. The active link set psi_act (Eq. 9) is the intersection of these
-// link sets over all percept pairs; here it is kept as the candidate model nodes of each percept
-// (the nodes its surviving links touch) and computed by arc consistency: a candidate of percept a
-// stays while every partner b still has a candidate at the right distance from it, repeated until
+// link sets over percept pairs; here it is kept as the candidate model nodes of each percept (the
+// nodes its surviving links touch) and computed by arc consistency: a candidate of percept a
+// stays while its partners still have candidates at the right distances from it, repeated until
 // nothing changes.
+//
+// Which pairs (Eq. 9 intersects "m proximity filtering results"; m is ours to choose):
+//  - only pairs that the link set can constrain: phi + tau < varpi (Eq. 6 holds no longer link);
+//  - only the max_filtered_percepts most precise percepts: a far percept's tau admits nearly
+//    every node of its type, so filtering it costs much and prunes nothing;
+//  - each percept against its max_partners most precise partners (smallest tau). Not its
+//    smallest link sets: an empty link set is the mark of a false positive, and choosing by it
+//    hands every percept the false positives first;
+//  - a percept with a link set above max_link_set is left unconstrained: in a large repetitive
+//    building such a percept keeps one candidate per identical room whatever is done, and reading
+//    its link sets would cost more than orientation filtering saves.
 //
 // False positives. Taken literally, Eq. 9 lets one false-positive percept empty the true
 // candidates of every percept it is paired with (the spurious pair has no link of its length at
 // the true object). A candidate therefore needs the support of all but f_a of its partners,
-// f_a = max(1, floor(max_unsupported_fraction * partners)) (< partners); with f_a = 0 this is the
-// literal intersection. A percept left without candidates is inconsistent with the others: it is
-// marked an outlier and the filter is run again without it.
+// f_a = max(1, floor(max_unsupported_fraction * partners)) (< partners); with fraction 0 this is
+// the literal intersection. A percept left without candidates is inconsistent with the others: it
+// is marked an outlier and the filter is run again with it passive (it constrains nobody, but its
+// own candidates are filtered against the others, so a true percept that lost its objects only
+// because its partners were false gets them back).
 //
-// Cost. The first pass reads each pair's link set from the world graph's sorted typed link lists
-// (Eq. 8 as one range query, O(log links + |psi|)), never the node set; the arc-consistency passes
-// then visit only surviving candidates and their graph neighbours (the paper's "distance lookup
-// filtering only previously selected nodes"). Pairs that cannot be linked (phi + tau >= varpi:
-// the link set of Eq. 6 holds no pair that far apart) constrain nothing.
+// Cost. The first pass counts, per percept, how many of its partners' link sets hold each node,
+// reading each set from the world graph's sorted typed link lists (Eq. 8 as one range query,
+// O(log links + |psi|)), never the node set. Arc consistency is AC-4: supports are counted once
+// through the typed adjacency (the neighbours of a candidate of one type within phi +- tau: a
+// binary search), then each removed candidate decrements the candidates it supported; the fixed
+// point costs O(candidates x partners x lookup), the paper's "distance lookup filtering only
+// previously selected nodes".
 #pragma once
 
 #include <optional>
@@ -53,8 +68,8 @@ std::vector<std::optional<world::TypeId>> percept_types(const world::WorldGraph&
                                                         const std::vector<FusedPercept>& percepts);
 
 struct CandidateSets {
-  std::vector<std::optional<world::TypeId>> types;       // per percept
-  std::vector<std::vector<world::NodeIndex>> nodes;      // per percept, sorted; see constrained
+  std::vector<std::optional<world::TypeId>> types;   // per percept
+  std::vector<std::vector<world::NodeIndex>> nodes;  // per percept, sorted; see constrained
   // False when the percept had no partner close enough to be linked: it is not filtered and
   // `nodes` is empty (every node of its type is a candidate).
   std::vector<bool> constrained;
@@ -63,7 +78,7 @@ struct CandidateSets {
   std::vector<bool> outlier;
   std::vector<PerceptPair> pairs;  // the constraining pairs between non-outliers
   int rounds = 0;                  // filter runs (one more per batch of outliers found)
-  int passes = 0;                  // arc-consistency passes, over all rounds
+  int passes = 0;                  // candidates removed by arc consistency, over all rounds
 
   bool is_candidate(int percept, world::NodeIndex node) const;  // O(log candidates)
   std::size_t candidate_count() const;  // over constrained, non-outlier percepts

@@ -60,7 +60,7 @@ Explanation explain(const LocalizationContext& context, const Eigen::Isometry3d&
 struct ValidatedHypothesis {
   Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();
   Explanation explanation;
-  double score = 0.0;  // explanation.log_likelihood_ratio
+  double score = 0.0;           // explanation.log_likelihood_ratio
   PoseUncertainty uncertainty;  // of world_T_ego, from the associations it was estimated from
 
   std::size_t explained() const { return explanation.associations.size(); }
