@@ -5,6 +5,7 @@ find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
 find_package(Threads REQUIRED)
+find_package(Ceres REQUIRED)
 find_package(Java 11 REQUIRED COMPONENTS Development)
 include(UseJava)
 
