@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "vsl/config/node.hpp"
+#include "vsl/localization/localizer.hpp"
 #include "vsl/world/world_graph.hpp"
-#include "vsl/world/world_graph_options.hpp"
 #include "vsl/world/world_io.hpp"
 #include "vsl/worldgen/building.hpp"
 #include "vsl/worldgen/kitchen.hpp"
@@ -21,8 +21,7 @@ namespace fs = std::filesystem;
 
 void load_localizer_config(const std::string& path) {
   const vsl::config::Node root = vsl::config::Node::load_file(path);
-  root.expect_keys({"world_graph"});
-  const auto options = vsl::world::world_graph_options_from(root.at("world_graph"));
+  const auto options = vsl::localization::localizer_options_from(root).graph;
   // The graph options must make sense for the bundled kitchen: every node type occurs in it.
   const auto kitchen = vsl::world::load_world("config/worlds/kitchen.yaml");
   const auto graph = vsl::world::WorldGraph::build(kitchen, options);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "support/synthetic_percepts.hpp"
+#include "vsl/config/node.hpp"
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/localization/orientation_filter.hpp"
@@ -36,10 +37,10 @@ namespace world = vsl::world;
 
 constexpr int kViews = 64;
 
+// The shipped configuration: what is measured is what vsl-localize and the daemon run.
 LocalizerOptions bench_options() {
-  LocalizerOptions options;
-  options.graph.node_types = {"door", "handle", "drawer_front", "window"};
-  return options;
+  return localizer_options_from(
+      vsl::config::Node::load_file(std::string(VSL_SOURCE_DIR) + "/config/localizer.yaml"));
 }
 
 // A world, its localizer (graph, adjacency and grid built) and the same indexes for the stage

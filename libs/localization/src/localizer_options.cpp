@@ -32,17 +32,30 @@ PerceptNoiseOptions percept_noise(const Node& section) {
 
 PruningOptions pruning(const Node& section) {
   PruningOptions out;
-  section.expect_keys({"tau_sigmas", "min_tau_m", "mu_max_m", "kappa_max_rad"});
+  section.expect_keys({"tau_sigmas", "min_tau_m", "mu_max_m", "kappa_max_rad",
+                       "max_unsupported_fraction", "max_partners", "max_filtered_percepts",
+                       "max_link_set", "use_gravity", "max_tilt_rad"});
   if (const auto v = section.find("tau_sigmas")) out.tau_sigmas = v->as_double_in(0.5, 20.0);
   if (const auto v = section.find("min_tau_m")) out.min_tau_m = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("mu_max_m")) out.mu_max_m = v->as_double_in(0.001, 2.0);
   if (const auto v = section.find("kappa_max_rad")) out.kappa_max_rad = v->as_double_in(0.001, 3.1416);
+  if (const auto v = section.find("max_unsupported_fraction")) {
+    out.max_unsupported_fraction = v->as_double_in(0.0, 0.9);
+  }
+  if (const auto v = section.find("max_partners")) out.max_partners = int_in(*v, 1, 1000);
+  if (const auto v = section.find("max_filtered_percepts")) {
+    out.max_filtered_percepts = int_in(*v, 3, 100000);
+  }
+  if (const auto v = section.find("max_link_set")) out.max_link_set = int_in(*v, 1, 100000000);
+  if (const auto v = section.find("use_gravity")) out.use_gravity = v->as_bool();
+  if (const auto v = section.find("max_tilt_rad")) out.max_tilt_rad = v->as_double_in(0.0, 1.5);
   return out;
 }
 
 HypothesisOptions hypotheses(const Node& section) {
   HypothesisOptions out;
-  section.expect_keys({"min_associations", "same_position_m", "same_angle_rad", "max_interpretations"});
+  section.expect_keys({"min_associations", "same_position_m", "same_angle_rad",
+                       "max_interpretations", "max_seeds", "confirming_seeds"});
   if (const auto v = section.find("min_associations")) {
     out.min_associations = int_in(*v, 3, 50);
   }
@@ -51,16 +64,30 @@ HypothesisOptions hypotheses(const Node& section) {
   if (const auto v = section.find("max_interpretations")) {
     out.max_interpretations = int_in(*v, 1, 10000000);
   }
+  if (const auto v = section.find("max_seeds")) out.max_seeds = int_in(*v, 1, 100000);
+  if (const auto v = section.find("confirming_seeds")) out.confirming_seeds = int_in(*v, 1, 100000);
   return out;
 }
 
 ValidationOptions validation(const Node& section) {
   ValidationOptions out;
-  section.expect_keys({"gate_sigmas", "ambiguity_margin", "min_explained_fraction"});
+  section.expect_keys({"gate_sigmas", "ambiguity_margin", "clutter_density_per_m3",
+                       "min_explained_fraction", "precision_sigmas", "required_position_m",
+                       "required_angle_rad"});
   if (const auto v = section.find("gate_sigmas")) out.gate_sigmas = v->as_double_in(0.5, 20.0);
   if (const auto v = section.find("ambiguity_margin")) out.ambiguity_margin = v->as_double_in(0.0, 100.0);
   if (const auto v = section.find("min_explained_fraction")) {
     out.min_explained_fraction = v->as_double_in(0.0, 1.0);
+  }
+  if (const auto v = section.find("clutter_density_per_m3")) {
+    out.clutter_density_per_m3 = v->as_double_in(1e-9, 1e6);
+  }
+  if (const auto v = section.find("precision_sigmas")) out.precision_sigmas = v->as_double_in(0.0, 20.0);
+  if (const auto v = section.find("required_position_m")) {
+    out.required_position_m = v->as_double_in(1e-4, 100.0);
+  }
+  if (const auto v = section.find("required_angle_rad")) {
+    out.required_angle_rad = v->as_double_in(1e-4, 3.1416);
   }
   return out;
 }

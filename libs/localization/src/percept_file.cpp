@@ -20,10 +20,10 @@ Eigen::Matrix3d covariance(const Node& node) {
   Eigen::Matrix3d c;
   c << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
   if (!c.isApprox(c.transpose(), 1e-9) && (c - c.transpose()).cwiseAbs().maxCoeff() > 1e-12) {
-    node.fail("covariance must be symmetric");
+    node.fail("must be symmetric");
   }
   const Eigen::LLT<Eigen::Matrix3d> llt(c);
-  if (llt.info() != Eigen::Success) node.fail("covariance must be positive definite");
+  if (llt.info() != Eigen::Success) node.fail("must be positive definite");
   return c;
 }
 
@@ -35,7 +35,7 @@ FusedPercept percept(const Node& node) {
   if (const auto c = node.find("covariance")) out.ego_covariance_m2 = covariance(*c);
   if (const auto support = node.find("support")) {
     const std::int64_t frames = support->as_int();
-    if (frames < 1 || frames > 1000000) support->fail("support must be a frame count >= 1");
+    if (frames < 1 || frames > 1000000) support->fail("must be a frame count >= 1");
     out.support = static_cast<int>(frames);
   }
   return out;

@@ -115,6 +115,13 @@ std::optional<ValidatedHypothesis> validate_hypothesis(
   if (out.explanation.associations.size() < 3) return std::nullopt;
   out.score = out.explanation.log_likelihood_ratio;
   out.uncertainty = uncertainty_of(context, out.explanation.associations);
+  // The re-estimate may have tilted a pose that was upright enough when generated from three
+  // percepts; with gravity (ego z up) a robot standing on a tilted pose is not a hypothesis.
+  const PruningOptions& pruning = context.options.pruning;
+  if (pruning.use_gravity &&
+      tilt_rad(out.world_T_ego) > pruning.max_tilt_rad + 3.0 * out.uncertainty.sigma_rotation_rad) {
+    return std::nullopt;
+  }
   return out;
 }
 

@@ -69,7 +69,7 @@ TEST(PerceptFile, ErrorsAreOneLineWithFileLineKey) {
   EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], covariance: [1, 0.5, 0, 0, 1, 0, 0, 0, 1]}\n"),
             "p.yaml:2: percepts[0].covariance: must be symmetric");
   EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], support: 0}\n"),
-            "p.yaml:2: percepts[0].support: support must be a frame count >= 1");
+            "p.yaml:2: percepts[0].support: must be a frame count >= 1");
   EXPECT_EQ(error_of("percept:\n  - {type: door, position: [1, 2, 3]}\n"),
             "p.yaml:1: percept: unknown key (allowed: percepts, ground_truth)");
   EXPECT_EQ(error_of("percepts: []\nground_truth: {position: [0, 0, 0], quaternion: [2, 0, 0, 0]}\n"),
