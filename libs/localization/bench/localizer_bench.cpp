@@ -131,15 +131,17 @@ Prepared prepare(const Scene& s, const std::vector<FusedPercept>& percepts) {
 void BM_Localize(benchmark::State& state) {
   const Scene& s = scene(state.range(0));
   std::vector<double> totals;
-  std::size_t v = 0, localized = 0, runs = 0;
+  std::size_t v = 0, localized = 0, ambiguous = 0, runs = 0;
   for (auto _ : state) {
     const LocalizationResult result = s.localizer->localize(s.views[v++ % s.views.size()]);
     totals.push_back(result.timing.total_ms);
     localized += result.status == Status::kLocalized;
+    ambiguous += result.status == Status::kAmbiguous;
     ++runs;
   }
   state.counters["median_ms"] = median(totals);
   state.counters["localized"] = static_cast<double>(localized) / static_cast<double>(runs);
+  state.counters["ambiguous"] = static_cast<double>(ambiguous) / static_cast<double>(runs);
   state.counters["nodes"] = static_cast<double>(s.localizer->graph().node_count());
 }
 BENCHMARK(BM_Localize)->Apply(world_args);

@@ -12,7 +12,7 @@
 // therefore tried in turn, each sharing as few percepts as possible with the previous ones (and
 // avoiding those of seeds that gave nothing), until the best hypothesis explains every percept of
 // `confirming_seeds` of them (then at least one of them is almost surely free of false
-// positives) or `max_seeds` are spent.
+// positives; one seed when the best explains nearly every percept) or `max_seeds` are spent.
 //
 // Cost control, without losing a hypothesis the data support:
 //  - an interpretation is abandoned once it cannot explain as many percepts as needed to be
@@ -360,7 +360,12 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
               const auto& p = t.percepts;
               return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
             });
-        if (confirmed >= options.hypotheses.confirming_seeds) break;
+        const bool clear_leader = static_cast<double>(top.explained()) >=
+                                  options.hypotheses.single_seed_explained_fraction *
+                                      static_cast<double>(usable);
+        const int needed = clear_leader ? std::min(options.hypotheses.confirming_seeds, 1)
+                                        : options.hypotheses.confirming_seeds;
+        if (confirmed >= needed) break;
       }
     }
   }

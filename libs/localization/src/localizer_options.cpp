@@ -55,7 +55,8 @@ PruningOptions pruning(const Node& section) {
 HypothesisOptions hypotheses(const Node& section) {
   HypothesisOptions out;
   section.expect_keys({"min_associations", "same_position_m", "same_angle_rad",
-                       "max_interpretations", "max_seeds", "confirming_seeds"});
+                       "max_interpretations", "max_seeds", "confirming_seeds",
+                       "single_seed_explained_fraction"});
   if (const auto v = section.find("min_associations")) {
     out.min_associations = int_in(*v, 3, 50);
   }
@@ -66,6 +67,9 @@ HypothesisOptions hypotheses(const Node& section) {
   }
   if (const auto v = section.find("max_seeds")) out.max_seeds = int_in(*v, 1, 100000);
   if (const auto v = section.find("confirming_seeds")) out.confirming_seeds = int_in(*v, 1, 100000);
+  if (const auto v = section.find("single_seed_explained_fraction")) {
+    out.single_seed_explained_fraction = v->as_double_in(0.0, 1.0);
+  }
   return out;
 }
 
