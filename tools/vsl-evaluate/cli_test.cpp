@@ -53,6 +53,58 @@ TEST(VslEvaluateCli, ReadsTheFilesVslScenarioWrites) {
   EXPECT_NE(from_files.out.find("scenario_0003.yaml"), std::string::npos) << from_files.out;
 }
 
+// The lines of the side-by-side table that begin with `label` (after its indent).
+int table_rows(const std::string& text, const std::string& label) {
+  int rows = 0;
+  for (std::size_t at = text.find("\n  " + label); at != std::string::npos;
+       at = text.find("\n  " + label, at + 1)) {
+    ++rows;
+  }
+  return rows;
+}
+
+TEST(VslEvaluateCli, PeerRunsOnTheSameScenariosAndPrintsBothColumns) {
+  const auto result = run_command({VSL_EVALUATE_BIN, "--peer", "open3d", "--count", "5"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("localizer vs peer on the same 5 scenarios"), std::string::npos)
+      << result.out;
+  const std::size_t header = result.out.find("vsl  ");
+  ASSERT_NE(header, std::string::npos) << result.out;
+  const std::size_t header_end = result.out.find('\n', header);
+  EXPECT_NE(result.out.substr(header, header_end - header).find("open3d-ransac"), std::string::npos)
+      << result.out;
+  for (const char* label :
+       {"correct-localized", "wrong-confident", "ambiguous", "failed", "position error median",
+        "position error 95%", "time median", "time 95%"}) {
+    EXPECT_EQ(table_rows(result.out, label), 1) << label << " in " << result.out;
+  }
+}
+
+TEST(VslEvaluateCli, PeerResultsAreInTheJson) {
+  const auto result =
+      run_command({VSL_EVALUATE_BIN, "--peer", "open3d", "--count", "2", "--json", "--details"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(line_count(result.out), 1);
+  const std::size_t peer = result.out.find("\"peer\":{\"name\":\"open3d-ransac\"");
+  ASSERT_NE(peer, std::string::npos) << result.out;
+  const std::string peer_json = result.out.substr(peer);
+  const int localized =
+      number_after(peer_json, "correct_localized") + number_after(peer_json, "wrong_confident");
+  EXPECT_EQ(localized + number_after(peer_json, "ambiguous") + number_after(peer_json, "failed"), 2)
+      << peer_json;
+  EXPECT_NE(peer_json.find("\"max_correspondence_distance_m\":"), std::string::npos);
+}
+
+TEST(VslEvaluateCli, BadPeerIsOneLineAndExitCode2) {
+  auto result = run_command({VSL_EVALUATE_BIN, "--peer", "foo"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(line_count(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("foo"), std::string::npos) << result.err;
+  result = run_command({VSL_EVALUATE_BIN, "--peer-max-distance", "0.2"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(line_count(result.err), 1) << result.err;
+}
+
 TEST(VslEvaluateCli, BadInputIsOneLineAndExitCode2) {
   auto result = run_command({VSL_EVALUATE_BIN, "--count", "many"});
   EXPECT_EQ(result.exit_code, 2);

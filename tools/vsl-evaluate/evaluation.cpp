@@ -5,6 +5,9 @@
 namespace vsl::evaluate {
 namespace {
 
+// The one clock of every time vsl-evaluate reports, for the localizer and the peer alike.
+using Clock = std::chrono::steady_clock;
+
 void add(localization::StageTimes& sum, const localization::StageTimes& t) {
   sum.proximity_filter_ms += t.proximity_filter_ms;
   sum.orientation_filter_ms += t.orientation_filter_ms;
@@ -19,7 +22,6 @@ void add(localization::StageTimes& sum, const localization::StageTimes& t) {
 CaseResult run_case(const localization::Localizer& localizer,
                     const scenario::ScenarioGenerator* generator, Case c, int active_rounds,
                     const scenario::Thresholds& thresholds) {
-  using Clock = std::chrono::steady_clock;
   CaseResult out;
   localization::StageTimes times;
   double wall_ms = 0.0;
@@ -48,6 +50,19 @@ CaseResult run_case(const localization::Localizer& localizer,
     result = localize();
   }
   result.timing = times;
+  out.outcome =
+      scenario::assess(result, c.world_T_ego_truth, thresholds, c.percepts.size(), wall_ms);
+  out.message = result.message;
+  return out;
+}
+
+CaseResult run_peer_case(const PeerLocalizer& peer, const Case& c, std::uint32_t seed,
+                         const scenario::Thresholds& thresholds) {
+  const auto start = Clock::now();
+  localization::LocalizationResult result = peer.localize(c.percepts, seed);
+  const double wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  result.timing.total_ms = wall_ms;
+  CaseResult out;
   out.outcome =
       scenario::assess(result, c.world_T_ego_truth, thresholds, c.percepts.size(), wall_ms);
   out.message = result.message;

@@ -3,10 +3,12 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "peer.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/scenario/metrics.hpp"
 #include "vsl/scenario/scenario.hpp"
@@ -36,5 +38,11 @@ struct CaseResult {
 CaseResult run_case(const localization::Localizer& localizer,
                     const scenario::ScenarioGenerator* generator, Case c, int active_rounds,
                     const scenario::Thresholds& thresholds);
+
+// Localizes `c`'s percepts (as generated, before any active look) with the peer, seeded by
+// `seed`; wall time (the same clock as run_case) is measured around the peer's call only and is
+// also its total_ms.
+CaseResult run_peer_case(const PeerLocalizer& peer, const Case& c, std::uint32_t seed,
+                         const scenario::Thresholds& thresholds);
 
 }  // namespace vsl::evaluate

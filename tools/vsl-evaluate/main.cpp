@@ -3,6 +3,7 @@
 #include <string>
 
 #include "evaluation.hpp"
+#include "peer.hpp"
 #include "report.hpp"
 #include "scenario_cli.hpp"
 #include "vsl/config/node.hpp"
@@ -30,6 +31,14 @@ Scenarios are generated in memory as vsl-scenario would write them, or read from
   --scenarios DIR            read DIR/scenario_*.yaml (with ground truth) instead of generating
   --active-rounds K          simulate up to K looks of active validation (paper §2.4.2) per
                              ambiguous result, generated scenarios only (default 0)
+  --peer open3d              also run the peer a user would otherwise pick on the same scenarios
+                             (Open3D's correspondence-based RANSAC registration over every
+                             same-type percept-object pair, one thread) and print both side by
+                             side; the peer sees each scenario's initial percepts (no active
+                             looks). Default: no peer
+  --peer-max-distance M      the peer's inlier distance, 0.001..10 m (default 0.4, the peer's
+                             best on the default scenarios: docs/benchmarks.md)
+  --peer-iterations N        the peer's RANSAC iterations at most, 1..100000000 (default 100000)
   --json                     print one JSON object instead of text
   --details                  also list every scenario's result
 The defaults are issue 3's acceptance setting: the bundled kitchen, 200 scenarios, seed 1, 10%
@@ -43,6 +52,9 @@ struct Options {
   std::uint64_t seed = 1;
   std::optional<std::string> scenarios_dir;
   int active_rounds = 0;
+  std::optional<vsl::evaluate::PeerOptions> peer;  // --peer open3d
+  bool peer_flags = false;                         // --peer-max-distance, --peer-iterations
+  vsl::evaluate::PeerOptions peer_options;
   bool json = false;
   bool details = false;
 };
@@ -85,6 +97,18 @@ Options parse(int argc, char** argv) {
       options.scenarios_dir = value();
     } else if (arg == "--active-rounds") {
       options.active_rounds = static_cast<int>(cli::parse_unsigned(kProgram, arg, value(), 0, 100));
+    } else if (arg == "--peer") {
+      const std::string name = value();
+      if (name != "open3d") cli::usage_error(kProgram, "--peer: unknown peer '" + name + "'");
+      options.peer.emplace();
+    } else if (arg == "--peer-max-distance") {
+      options.peer_options.max_correspondence_distance_m =
+          cli::parse_double(kProgram, arg, value(), 0.001, 10.0);
+      options.peer_flags = true;
+    } else if (arg == "--peer-iterations") {
+      options.peer_options.max_iterations =
+          static_cast<int>(cli::parse_unsigned(kProgram, arg, value(), 1, 100000000));
+      options.peer_flags = true;
     } else if (arg == "--json") {
       options.json = true;
     } else if (arg == "--details") {
@@ -101,6 +125,10 @@ Options parse(int argc, char** argv) {
   if (options.scenarios_dir && options.active_rounds > 0) {
     cli::usage_error(kProgram, "--active-rounds needs generated scenarios (not --scenarios)");
   }
+  if (options.peer_flags && !options.peer) {
+    cli::usage_error(kProgram, "--peer-max-distance and --peer-iterations need --peer open3d");
+  }
+  if (options.peer) options.peer = options.peer_options;
   return options;
 }
 
@@ -143,8 +171,23 @@ int main(int argc, char** argv) {
                    loaded.scenario.errors.miss_rate,
                    options.active_rounds,
                    {}};
+    std::optional<vsl::evaluate::PeerLocalizer> peer;
+    if (options.peer) {
+      peer.emplace(loaded.world, loaded.localizer.graph.node_types, *options.peer);
+      report.peer.emplace();
+      report.peer->name = vsl::evaluate::PeerLocalizer::name();
+      report.peer->options = *options.peer;
+    }
     std::vector<vsl::scenario::Outcome> outcomes;
-    for (vsl::evaluate::Case& c : cases) {
+    std::vector<vsl::scenario::Outcome> peer_outcomes;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      vsl::evaluate::Case& c = cases[k];
+      if (peer) {
+        // Before run_case, which takes the case (and adds active looks to it).
+        report.peer->cases.push_back(vsl::evaluate::run_peer_case(
+            *peer, c, static_cast<std::uint32_t>(k), report.info.thresholds));
+        peer_outcomes.push_back(report.peer->cases.back().outcome);
+      }
       report.names.push_back(c.name);
       report.cases.push_back(vsl::evaluate::run_case(localizer, generator ? &*generator : nullptr,
                                                      std::move(c), options.active_rounds,
@@ -153,6 +196,7 @@ int main(int argc, char** argv) {
       report.active_looks += static_cast<std::size_t>(report.cases.back().active_looks);
     }
     report.summary = vsl::scenario::summarize(outcomes);
+    if (peer) report.peer->summary = vsl::scenario::summarize(peer_outcomes);
     if (options.json) {
       vsl::evaluate::print_json(report, options.details, std::cout);
     } else {

@@ -43,6 +43,86 @@ void write_distribution(tools::JsonWriter& json, const Distribution& d, double s
   json.end_object();
 }
 
+// "93.5 %", the share of `n` in `s`'s scenarios.
+std::string percent(const scenario::Summary& s, std::size_t n) {
+  return format("%.1f %%", 100.0 * s.rate(n));
+}
+
+// One value of a distribution (`Distribution::median` or `::p95`) with its unit, or "n/a".
+std::string value(const Distribution& d, double Distribution::*which, double scale,
+                  const char* unit, int decimals) {
+  if (d.count == 0) return "n/a";
+  return format("%.*f %s", decimals, d.*which * scale, unit);
+}
+
+// vsl and the peer in two columns over the same cases (--peer).
+void print_side_by_side(const Report& r, std::ostream& out) {
+  const scenario::Summary& v = r.summary;
+  const PeerReport& peer = *r.peer;
+  const scenario::Summary& p = peer.summary;
+  const auto row = [&](const char* label, const std::string& vsl, const std::string& other) {
+    out << format("  %-23s %14s %14s\n", label, vsl.c_str(), other.c_str());
+  };
+  out << format("localizer vs peer on the same %zu scenarios (one thread each):\n", v.scenarios);
+  row("", "vsl", peer.name.c_str());
+  row("correct-localized", percent(v, v.correct), percent(p, p.correct));
+  row("wrong-confident", percent(v, v.wrong_confident), percent(p, p.wrong_confident));
+  row("ambiguous", percent(v, v.ambiguous), percent(p, p.ambiguous));
+  row("failed", percent(v, v.failed), percent(p, p.failed));
+  row("position error median", value(v.position_error_m, &Distribution::median, 100, "cm", 2),
+      value(p.position_error_m, &Distribution::median, 100, "cm", 2));
+  row("position error 95%", value(v.position_error_m, &Distribution::p95, 100, "cm", 2),
+      value(p.position_error_m, &Distribution::p95, 100, "cm", 2));
+  row("time median", value(v.wall_ms, &Distribution::median, 1, "ms", 3),
+      value(p.wall_ms, &Distribution::median, 1, "ms", 3));
+  row("time 95%", value(v.wall_ms, &Distribution::p95, 1, "ms", 3),
+      value(p.wall_ms, &Distribution::p95, 1, "ms", 3));
+  const PeerOptions& o = peer.options;
+  out << format(
+      "  (position errors over localized results; time: wall time around each call. %s: "
+      "Open3D RANSAC over every same-type percept-object pair, inlier distance %g m, ransac_n 3, "
+      "edge-length check %g, at most %d iterations, confidence %g, least-squares refit on its "
+      "inliers, localized with at least %d inlier percepts)\n",
+      peer.name.c_str(), o.max_correspondence_distance_m, o.edge_length_similarity,
+      o.max_iterations, o.confidence, o.min_inlier_percepts);
+}
+
+void write_peer(tools::JsonWriter& json, const PeerReport& peer) {
+  const scenario::Summary& s = peer.summary;
+  const PeerOptions& o = peer.options;
+  json.begin_object();
+  json.key("name").string(peer.name);
+  json.key("settings").begin_object();
+  json.key("correspondences").string("all same-type percept-object pairs");
+  json.key("max_correspondence_distance_m").number(o.max_correspondence_distance_m);
+  json.key("ransac_n").number(3);
+  json.key("edge_length_similarity").number(o.edge_length_similarity);
+  json.key("max_iterations").number(o.max_iterations);
+  json.key("confidence").number(o.confidence);
+  json.key("min_inlier_percepts").number(o.min_inlier_percepts);
+  json.key("threads").number(1);
+  json.end_object();
+  json.key("counts").begin_object();
+  json.key("correct_localized").number(static_cast<double>(s.correct));
+  json.key("wrong_confident").number(static_cast<double>(s.wrong_confident));
+  json.key("ambiguous").number(static_cast<double>(s.ambiguous));
+  json.key("failed").number(static_cast<double>(s.failed));
+  json.end_object();
+  json.key("rates").begin_object();
+  json.key("correct_localized").number(s.rate(s.correct));
+  json.key("wrong_confident").number(s.rate(s.wrong_confident));
+  json.key("ambiguous").number(s.rate(s.ambiguous));
+  json.key("failed").number(s.rate(s.failed));
+  json.end_object();
+  json.key("position_error_m");
+  write_distribution(json, s.position_error_m);
+  json.key("heading_error_deg");
+  write_distribution(json, s.heading_error_deg);
+  json.key("wall_ms");
+  write_distribution(json, s.wall_ms);
+  json.end_object();
+}
+
 }  // namespace
 
 void print_text(const Report& r, bool details, std::ostream& out) {
@@ -87,6 +167,7 @@ void print_text(const Report& r, bool details, std::ostream& out) {
       "validation %.3f, refinement %.3f\n",
       m.proximity_filter_ms, m.orientation_filter_ms, m.hypothesis_generation_ms, m.validation_ms,
       m.refinement_ms);
+  if (r.peer) print_side_by_side(r, out);
   if (!details) return;
   for (std::size_t k = 0; k < r.cases.size(); ++k) {
     const scenario::Outcome& o = r.cases[k].outcome;
@@ -99,6 +180,12 @@ void print_text(const Report& r, bool details, std::ostream& out) {
                     o.error->rotation_rad * kRadToDeg);
     }
     if (!r.cases[k].message.empty()) out << "  (" << r.cases[k].message << ")";
+    if (r.peer) {
+      const scenario::Outcome& p = r.peer->cases[k].outcome;
+      out << format("  | %s: %s %s %8.3f ms", r.peer->name.c_str(),
+                    localization::to_string(p.status), p.correct ? "ok" : "  ", p.wall_ms);
+      if (p.error) out << format("  error %.2f cm", p.error->position_m * 100);
+    }
     out << "\n";
   }
 }
@@ -159,6 +246,10 @@ void print_json(const Report& r, bool details, std::ostream& out) {
   json.end_object();
   json.key("percepts");
   write_distribution(json, s.percepts);
+  if (r.peer) {
+    json.key("peer");
+    write_peer(json, *r.peer);
+  }
   if (details) {
     json.key("cases").begin_array();
     for (std::size_t k = 0; k < r.cases.size(); ++k) {
@@ -178,6 +269,19 @@ void print_json(const Report& r, bool details, std::ostream& out) {
         json.key("rotation_error_deg").number(o.error->rotation_rad * kRadToDeg);
       }
       json.key("message").string(r.cases[k].message);
+      if (r.peer) {
+        const CaseResult& p = r.peer->cases[k];
+        json.key("peer").begin_object();
+        json.key("status").string(localization::to_string(p.outcome.status));
+        json.key("correct").boolean(p.outcome.correct);
+        json.key("wall_ms").number(p.outcome.wall_ms);
+        if (p.outcome.error) {
+          json.key("position_error_m").number(p.outcome.error->position_m);
+          json.key("heading_error_deg").number(p.outcome.error->heading_rad * kRadToDeg);
+        }
+        json.key("message").string(p.message);
+        json.end_object();
+      }
       json.end_object();
     }
     json.end_array();

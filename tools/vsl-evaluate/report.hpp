@@ -3,10 +3,12 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "evaluation.hpp"
+#include "peer.hpp"
 #include "vsl/scenario/metrics.hpp"
 
 namespace vsl::evaluate {
@@ -24,12 +26,21 @@ struct RunInfo {
   scenario::Thresholds thresholds;
 };
 
+// The peer's results on the same cases (--peer), scored the same way.
+struct PeerReport {
+  std::string name;  // PeerLocalizer::name()
+  PeerOptions options;
+  scenario::Summary summary;
+  std::vector<CaseResult> cases;  // in the order of Report::cases
+};
+
 struct Report {
   RunInfo info;
   scenario::Summary summary;
   std::size_t active_looks = 0;
   std::vector<std::string> names;  // per case, for --details
   std::vector<CaseResult> cases;
+  std::optional<PeerReport> peer;
 };
 
 void print_text(const Report& report, bool details, std::ostream& out);
