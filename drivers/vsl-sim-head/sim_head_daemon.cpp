@@ -102,8 +102,10 @@ void SimHeadDaemon::frame_tick() {
   // Each image its own noise, reproducible from the seed and the frame id.
   const std::uint64_t seed = setup_.config.noise_seed + 2 * static_cast<std::uint64_t>(frame_id_);
   const head::StereoCalibration& calibration = setup_.head.calibration();
+  const Clock::time_point render_start = Clock::now();
   renderer_.render(calibration.left, world_T_ego * ego_T_left, seed, left_);
   renderer_.render(calibration.right, world_T_ego * ego_T_right, seed + 1, right_);
+  report_slow_rendering(Clock::now() - render_start);
 
   vsl::ground_truth_pose_t truth;
   truth.utime = utime;
@@ -121,6 +123,18 @@ void SimHeadDaemon::frame_tick() {
   frame.right = image_message(right_.image, utime);
   frame.head = head_state_message(setup_.head, state, utime);
   daemon_.publish(daemon_.channels().stereo_frame, frame);
+}
+
+void SimHeadDaemon::report_slow_rendering(Clock::duration took) {
+  // The loop is single-threaded: while a pair renders, no joint step, HEAD_STATE or command
+  // runs, and frames slow down (missed ticks are skipped). Say so, but not for every frame.
+  const double took_s = std::chrono::duration<double>(took).count();
+  const double period_s = 1.0 / setup_.config.frame_rate_hz;
+  const Clock::time_point now = Clock::now();
+  if (took_s <= period_s || now < next_slow_warning_) return;
+  next_slow_warning_ = now + std::chrono::seconds(30);
+  daemon_.log().warn("rendering a stereo pair takes ", took_s, " s, more than the frame period of ",
+                     period_s, " s: frames come at most at ", 1.0 / took_s, " Hz");
 }
 
 }  // namespace vsl::sim_head

@@ -30,6 +30,7 @@ class SimHeadDaemon {
   void step_to_now();
   void control_tick();
   void frame_tick();
+  void report_slow_rendering(std::chrono::steady_clock::duration took);
 
   runtime::Daemon& daemon_;
   SimHeadSetup setup_;  // before simulator_, which refers to setup_.head
@@ -37,6 +38,7 @@ class SimHeadDaemon {
   render::Renderer renderer_;
   HeadSimulator simulator_;
   std::chrono::steady_clock::time_point last_step_;
+  std::chrono::steady_clock::time_point next_slow_warning_{};
   std::int64_t frame_id_ = 0;
   std::int64_t malformed_commands_ = 0;
   render::RenderedImage left_;  // reused from frame to frame

@@ -102,9 +102,10 @@ class HeadKinematics {
   std::vector<Eigen::Isometry3d> ego_T_joints(const std::vector<double>& positions_rad) const;
 
   // Joint targets that point both optical axes at `ego_target_m`: each eye pans to the point
-  // (vergence), redundant joints share the motion by gaze_weight and rest at rest_rad otherwise.
-  // Starts from `current` (positions only). Throws std::invalid_argument for a non-finite target
-  // or a bad state.
+  // (vergence), redundant joints share the motion by gaze_weight and rest at rest_rad otherwise,
+  // so the answer does not depend on `current` unless a limit is in the way. The solver starts
+  // from `current` (positions only) and again from the rest posture when that ends at a limit.
+  // Throws std::invalid_argument for a non-finite target or a bad state.
   GazeSolution gaze_joint_targets(const Eigen::Vector3d& ego_target_m,
                                   const JointState& current) const;
 
