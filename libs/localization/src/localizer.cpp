@@ -126,12 +126,13 @@ class HypothesisSet {
         return;
       }
       const auto& associations = h.explanation.associations;
-      covered = std::all_of(seed.percepts.begin(), seed.percepts.end(), [&](int percept) {
-        const auto k = static_cast<std::size_t>(&percept - seed.percepts.data());
-        return std::any_of(associations.begin(), associations.end(), [&](const NodeAssociation& a) {
-          return a.percept == percept && a.node == subgraph.nodes[k];
-        });
-      });
+      covered = true;
+      for (std::size_t k = 0; k < seed.percepts.size() && covered; ++k) {
+        covered =
+            std::any_of(associations.begin(), associations.end(), [&](const NodeAssociation& a) {
+              return a.percept == seed.percepts[k] && a.node == subgraph.nodes[k];
+            });
+      }
     });
     return covered;
   }
@@ -360,9 +361,9 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
               const auto& p = t.percepts;
               return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
             });
-        const bool clear_leader = static_cast<double>(top.explained()) >=
-                                  options.hypotheses.single_seed_explained_fraction *
-                                      static_cast<double>(usable);
+        const bool clear_leader =
+            static_cast<double>(top.explained()) >=
+            options.hypotheses.single_seed_explained_fraction * static_cast<double>(usable);
         const int needed = clear_leader ? std::min(options.hypotheses.confirming_seeds, 1)
                                         : options.hypotheses.confirming_seeds;
         if (confirmed >= needed) break;
