@@ -1,6 +1,7 @@
 // Every YAML file shipped under config/ loads through the loader that the program using it calls
 // (the Cartographer rule: a shipped config that does not load is a bug found here, not on the
 // robot). A new file without a loader below fails the test, so nobody ships one untested.
+// The loop walks config/ only; calib/ (stereo calibrations) has a loop of its own below.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,7 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "sim_head_setup.hpp"
 #include "vsl/config/node.hpp"
+#include "vsl/head/head_kinematics.hpp"
+#include "vsl/head/stereo_calibration.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/world/world_graph.hpp"
 #include "vsl/world/world_io.hpp"
@@ -35,6 +39,17 @@ void load_world_file(const std::string& path) {
   EXPECT_FALSE(world.objects.empty()) << path;
 }
 
+void load_head_file(const std::string& path) {
+  const auto head = vsl::head::HeadKinematics::load(path);  // and the calibration it names
+  EXPECT_FALSE(head.joints().empty()) << path;
+}
+
+// Everything vsl-sim-head loads before it runs: world, head, calibration, initial joints.
+void load_sim_head_config(const std::string& path) {
+  const auto setup = vsl::sim_head::load_sim_head(vsl::config::Node::load_file(path));
+  EXPECT_FALSE(setup.world.objects.empty()) << path;
+}
+
 struct Loader {
   std::string prefix;  // path relative to the repository root, matched as a prefix
   std::function<void(const std::string&)> load;
@@ -48,6 +63,8 @@ const std::vector<Loader>& loaders() {
       {"config/layouts/building",
        [](const std::string& p) { vsl::worldgen::load_building_layout(p); }},
       {"config/localizer.yaml", load_localizer_config},
+      {"config/heads/", load_head_file},
+      {"config/sim_head.yaml", load_sim_head_config},
   };
   return kLoaders;
 }
@@ -75,7 +92,26 @@ TEST(ShippedConfig, EveryFileUnderConfigLoads) {
       ADD_FAILURE() << e.what();
     }
   }
-  EXPECT_GE(loaded, 4u);  // kitchen world, two layouts, localizer config at least
+  EXPECT_GE(loaded, 6u);  // kitchen world, two layouts, localizer, a head, sim_head at least
+}
+
+TEST(ShippedConfig, EveryCalibrationUnderCalibLoads) {
+  std::size_t loaded = 0;
+  for (const auto& entry : fs::recursive_directory_iterator("calib")) {
+    if (!entry.is_regular_file()) continue;
+    const std::string path = entry.path().generic_string();
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".yaml" && ext != ".yml") continue;
+    SCOPED_TRACE(path);
+    try {
+      const vsl::head::StereoCalibration calibration = vsl::head::load_stereo_calibration(path);
+      EXPECT_GT(calibration.baseline_m(), 0.0);
+      ++loaded;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+  EXPECT_GE(loaded, 1u);  // armar3_sim.yaml at least
 }
 
 }  // namespace

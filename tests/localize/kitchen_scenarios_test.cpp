@@ -45,7 +45,11 @@ void expect_targets(const scenario::Summary& s) {
   EXPECT_LT(s.position_error_m.median, 0.02);  // measured 0.9 cm
 }
 
-TEST(LocalizerOnKitchenScenarios, AcceptanceSettingSeed1) { expect_targets(evaluate_kitchen(1, 200)); }
-TEST(LocalizerOnKitchenScenarios, AcceptanceSettingSeed2) { expect_targets(evaluate_kitchen(2, 200)); }
+TEST(LocalizerOnKitchenScenarios, AcceptanceSettingSeed1) {
+  expect_targets(evaluate_kitchen(1, 200));
+}
+TEST(LocalizerOnKitchenScenarios, AcceptanceSettingSeed2) {
+  expect_targets(evaluate_kitchen(2, 200));
+}
 
 }  // namespace

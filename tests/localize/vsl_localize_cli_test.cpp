@@ -16,7 +16,9 @@ using vsl::testing::run_command;
 
 const char* kKitchen = "config/worlds/kitchen.yaml";
 
-std::string temp_path(const std::string& name) { return ::testing::TempDir() + "/" + name; }
+std::string temp_path(const std::string& name) {
+  return ::testing::TempDir() + "/" + name;
+}
 
 Eigen::Isometry3d robot_pose() {
   // Standing in the kitchen, ego origin on the floor, facing the north wall (+y).
@@ -36,7 +38,8 @@ std::string write_view(const std::string& name, std::size_t max_percepts) {
     if (object.type != "door" && object.type != "handle" && object.type != "drawer_front") continue;
     const Eigen::Vector3d ego = world_T_ego.inverse() * object.world_position_m;
     if (ego.x() < 0.5 || ego.norm() > 3.0 || std::abs(std::atan2(ego.y(), ego.x())) > 0.9) continue;
-    if (file.percepts.size() < max_percepts) file.percepts.push_back({object.type, ego, Eigen::Matrix3d::Identity() * 1e-6, 3});
+    if (file.percepts.size() < max_percepts)
+      file.percepts.push_back({object.type, ego, Eigen::Matrix3d::Identity() * 1e-6, 3});
   }
   file.ground_truth_world_T_ego = world_T_ego;
   const std::string path = temp_path(name);
@@ -65,18 +68,19 @@ TEST(VslLocalizeCli, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_EQ(line_count(result.out), 1);
   // Top-level keys in order, each once.
   std::size_t at = 0;
-  for (const char* key : {"{\"status\":\"localized\"", ",\"pose\":{\"position\":[",
-                          ",\"quaternion\":[", "]},\"covariance\":[[", "]],\"hypotheses\":[",
-                          ",\"associations\":[", "],\"timing_ms\":{\"proximity_filter\":",
-                          ",\"orientation_filter\":", ",\"hypothesis_generation\":",
-                          ",\"validation\":", ",\"refinement\":", ",\"total\":"}) {
+  for (const char* key :
+       {"{\"status\":\"localized\"", ",\"pose\":{\"position\":[", ",\"quaternion\":[",
+        "]},\"covariance\":[[", "]],\"hypotheses\":[", ",\"associations\":[",
+        "],\"timing_ms\":{\"proximity_filter\":", ",\"orientation_filter\":",
+        ",\"hypothesis_generation\":", ",\"validation\":", ",\"refinement\":", ",\"total\":"}) {
     const std::size_t found = result.out.find(key, at);
     ASSERT_NE(found, std::string::npos) << key << " in " << result.out;
     at = found;
   }
   std::smatch position;
-  ASSERT_TRUE(std::regex_search(result.out, position,
-                                std::regex("\"pose\":\\{\"position\":\\[([-0-9.e]+),([-0-9.e]+),([-0-9.e]+)\\]")));
+  ASSERT_TRUE(std::regex_search(
+      result.out, position,
+      std::regex("\"pose\":\\{\"position\":\\[([-0-9.e]+),([-0-9.e]+),([-0-9.e]+)\\]")));
   EXPECT_NEAR(std::stod(position[1]), 2.6, 1e-3);
   EXPECT_NEAR(std::stod(position[2]), 2.3, 1e-3);
   EXPECT_NEAR(std::stod(position[3]), 0.0, 1e-3);

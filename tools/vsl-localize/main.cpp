@@ -17,7 +17,8 @@ namespace {
 
 using vsl::localization::LocalizationResult;
 
-constexpr const char* kUsage = R"(usage: vsl-localize --world WORLD.yaml --percepts PERCEPTS.yaml [--config FILE] [--json]
+constexpr const char* kUsage =
+    R"(usage: vsl-localize --world WORLD.yaml --percepts PERCEPTS.yaml [--config FILE] [--json]
 
 Localizes the robot from fused percepts in its ego frame against a world model: proximity and
 orientation filtering of the world graph, hypotheses from restriction spheres, validation, and a
@@ -76,7 +77,8 @@ Eigen::Quaterniond quaternion(const Eigen::Isometry3d& pose) {
 void write_pose(vsl::tools::JsonWriter& json, const Eigen::Isometry3d& pose) {
   const Eigen::Quaterniond q = quaternion(pose);
   json.begin_object();
-  json.key("position").numbers({pose.translation().x(), pose.translation().y(), pose.translation().z()});
+  json.key("position")
+      .numbers({pose.translation().x(), pose.translation().y(), pose.translation().z()});
   json.key("quaternion").numbers({q.w(), q.x(), q.y(), q.z()});
   json.end_object();
 }
@@ -138,9 +140,10 @@ double yaw_deg(const Eigen::Isometry3d& pose) {
 
 void print_pose_line(const char* label, const Eigen::Isometry3d& pose) {
   const Eigen::Quaterniond q = quaternion(pose);
-  std::printf("%s position [%.4f, %.4f, %.4f] m, quaternion [%.6f, %.6f, %.6f, %.6f] (yaw %.2f deg)\n",
-              label, pose.translation().x(), pose.translation().y(), pose.translation().z(), q.w(),
-              q.x(), q.y(), q.z(), yaw_deg(pose));
+  std::printf(
+      "%s position [%.4f, %.4f, %.4f] m, quaternion [%.6f, %.6f, %.6f, %.6f] (yaw %.2f deg)\n",
+      label, pose.translation().x(), pose.translation().y(), pose.translation().z(), q.w(), q.x(),
+      q.y(), q.z(), yaw_deg(pose));
 }
 
 void print_text(const LocalizationResult& result, const vsl::localization::PerceptFile& file) {
@@ -154,7 +157,8 @@ void print_text(const LocalizationResult& result, const vsl::localization::Perce
                 std::sqrt(c(3, 3)) * 180 / M_PI, std::sqrt(c(4, 4)) * 180 / M_PI,
                 std::sqrt(c(5, 5)) * 180 / M_PI);
     std::printf("associations:");
-    for (const auto& a : result.associations) std::printf(" %d->%s", a.percept_index, a.object_id.c_str());
+    for (const auto& a : result.associations)
+      std::printf(" %d->%s", a.percept_index, a.object_id.c_str());
     std::printf("\n");
   }
   std::printf("hypotheses: %zu\n", result.hypotheses.size());
@@ -174,10 +178,11 @@ void print_text(const LocalizationResult& result, const vsl::localization::Perce
     }
   }
   const auto& t = result.timing;
-  std::printf("time (ms): proximity %.3f, orientation %.3f, hypotheses %.3f, validation %.3f, "
-              "refinement %.3f, total %.3f\n",
-              t.proximity_filter_ms, t.orientation_filter_ms, t.hypothesis_generation_ms,
-              t.validation_ms, t.refinement_ms, t.total_ms);
+  std::printf(
+      "time (ms): proximity %.3f, orientation %.3f, hypotheses %.3f, validation %.3f, "
+      "refinement %.3f, total %.3f\n",
+      t.proximity_filter_ms, t.orientation_filter_ms, t.hypothesis_generation_ms, t.validation_ms,
+      t.refinement_ms, t.total_ms);
 }
 
 }  // namespace
@@ -191,7 +196,8 @@ int main(int argc, char** argv) {
           vsl::localization::localizer_options_from(vsl::config::Node::load_file(options.config));
     }
     const vsl::world::WorldModel world = vsl::world::load_world(options.world);
-    const vsl::localization::PerceptFile file = vsl::localization::load_percept_file(options.percepts);
+    const vsl::localization::PerceptFile file =
+        vsl::localization::load_percept_file(options.percepts);
     const vsl::localization::Localizer localizer(world, localizer_options);
     const LocalizationResult result = localizer.localize(file.percepts);
     if (options.json) {

@@ -125,8 +125,8 @@ Document Document::parse(std::string_view text, const std::string& source_name,
       std::string what = "YAML syntax error: ";
       what += parser->problem != nullptr ? parser->problem : "unknown problem";
       if (parser->context != nullptr) what += std::string(" ") + parser->context;
-      throw Error(
-          format_error(source_name, static_cast<int>(parser->problem_mark.line + first_line), "", what));
+      throw Error(format_error(source_name,
+                               static_cast<int>(parser->problem_mark.line + first_line), "", what));
     }
     const yaml_event_t& event = guard.event;
     switch (event.type) {
@@ -141,7 +141,8 @@ Document Document::parse(std::string_view text, const std::string& source_name,
         return doc;
       case YAML_DOCUMENT_START_EVENT:
         if (document_done) {
-          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + first_line), "",
+          throw Error(format_error(source_name,
+                                   static_cast<int>(event.start_mark.line + first_line), "",
                                    "only one YAML document per file is supported"));
         }
         break;
@@ -163,7 +164,8 @@ Document Document::parse(std::string_view text, const std::string& source_name,
       case YAML_ALIAS_EVENT: {
         const auto found = anchors.find(reinterpret_cast<const char*>(event.data.alias.anchor));
         if (found == anchors.end()) {
-          throw Error(format_error(source_name, static_cast<int>(event.start_mark.line + first_line), "",
+          throw Error(format_error(source_name,
+                                   static_cast<int>(event.start_mark.line + first_line), "",
                                    "unknown alias"));
         }
         attach(found->second, true);

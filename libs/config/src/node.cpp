@@ -7,15 +7,27 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 #include <sstream>
+#include <thread>
 
 namespace vsl::config {
+namespace {
+
+// prefix + text + suffix, appended piecewise: GCC 12 warns falsely (-Wrestrict, GCC bug 105651) on
+// `"literal" + std::string` once inlined at -O2.
+std::string enclosed(std::string_view prefix, std::string_view text, std::string_view suffix = {}) {
+  std::string out;
+  out.reserve(prefix.size() + text.size() + suffix.size());
+  out.append(prefix).append(text).append(suffix);
+  return out;
+}
+
+}  // namespace
 
 std::string format_error(const std::string& source, int line, const std::string& path,
                          const std::string& what) {
   std::string out = source;
-  if (line > 0) out += ":" + std::to_string(line);
+  if (line > 0) out += enclosed(":", std::to_string(line));
   if (!out.empty()) out += ": ";
   if (!path.empty()) out += path + ": ";
   out += what;
@@ -89,7 +101,9 @@ std::vector<Piece> split_documents(std::string_view text) {
 
 }  // namespace
 
-Node Node::load_file(const std::string& path) { return load_string(read_file(path), path); }
+Node Node::load_file(const std::string& path) {
+  return load_string(read_file(path), path);
+}
 
 std::vector<Node> Node::load_file_documents(const std::string& path, unsigned threads) {
   return load_string_documents(read_file(path), path, threads);
@@ -152,9 +166,9 @@ std::string Node::path() const {
     const Document::Entry& entry = document_->entries[index];
     const Document::Entry& parent = document_->entries[entry.parent];
     if (parent.kind == Kind::kMap) {
-      parts.push_back("." + std::string(document_->scalar(entry.slot)));
+      parts.push_back(enclosed(".", document_->scalar(entry.slot)));
     } else {
-      parts.push_back("[" + std::to_string(entry.slot) + "]");
+      parts.push_back(enclosed("[", std::to_string(entry.slot), "]"));
     }
     index = entry.parent;
   }
@@ -195,7 +209,7 @@ std::string Node::describe_kind() const {
     case Kind::kScalar:
       break;
   }
-  return "'" + std::string(scalar()) + "'";
+  return enclosed("'", scalar(), "'");
 }
 
 void Node::expect_map() const {

@@ -108,8 +108,9 @@ TEST(ConfigNode, DocumentStreamsKeepFileLines) {
   EXPECT_EQ(one[0].at("a").as_string(), "---x\n");
   EXPECT_TRUE(Node::load_string_documents("", "e.yaml")[0].is_null());
   // The first error in file order is reported, whatever thread parsed it.
-  EXPECT_EQ(error_of([] { Node::load_string_documents("a: [\n---\nb: [\n", "x.yaml", 2); })
-                .rfind("x.yaml:2: YAML syntax error", 0),
+  EXPECT_EQ(error_of([] {
+              Node::load_string_documents("a: [\n---\nb: [\n", "x.yaml", 2);
+            }).rfind("x.yaml:2: YAML syntax error", 0),
             0u);
 }
 

@@ -26,7 +26,8 @@ PerceptNoiseOptions percept_noise(const Node& section) {
     const auto c = camera->as_array<3>();
     out.ego_camera_position_m = {c[0], c[1], c[2]};
   }
-  if (const auto floor = section.find("min_sigma_m")) out.min_sigma_m = floor->as_double_in(1e-6, 1.0);
+  if (const auto floor = section.find("min_sigma_m"))
+    out.min_sigma_m = floor->as_double_in(1e-6, 1.0);
   return out;
 }
 
@@ -38,7 +39,8 @@ PruningOptions pruning(const Node& section) {
   if (const auto v = section.find("tau_sigmas")) out.tau_sigmas = v->as_double_in(0.5, 20.0);
   if (const auto v = section.find("min_tau_m")) out.min_tau_m = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("mu_max_m")) out.mu_max_m = v->as_double_in(0.001, 2.0);
-  if (const auto v = section.find("kappa_max_rad")) out.kappa_max_rad = v->as_double_in(0.001, 3.1416);
+  if (const auto v = section.find("kappa_max_rad"))
+    out.kappa_max_rad = v->as_double_in(0.001, 3.1416);
   if (const auto v = section.find("max_unsupported_fraction")) {
     out.max_unsupported_fraction = v->as_double_in(0.0, 0.9);
   }
@@ -60,8 +62,10 @@ HypothesisOptions hypotheses(const Node& section) {
   if (const auto v = section.find("min_associations")) {
     out.min_associations = int_in(*v, 3, 50);
   }
-  if (const auto v = section.find("same_position_m")) out.same_position_m = v->as_double_in(1e-4, 1.0);
-  if (const auto v = section.find("same_angle_rad")) out.same_angle_rad = v->as_double_in(1e-4, 1.0);
+  if (const auto v = section.find("same_position_m"))
+    out.same_position_m = v->as_double_in(1e-4, 1.0);
+  if (const auto v = section.find("same_angle_rad"))
+    out.same_angle_rad = v->as_double_in(1e-4, 1.0);
   if (const auto v = section.find("max_interpretations")) {
     out.max_interpretations = int_in(*v, 1, 10000000);
   }
@@ -79,14 +83,16 @@ ValidationOptions validation(const Node& section) {
                        "min_explained_fraction", "precision_sigmas", "required_position_m",
                        "required_angle_rad"});
   if (const auto v = section.find("gate_sigmas")) out.gate_sigmas = v->as_double_in(0.5, 20.0);
-  if (const auto v = section.find("ambiguity_margin")) out.ambiguity_margin = v->as_double_in(0.0, 100.0);
+  if (const auto v = section.find("ambiguity_margin"))
+    out.ambiguity_margin = v->as_double_in(0.0, 100.0);
   if (const auto v = section.find("min_explained_fraction")) {
     out.min_explained_fraction = v->as_double_in(0.0, 1.0);
   }
   if (const auto v = section.find("clutter_density_per_m3")) {
     out.clutter_density_per_m3 = v->as_double_in(1e-9, 1e6);
   }
-  if (const auto v = section.find("precision_sigmas")) out.precision_sigmas = v->as_double_in(0.0, 20.0);
+  if (const auto v = section.find("precision_sigmas"))
+    out.precision_sigmas = v->as_double_in(0.0, 20.0);
   if (const auto v = section.find("required_position_m")) {
     out.required_position_m = v->as_double_in(1e-4, 100.0);
   }

@@ -56,13 +56,16 @@ PerceptFile from(const Node& root) {
   PerceptFile file;
   const Node list = root.at("percepts");
   for (std::size_t i = 0; i < list.size(); ++i) file.percepts.push_back(percept(list[i]));
-  if (const auto truth = root.find("ground_truth")) file.ground_truth_world_T_ego = ground_truth(*truth);
+  if (const auto truth = root.find("ground_truth"))
+    file.ground_truth_world_T_ego = ground_truth(*truth);
   return file;
 }
 
 }  // namespace
 
-PerceptFile load_percept_file(const std::string& path) { return from(Node::load_file(path)); }
+PerceptFile load_percept_file(const std::string& path) {
+  return from(Node::load_file(path));
+}
 
 PerceptFile load_percept_file_from_string(const std::string& text, const std::string& source) {
   return from(Node::load_string(text, source));

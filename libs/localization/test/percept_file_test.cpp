@@ -23,7 +23,8 @@ TEST(PerceptFile, ReadsPerceptsAndGroundTruth) {
       "  - {type: door, position: [1.5, 0.2, 0.4]}\n"
       "  - {type: handle, position: [1.4, -0.1, 0.9], support: 5,\n"
       "     covariance: [0.0004, 0, 0, 0, 0.0004, 0, 0, 0, 0.0009]}\n"
-      "ground_truth: {position: [2, 1, 0], quaternion: [0.7071067811865476, 0, 0, 0.7071067811865476]}\n",
+      "ground_truth: {position: [2, 1, 0], quaternion: [0.7071067811865476, 0, 0, "
+      "0.7071067811865476]}\n",
       "p.yaml");
   ASSERT_EQ(file.percepts.size(), 2u);
   EXPECT_EQ(file.percepts[0].type, "door");
@@ -53,7 +54,8 @@ TEST(PerceptFile, RoundTrips) {
   EXPECT_TRUE(back.percepts[0].ego_covariance_m2->isApprox(*a.ego_covariance_m2, 1e-9));
   EXPECT_EQ(back.percepts[0].support, 3);
   EXPECT_TRUE(back.ground_truth_world_T_ego->isApprox(truth, 1e-8));
-  const PerceptFile empty = load_percept_file_from_string(percept_file_text(PerceptFile{}), "e.yaml");
+  const PerceptFile empty =
+      load_percept_file_from_string(percept_file_text(PerceptFile{}), "e.yaml");
   EXPECT_TRUE(empty.percepts.empty());
 }
 
@@ -62,18 +64,23 @@ TEST(PerceptFile, ErrorsAreOneLineWithFileLineKey) {
             "p.yaml:2: percepts[0].position: expected 3 numbers, got 2");
   EXPECT_EQ(error_of("percepts:\n  - {position: [1, 2, 3]}\n"),
             "p.yaml:2: percepts[0].type: missing required key");
-  EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], colour: red}\n"),
-            "p.yaml:2: percepts[0].colour: unknown key (allowed: type, position, covariance, support)");
-  EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], covariance: [1, 0, 0, 0, -1, 0, 0, 0, 1]}\n"),
+  EXPECT_EQ(
+      error_of("percepts:\n  - {type: door, position: [1, 2, 3], colour: red}\n"),
+      "p.yaml:2: percepts[0].colour: unknown key (allowed: type, position, covariance, support)");
+  EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], covariance: [1, 0, 0, 0, "
+                     "-1, 0, 0, 0, 1]}\n"),
             "p.yaml:2: percepts[0].covariance: must be positive definite");
-  EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], covariance: [1, 0.5, 0, 0, 1, 0, 0, 0, 1]}\n"),
+  EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], covariance: [1, 0.5, 0, 0, "
+                     "1, 0, 0, 0, 1]}\n"),
             "p.yaml:2: percepts[0].covariance: must be symmetric");
   EXPECT_EQ(error_of("percepts:\n  - {type: door, position: [1, 2, 3], support: 0}\n"),
             "p.yaml:2: percepts[0].support: must be a frame count >= 1");
   EXPECT_EQ(error_of("percept:\n  - {type: door, position: [1, 2, 3]}\n"),
             "p.yaml:1: percept: unknown key (allowed: percepts, ground_truth)");
-  EXPECT_EQ(error_of("percepts: []\nground_truth: {position: [0, 0, 0], quaternion: [2, 0, 0, 0]}\n"),
-            "p.yaml:2: ground_truth.quaternion: must be a unit quaternion [w, x, y, z], norm is 2.000000");
+  EXPECT_EQ(
+      error_of("percepts: []\nground_truth: {position: [0, 0, 0], quaternion: [2, 0, 0, 0]}\n"),
+      "p.yaml:2: ground_truth.quaternion: must be a unit quaternion [w, x, y, z], norm is "
+      "2.000000");
 }
 
 }  // namespace

@@ -123,7 +123,8 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
         for (std::int64_t dy = -1; dy <= 1; ++dy) {
           for (std::int64_t dz = -1; dz <= 1; ++dz) {
             const std::uint64_t key = cell_key(c.x + dx, c.y + dy, c.z + dz);
-            if (std::find(keys.begin(), keys.begin() + key_count, key) == keys.begin() + key_count) {
+            if (std::find(keys.begin(), keys.begin() + key_count, key) ==
+                keys.begin() + key_count) {
               keys[key_count++] = key;
             }
           }
@@ -150,8 +151,9 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
   // Node ranges searched on separate threads, concatenated in range order: the result does not
   // depend on the number of threads.
   const std::size_t threads = std::max<std::size_t>(
-      1, std::min<std::size_t>(options.threads ? options.threads : std::thread::hardware_concurrency(),
-                               n / 1024 + 1));
+      1,
+      std::min<std::size_t>(options.threads ? options.threads : std::thread::hardware_concurrency(),
+                            n / 1024 + 1));
   std::vector<std::vector<Pair>> chunk_pairs(threads);
   {
     std::vector<std::jthread> workers;

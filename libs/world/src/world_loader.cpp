@@ -11,8 +11,8 @@
 namespace vsl::world {
 namespace {
 
-using config::Node;
 using config::as_vector3;
+using config::Node;
 
 Eigen::Vector3d positive_vector3(const Node& node) {
   const Eigen::Vector3d v = as_vector3(node);
@@ -62,7 +62,8 @@ Polyhedron polyhedron(const Node& node) {
   node.expect_keys({"vertices", "faces"});
   Polyhedron out;
   const Node vertices = node.at("vertices");
-  for (std::size_t i = 0; i < vertices.size(); ++i) out.vertices_m.push_back(as_vector3(vertices[i]));
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    out.vertices_m.push_back(as_vector3(vertices[i]));
   if (out.vertices_m.size() < 4) vertices.fail("a polyhedron needs at least 4 vertices");
   const Node faces = node.at("faces");
   if (faces.size() < 4) faces.fail("a polyhedron needs at least 4 faces");

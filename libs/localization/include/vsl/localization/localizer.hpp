@@ -121,10 +121,10 @@ LocalizerOptions localizer_options_from(const config::Node& root);
 
 // What to look at next to tell the remaining hypotheses apart (paper §2.4.2, active validation).
 struct ActiveValidationTarget {
-  std::string object_id;              // the discriminating model object
-  std::size_t hypothesis_index = 0;   // the hypothesis under which it is predicted there
-  Eigen::Vector3d ego_target_m;       // where to point the head, ego frame
-  double discrimination_m = 0.0;      // how far apart the hypotheses predict it (larger: better)
+  std::string object_id;             // the discriminating model object
+  std::size_t hypothesis_index = 0;  // the hypothesis under which it is predicted there
+  Eigen::Vector3d ego_target_m;      // where to point the head, ego frame
+  double discrimination_m = 0.0;     // how far apart the hypotheses predict it (larger: better)
 };
 
 class Localizer {

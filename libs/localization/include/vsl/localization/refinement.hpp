@@ -41,7 +41,7 @@ struct RefinementOptions {
 struct RefinedPose {
   Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();
   PoseCovariance covariance = PoseCovariance::Zero();
-  double final_cost = 0.0;        // half the sum of squared (robustified) Mahalanobis residuals
+  double final_cost = 0.0;  // half the sum of squared (robustified) Mahalanobis residuals
   bool converged = false;
   bool covariance_valid = false;  // false when Ceres could not invert the information matrix
 };

@@ -15,10 +15,10 @@ namespace vsl::localization {
 // A fused percept O_i^pf (paper §2.1.1): a recognized object of one type at a point of the ego
 // frame, fused over the scanning strategy.
 struct FusedPercept {
-  std::string type;                       // "door", "handle", ...
-  Eigen::Vector3d ego_position_m;         // X_i^f
+  std::string type;                                  // "door", "handle", ...
+  Eigen::Vector3d ego_position_m;                    // X_i^f
   std::optional<Eigen::Matrix3d> ego_covariance_m2;  // when the recognizer provides one
-  int support = 1;                        // frames it was seen in (C of Eq. 4)
+  int support = 1;                                   // frames it was seen in (C of Eq. 4)
 };
 
 // An association <O_i^pf, O_j^m>: percept index -> world-model object (its index in
@@ -59,10 +59,10 @@ struct LocalizationResult {
   Status status = Status::kFailed;
   Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();  // the best hypothesis, refined
   PoseCovariance covariance = PoseCovariance::Zero();
-  std::vector<Hypothesis> hypotheses;       // ranked, best first
-  std::vector<Association> associations;    // of the reported pose
+  std::vector<Hypothesis> hypotheses;     // ranked, best first
+  std::vector<Association> associations;  // of the reported pose
   StageTimes timing;
-  std::string message;                      // why, for failed/ambiguous
+  std::string message;  // why, for failed/ambiguous
 };
 
 }  // namespace vsl::localization
