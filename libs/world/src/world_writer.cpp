@@ -2,6 +2,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <ostream>
 
 #include "vsl/config/node.hpp"
@@ -28,9 +29,20 @@ std::string number(double value, int decimals) {
 constexpr int kMetre = 6;     // decimals: 1 um
 constexpr int kUnitless = 9;  // decimals: 1 nrad
 
+// "[a, b, ...]", appended piecewise: GCC 12 warns falsely (-Wrestrict, GCC bug 105651) on
+// `"[" + std::string` once inlined at -O2.
+std::string flow_list(std::initializer_list<std::string> items) {
+  std::string out = "[";
+  for (const std::string& item : items) {
+    if (out.size() > 1) out += ", ";
+    out += item;
+  }
+  out += ']';
+  return out;
+}
+
 std::string vector3(const Eigen::Vector3d& v) {
-  return "[" + number(v.x(), kMetre) + ", " + number(v.y(), kMetre) + ", " + number(v.z(), kMetre) +
-         "]";
+  return flow_list({number(v.x(), kMetre), number(v.y(), kMetre), number(v.z(), kMetre)});
 }
 
 bool plain_safe(const std::string& text) {
@@ -88,8 +100,8 @@ std::string orientation_value(const Eigen::Quaterniond& q_in, std::string* key) 
     return number(yaw, kUnitless);
   }
   *key = "orientation";
-  return "[" + number(q.w(), kUnitless) + ", " + number(q.x(), kUnitless) + ", " +
-         number(q.y(), kUnitless) + ", " + number(q.z(), kUnitless) + "]";
+  return flow_list({number(q.w(), kUnitless), number(q.x(), kUnitless), number(q.y(), kUnitless),
+                    number(q.z(), kUnitless)});
 }
 
 std::string shape(const Shape& s) {
