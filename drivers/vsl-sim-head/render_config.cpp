@@ -35,7 +35,7 @@ render::RenderOptions render_options_from(const config::Node& section) {
   section.expect_map();
   section.expect_keys({"ambient", "diffuse", "world_light_direction", "noise_sigma_grey",
                        "exposure_variation", "apply_distortion", "background", "near_clip_m",
-                       "far_clip_m", "cylinder_segments"});
+                       "far_clip_m", "cylinder_segments", "samples"});
   if (const auto v = section.find("ambient")) out.ambient = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("diffuse")) out.diffuse = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("world_light_direction")) {
@@ -59,6 +59,11 @@ render::RenderOptions render_options_from(const config::Node& section) {
     const std::int64_t n = v->as_int();
     if (n < 3 || n > 1024) v->fail("must be an integer in [3, 1024], got " + std::to_string(n));
     out.cylinder_segments = static_cast<int>(n);
+  }
+  if (const auto v = section.find("samples")) {
+    const std::int64_t n = v->as_int();
+    if (n < 1 || n > 4) v->fail("must be an integer in [1, 4], got " + std::to_string(n));
+    out.samples = static_cast<int>(n);
   }
   return out;
 }

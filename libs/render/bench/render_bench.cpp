@@ -114,6 +114,14 @@ void BM_KitchenStereoPairDistorted(benchmark::State& state) {
 }
 BENCHMARK(BM_KitchenStereoPairDistorted)->Unit(benchmark::kMillisecond);
 
+// Area sampling with 2x2 samples per pixel, as config/sim_head.yaml renders.
+void BM_KitchenStereoPairAreaSampled(benchmark::State& state) {
+  vsl::render::RenderOptions options;
+  options.samples = 2;
+  render_pairs(state, options, typical_view(), {}, false);
+}
+BENCHMARK(BM_KitchenStereoPairAreaSampled)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -37,12 +37,65 @@ const RenderOptions& checked(const RenderOptions& options) {
   if (options.cylinder_segments < 3) {
     throw std::invalid_argument("render: cylinder_segments must be at least 3");
   }
+  if (options.samples < 1 || options.samples > 4) {
+    throw std::invalid_argument("render: samples must be in [1, 4]");
+  }
   return options;
 }
 
 RasterTarget target_of(cv::Mat& inverse_depth, cv::Mat& triangle) {
   return {inverse_depth.cols, inverse_depth.rows, inverse_depth.ptr<float>(),
           triangle.ptr<std::int32_t>()};
+}
+
+// The pinhole of a sensor with `samples` times the resolution. Pixel centres are at integers:
+// coarse pixel u covers [u - 0.5, u + 0.5], fine pixel f covers coarse [(f - 0.5 + 0.5) / s - 0.5,
+// ...], so u = (f + 0.5) / s - 0.5 and f = s (u + 0.5) - 0.5: fx_f = s fx, cx_f = s (cx + 0.5) -
+// 0.5.
+Pinhole finer(const Pinhole& coarse, int samples) {
+  const double s = samples;
+  return {
+      coarse.width_px * samples, coarse.height_px * samples,     coarse.fx_px * s,
+      coarse.fy_px * s,          s * (coarse.cx_px + 0.5) - 0.5, s * (coarse.cy_px + 0.5) - 0.5};
+}
+
+// Draws `camera` into `image` (CV_8UC3) and the raster buffers `inverse_depth` (CV_32F) and
+// `triangle` (CV_32S) of its size. Point-sampled when samples is 1 (the buffers are drawn into
+// directly); otherwise drawn at samples x the resolution, the image box-averaged down
+// (cv::INTER_AREA on an integer factor is the exact mean of the samples) and the buffers taken
+// from the sample at fine (s u + s / 2, s v + s / 2), the one nearest the pixel centre.
+void rasterize_sampled(const Scene& scene, const Pinhole& camera,
+                       const Eigen::Isometry3d& world_T_camera, const RenderOptions& options,
+                       const Palette& palette, cv::Mat& image, cv::Mat& inverse_depth,
+                       cv::Mat& triangle) {
+  inverse_depth.create(camera.height_px, camera.width_px, CV_32F);
+  triangle.create(camera.height_px, camera.width_px, CV_32S);
+  if (options.samples == 1) {
+    const RasterTarget target = target_of(inverse_depth, triangle);
+    rasterize(scene, camera, world_T_camera, options.near_clip_m, options.far_clip_m, target);
+    resolve_image(target, palette, image);
+    return;
+  }
+  const int s = options.samples;
+  const Pinhole fine = finer(camera, s);
+  cv::Mat fine_inverse_depth(fine.height_px, fine.width_px, CV_32F);
+  cv::Mat fine_triangle(fine.height_px, fine.width_px, CV_32S);
+  const RasterTarget fine_target = target_of(fine_inverse_depth, fine_triangle);
+  rasterize(scene, fine, world_T_camera, options.near_clip_m, options.far_clip_m, fine_target);
+  cv::Mat fine_image;
+  resolve_image(fine_target, palette, fine_image);
+  cv::resize(fine_image, image, cv::Size(camera.width_px, camera.height_px), 0.0, 0.0,
+             cv::INTER_AREA);
+  for (int v = 0; v < camera.height_px; ++v) {
+    const float* fine_depth_row = fine_inverse_depth.ptr<float>(s * v + s / 2);
+    const std::int32_t* fine_triangle_row = fine_triangle.ptr<std::int32_t>(s * v + s / 2);
+    float* depth_row = inverse_depth.ptr<float>(v);
+    std::int32_t* triangle_row = triangle.ptr<std::int32_t>(v);
+    for (int u = 0; u < camera.width_px; ++u) {
+      depth_row[u] = fine_depth_row[s * u + s / 2];
+      triangle_row[u] = fine_triangle_row[s * u + s / 2];
+    }
+  }
 }
 
 }  // namespace
@@ -78,27 +131,24 @@ void Renderer::render(const head::CameraIntrinsics& intrinsics,
   for (cv::Mat* mat : {&out.image, &out.depth_m, &out.object_ids}) {
     if (mat->u != nullptr && mat->u->refcount > 1) mat->release();
   }
-  out.depth_m.create(intrinsics.height_px, intrinsics.width_px, CV_32F);
-  out.object_ids.create(intrinsics.height_px, intrinsics.width_px, CV_32S);
   if (!options_.apply_distortion || !has_distortion(intrinsics)) {
-    // The output buffers are the raster target: no frame-sized scratch memory at all.
     const Pinhole camera{intrinsics.width_px, intrinsics.height_px, intrinsics.fx_px,
                          intrinsics.fy_px,    intrinsics.cx_px,     intrinsics.cy_px};
-    const RasterTarget target = target_of(out.depth_m, out.object_ids);
-    rasterize(*scene_, camera, world_T_camera, options_.near_clip_m, options_.far_clip_m, target);
-    resolve_image(target, palette, out.image);
-    resolve_depth_and_ids_in_place(*scene_, target);
+    // The output buffers hold the raster buffers first and are resolved in place.
+    rasterize_sampled(*scene_, camera, world_T_camera, options_, palette, out.image, out.depth_m,
+                      out.object_ids);
+    resolve_depth_and_ids_in_place(*scene_, target_of(out.depth_m, out.object_ids));
   } else {
     // Render the ideal pinhole view (larger, where the lens sees beyond it), then move every
     // output pixel to where the lens puts it: bilinear for the image, nearest for depth and ids.
     const std::shared_ptr<const DistortionMap> distortion = distortion_cache_->get(intrinsics);
     const Pinhole& ideal = distortion->ideal;
-    cv::Mat ideal_inverse_depth(ideal.height_px, ideal.width_px, CV_32F);
-    cv::Mat ideal_triangle(ideal.height_px, ideal.width_px, CV_32S);
+    cv::Mat ideal_image, ideal_inverse_depth, ideal_triangle;
+    rasterize_sampled(*scene_, ideal, world_T_camera, options_, palette, ideal_image,
+                      ideal_inverse_depth, ideal_triangle);
     const RasterTarget target = target_of(ideal_inverse_depth, ideal_triangle);
-    rasterize(*scene_, ideal, world_T_camera, options_.near_clip_m, options_.far_clip_m, target);
-    cv::Mat ideal_image;
-    resolve_image(target, palette, ideal_image);
+    out.depth_m.create(intrinsics.height_px, intrinsics.width_px, CV_32F);
+    out.object_ids.create(intrinsics.height_px, intrinsics.width_px, CV_32S);
     const cv::Vec3b& bg = palette.background_bgr;
     cv::remap(ideal_image, out.image, distortion->remap_xy, distortion->remap_fraction,
               cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(bg[0], bg[1], bg[2]));

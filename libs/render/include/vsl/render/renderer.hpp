@@ -36,6 +36,11 @@ struct RenderOptions {
   double near_clip_m = 0.05;   // nothing closer than this along the optical axis is drawn
   double far_clip_m = 100.0;   // nor farther
   int cylinder_segments = 24;  // facets around a cylinder's axis (used at construction)
+  // Area sampling: each pixel is the mean of samples x samples point samples, as a real sensor
+  // integrates light over the pixel's area. 1 (point sampling) is fastest; 2 makes a 4 mm gap
+  // between two doors visible as a blended line up to about 4 m instead of vanishing in most
+  // rows. Depth and ids are those of the sample nearest the pixel centre. Costs about samples^2.
+  int samples = 1;
 };
 
 struct RenderedImage {
