@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "recognition_setup.hpp"
 #include "sim_head_setup.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/head/head_kinematics.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/localization/localizer.hpp"
+#include "vsl/recognition/recognizer_factory.hpp"
 #include "vsl/world/world_graph.hpp"
 #include "vsl/world/world_io.hpp"
 #include "vsl/worldgen/building.hpp"
@@ -50,6 +52,18 @@ void load_sim_head_config(const std::string& path) {
   EXPECT_FALSE(setup.world.objects.empty()) << path;
 }
 
+// Everything vsl-recognition loads before it runs: head, calibration, every class model.
+void load_recognition_config(const std::string& path) {
+  const auto setup = vsl::recognition_daemon::load_recognition(vsl::config::Node::load_file(path));
+  EXPECT_FALSE(setup.config.model_paths.empty()) << path;
+}
+
+// A class model file as the recognition pipeline loads it.
+void load_recognizer_file(const std::string& path) {
+  const auto recognizer = vsl::recognition::load_recognizer(path);
+  EXPECT_FALSE(recognizer->type().empty()) << path;
+}
+
 struct Loader {
   std::string prefix;  // path relative to the repository root, matched as a prefix
   std::function<void(const std::string&)> load;
@@ -65,6 +79,8 @@ const std::vector<Loader>& loaders() {
       {"config/localizer.yaml", load_localizer_config},
       {"config/heads/", load_head_file},
       {"config/sim_head.yaml", load_sim_head_config},
+      {"config/recognition.yaml", load_recognition_config},
+      {"config/recognition/", load_recognizer_file},
   };
   return kLoaders;
 }

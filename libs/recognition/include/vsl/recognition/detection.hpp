@@ -1,0 +1,26 @@
+// What a class-specific recognizer reports for one blob of one raw camera image.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace vsl::recognition {
+
+struct Detection {
+  std::string type;     // object type as in the world model: "door", "handle", ...
+  int blob_index = -1;  // index into the blobs of the image it was found in
+  // The object's reference point in the raw image, pixels (u, v): the blob centroid X_c.
+  Eigen::Vector2d reference_px = Eigen::Vector2d::Zero();
+  // Blob geometry the stereo cross match compares (size, orientation), pixels and radians.
+  double area_px = 0.0;
+  double major_axis_angle_rad = 0.0;  // angle of the major axis from the +u axis, in [0, pi)
+  double major_extent_px = 0.0;       // length of the blob along its major axis
+  double minor_extent_px = 0.0;       // and along its minor axis
+  // Squared Mahalanobis distance of the blob's descriptor to the class model (unitless), and
+  // the confidence derived from it: the chi-square survival probability, 0 .. 1.
+  double mahalanobis2 = 0.0;
+  float confidence = 0.0f;
+};
+
+}  // namespace vsl::recognition

@@ -1,0 +1,54 @@
+// Door recognizer (paper §2.1): the descriptor V_d of each blob (Eq. 2, with the two components
+// descriptors.hpp adds) classified by a Gaussian class model.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "vsl/recognition/class_model.hpp"
+#include "vsl/recognition/class_recognizer.hpp"
+
+namespace vsl::config {
+class Node;
+}
+
+namespace vsl::recognition {
+
+struct DoorRecognizerParameters {
+  // Q_d, the door panels' ideal colour (RGB in [0, 1]; the kitchen's "door" material #2f5f8f).
+  Eigen::Vector3d ideal_colour_rgb{0x2f / 255.0, 0x5f / 255.0, 0x8f / 255.0};
+  // Smaller blobs are not judged: at 4 m a 0.3 x 0.7 m door seen at 60 deg is about 20 x 95 px.
+  int min_blob_px = 300;
+  // Blobs with a pixel closer than this to the image border are cut off by it: their shape (and
+  // centroid, the reference point) is not the door's. 0 disables the check.
+  int min_border_distance_px = 1;
+};
+
+// Reads / writes the `parameters:` section of a door model file (every key optional, defaults
+// above; unknown keys and out-of-range values are config::Error "file:line: key: what").
+DoorRecognizerParameters door_parameters_from(const config::Node& section);
+void write_door_parameters(std::ostream& out, const DoorRecognizerParameters& parameters,
+                           const std::string& indent);
+
+class DoorRecognizer final : public ClassRecognizer {
+ public:
+  // The model must have the door descriptor's components (door_descriptor_names()); throws
+  // std::invalid_argument otherwise.
+  DoorRecognizer(GaussianClassModel model, DoorRecognizerParameters parameters);
+
+  const std::string& type() const override { return model_.type(); }
+  void recognize(const cv::Mat& bgr_image, const std::vector<Blob>& blobs,
+                 std::vector<Detection>& out) const override;
+
+  const GaussianClassModel& model() const { return model_; }
+  const DoorRecognizerParameters& parameters() const { return parameters_; }
+
+ private:
+  GaussianClassModel model_;
+  DoorRecognizerParameters parameters_;
+};
+
+}  // namespace vsl::recognition

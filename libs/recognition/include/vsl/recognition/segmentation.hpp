@@ -1,0 +1,65 @@
+// Colour segmentation into blobs (paper §2.1, Fig. 2-a): region growing whose
+// admission criteria bound the region's size (S_i < S_max) and the volume of
+// the colour ellipsoid spanned by K_mean, K_min and K_max (V_i < V_max), then
+// mean-shift clustering of the regions' 5-D features F_i = [X_c, K_mean] (Eq.
+// 1): regions close in the image and in colour merge into one blob.
+#pragma once
+
+#include <vector>
+
+#include "vsl/recognition/blob.hpp"
+
+namespace vsl::config {
+class Node;
+}
+
+namespace vsl::recognition {
+
+struct SegmentationOptions {
+  // Region growing. A pixel joins a region when its colour is within
+  // max_neighbour_difference_rgb of the neighbour it is reached from (max over
+  // channels, colours in [0, 1]) and their brightnesses (mean of R, G, B), each
+  // averaged over 2 edge_half_length_px
+  // + 1 pixels along the edge between them, within max_edge_brightness_step_rgb
+  // (a sub-pixel gap between two flush doors is a faint line that only the
+  // average lifts above the noise), and the region's colour ellipsoid volume
+  // stays below max_colour_volume_rgb3 (V_max) and its size at most
+  // max_region_px (S_max).
+  double max_neighbour_difference_rgb = 0.06;
+  int edge_half_length_px = 4;
+  double max_edge_brightness_step_rgb = 0.005;
+  double max_colour_volume_rgb3 = 1e-3;
+  int max_region_px = 20000;
+  // Regions smaller than this are dropped before clustering (noise, edges).
+  int min_region_px = 6;
+  // Mean shift over F_i = [X_c / spatial_bandwidth_px, K_mean /
+  // colour_bandwidth_rgb].
+  double spatial_bandwidth_px = 40.0;
+  double colour_bandwidth_rgb = 0.08;
+  int max_mean_shift_iterations = 20;
+  // Regions touching where S_max or V_max (not an edge) stopped the growing
+  // form one blob when their modes are closer than this (in bandwidths).
+  double max_mode_distance = 0.5;
+  // Touching regions (also across an edge) form one blob when their mode
+  // colours have the same chromaticity (RGB / (R + G + B)) within this,
+  // whatever their brightness: the Lambert-shaded facets of a handle bar. 0
+  // turns this off.
+  double max_chromaticity_difference = 0.03;
+  // ... the latter only between regions of at most max_facet_px pixels each:
+  // the shaded gap line between two doors has their chromaticity too, and must
+  // not join them.
+  int max_facet_px = 1000;
+  // Blobs smaller than this are not reported.
+  int min_blob_px = 12;
+};
+
+// Reads the `segmentation:` section (every key optional, defaults above;
+// unknown keys, non-finite or out-of-range values are errors:
+// vsl::config::Error "file:line: key: what").
+SegmentationOptions segmentation_options_from(const config::Node& section);
+
+// Segments one raw image (CV_8UC3, BGR) into blobs. Const inputs, no shared
+// state: thread-safe.
+std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& options);
+
+}  // namespace vsl::recognition

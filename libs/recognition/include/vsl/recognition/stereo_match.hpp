@@ -1,0 +1,86 @@
+// Left-right cross match of detections (paper §2.1: size, position, orientation, perpendicular
+// distance to the epipolar line and the disparity range), triangulation with a 3x3 covariance
+// from the pixel noise, in the left camera frame (x right, y down, z forward, metres).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vsl/head/camera_intrinsics.hpp"
+#include "vsl/recognition/detection.hpp"
+
+namespace vsl::config {
+class Node;
+}
+
+namespace vsl::recognition {
+
+struct StereoMatchOptions {
+  double max_epipolar_distance_px = 3.0;  // of the right point from the left point's epipolar line
+  double min_depth_m = 0.3;               // disparity range, as depths along the left optical axis
+  double max_depth_m = 6.0;
+  double max_area_ratio = 1.6;                   // larger / smaller blob area
+  double max_orientation_difference_rad = 0.35;  // of the major axes (elongated blobs only)
+  // A blob is elongated (its orientation is compared) when major / minor extent is at least this.
+  double min_elongation_for_orientation = 2.0;
+  double pixel_sigma_px = 0.7;  // noise of a reference point, each image coordinate
+  // Each class's reference point (the world model's object position) lies this far behind the
+  // visible surface along the viewing ray, metres: a handle's is the bar's axis, 6 mm behind the
+  // 12 mm bar's surface; a door's (config/worlds/kitchen.yaml) is on its frame's front face, 0.
+  // Classes not listed: 0.
+  std::vector<std::pair<std::string, double>> reference_depth_offset_m;
+  // Optional, per class: the range of the object's physical length along the blob's major axis,
+  // metres. A pair is admissible only when the blobs' mean major extent at the triangulated
+  // depth, major_extent_px * z / f, lies in it. Without it, repeated objects on one epipolar
+  // line admit wrong pairings at other depths (a handle 10 px long in the image, paired with
+  // another handle 135 px away, would be 7 mm long at 0.37 m). Classes not listed, and
+  // detections without extents, are not checked.
+  struct ExtentRange {
+    std::string type;
+    double min_m = 0.0;
+    double max_m = 0.0;
+  };
+  std::vector<ExtentRange> major_extent_range_m;
+};
+
+// Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
+// a type to metres, major_extent_range_m a type to [min_m, max_m]). Unknown keys, non-finite or
+// out-of-range values are errors: vsl::config::Error "file:line: key: what".
+StereoMatchOptions stereo_match_options_from(const config::Node& section);
+
+// A matched, triangulated pair.
+struct StereoPercept {
+  int left_detection = -1;
+  int right_detection = -1;
+  Eigen::Vector3d left_camera_position_m = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d left_camera_covariance_m2 = Eigen::Matrix3d::Zero();
+  float confidence = 0.0f;
+};
+
+// Matches detections of the same type one to one (each left detection to at most one right
+// detection and vice versa) and triangulates each pair. A pair is admissible when it passes every
+// gate (same type, epipolar distance, depth range, area ratio, orientation of elongated blobs,
+// the class's length range); its normalized cost is the sum of the squared epipolar distance,
+// log area ratio and orientation difference, each over its limit. Among the admissible pairs the
+// assignment makes as many matches as possible and, among those, the ones of least total cost
+// (Hungarian method): with repeated identical objects (the two handles of a double door are 7 cm
+// apart, a disparity of 20 px at 2 m), taking the cheapest pair first can pair one object's left
+// image with its neighbour's right image and leave both true partners unmatched. `left_T_right` is
+// the right camera's pose in the left camera frame at capture time (from the head kinematics, so
+// verging eyes are handled). Raw pixels are undistorted with each camera's intrinsics first.
+// Percepts come sorted by left detection. The confidence of a percept is the geometric mean of its
+// two detections' confidences, sqrt(c_l c_r): symmetric, in [0, 1], and on the scale of a single
+// detection's (two views of confidence c give c; the product would give c^2, penalizing every
+// stereo percept for having been seen twice).
+std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& left,
+                                                 const std::vector<Detection>& right,
+                                                 const head::CameraIntrinsics& left_intrinsics,
+                                                 const head::CameraIntrinsics& right_intrinsics,
+                                                 const Eigen::Isometry3d& left_T_right,
+                                                 const StereoMatchOptions& options);
+
+}  // namespace vsl::recognition

@@ -1,0 +1,91 @@
+// Door recognizer: V_d (Eq. 2 plus two components, descriptors.hpp) by a Gaussian class model.
+#include "vsl/recognition/door_recognizer.hpp"
+
+#include <opencv2/core.hpp>
+
+#include <ostream>
+#include <stdexcept>
+
+#include "vsl/config/eigen.hpp"
+#include "vsl/config/node.hpp"
+#include "vsl/recognition/descriptors.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
+  const std::int64_t value = node.as_int();
+  if (value < min || value > max) {
+    node.fail("must be an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+              "], got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
+
+}  // namespace
+
+DoorRecognizerParameters door_parameters_from(const config::Node& section) {
+  DoorRecognizerParameters out;
+  if (section.is_null()) return out;
+  section.expect_map();
+  section.expect_keys({"ideal_colour_rgb", "min_blob_px", "min_border_distance_px"});
+  if (const auto colour = section.find("ideal_colour_rgb")) {
+    out.ideal_colour_rgb = config::as_vector3(*colour);
+    if (out.ideal_colour_rgb.minCoeff() < 0.0 || out.ideal_colour_rgb.maxCoeff() > 1.0) {
+      colour->fail("expected RGB in [0, 1]");
+    }
+    if (!(out.ideal_colour_rgb.norm() > 0.0)) colour->fail("must not be black (no hue)");
+  }
+  if (const auto v = section.find("min_blob_px")) out.min_blob_px = int_in(*v, 1, 100000000);
+  if (const auto v = section.find("min_border_distance_px")) {
+    out.min_border_distance_px = int_in(*v, 0, 1000);
+  }
+  return out;
+}
+
+void write_door_parameters(std::ostream& out, const DoorRecognizerParameters& parameters,
+                           const std::string& indent) {
+  const Eigen::Vector3d& q = parameters.ideal_colour_rgb;
+  out << indent << "ideal_colour_rgb: [" << exact_number(q.x()) << ", " << exact_number(q.y())
+      << ", " << exact_number(q.z()) << "]\n"
+      << indent << "min_blob_px: " << parameters.min_blob_px << "\n"
+      << indent << "min_border_distance_px: " << parameters.min_border_distance_px << "\n";
+}
+
+DoorRecognizer::DoorRecognizer(GaussianClassModel model, DoorRecognizerParameters parameters)
+    : model_(std::move(model)), parameters_(std::move(parameters)) {
+  if (model_.component_names() != door_descriptor_names()) {
+    throw std::invalid_argument("DoorRecognizer: the model of '" + model_.type() +
+                                "' is not over the door descriptor's components");
+  }
+}
+
+void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>& blobs,
+                               std::vector<Detection>& out) const {
+  const int border = parameters_.min_border_distance_px;
+  for (std::size_t i = 0; i < blobs.size(); ++i) {
+    const Blob& blob = blobs[i];
+    if (blob.empty() || blob.area_px < parameters_.min_blob_px) continue;
+    if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
+        blob.v_max >= bgr_image.rows - border) {
+      continue;
+    }
+    const BlobAxes axes = blob_axes(blob);
+    const double d2 =
+        model_.mahalanobis2(door_descriptor(blob, axes, parameters_.ideal_colour_rgb));
+    if (!model_.accepts(d2)) continue;
+    Detection detection;
+    detection.type = model_.type();
+    detection.blob_index = static_cast<int>(i);
+    detection.reference_px = blob.centroid_px;
+    detection.area_px = blob.area_px;
+    detection.major_axis_angle_rad = major_axis_angle_rad(blob);
+    detection.major_extent_px = axes.major_extent_px;
+    detection.minor_extent_px = axes.minor_extent_px;
+    detection.mahalanobis2 = d2;
+    detection.confidence = static_cast<float>(model_.confidence(d2));
+    out.push_back(std::move(detection));
+  }
+}
+
+}  // namespace vsl::recognition

@@ -1,0 +1,99 @@
+// The per-frame pipeline (paper §2.1 and §2.1.1): segmentation, class-specific recognition,
+// stereo cross match and triangulation, registration into the ego frame.
+#include "vsl/recognition/frame_recognizer.hpp"
+
+#include <opencv2/core.hpp>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace vsl::recognition {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsed_ms(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+void check_image(const cv::Mat& image, const head::CameraIntrinsics& intrinsics,
+                 const char* which) {
+  if (image.type() != CV_8UC3 || image.cols != intrinsics.width_px ||
+      image.rows != intrinsics.height_px) {
+    throw std::invalid_argument(
+        std::string("FrameRecognizer::recognize: the ") + which + " image must be CV_8UC3 of " +
+        std::to_string(intrinsics.width_px) + "x" + std::to_string(intrinsics.height_px) +
+        " (the calibration's size), got type " + std::to_string(image.type()) + " of " +
+        std::to_string(image.cols) + "x" + std::to_string(image.rows));
+  }
+}
+
+}  // namespace
+
+FrameRecognizer::FrameRecognizer(FrameRecognizerOptions options, head::HeadKinematics head,
+                                 std::vector<std::unique_ptr<ClassRecognizer>> recognizers)
+    : options_(std::move(options)), head_(std::move(head)), recognizers_(std::move(recognizers)) {
+  if (recognizers_.empty()) {
+    throw std::invalid_argument("FrameRecognizer: at least one class recognizer is required");
+  }
+  for (const auto& recognizer : recognizers_) {
+    if (!recognizer) throw std::invalid_argument("FrameRecognizer: a class recognizer is null");
+  }
+}
+
+FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& right_bgr,
+                                       const head::JointState& joints_at_capture) const {
+  const head::StereoCalibration& calibration = head_.calibration();
+  check_image(left_bgr, calibration.left, "left");
+  check_image(right_bgr, calibration.right, "right");
+  // §2.1.1: percepts are related to the ego centre through the kinematic configuration at
+  // capture time. The cameras' relative pose comes from the same chain, so verging eyes (the
+  // right camera turned against the left one) are matched and triangulated correctly.
+  FrameResult result;
+  Eigen::Isometry3d ego_T_right_camera;
+  head_.ego_T_cameras(joints_at_capture.positions_rad, result.ego_T_left_camera,
+                      ego_T_right_camera);
+  const Eigen::Isometry3d left_T_right = result.ego_T_left_camera.inverse() * ego_T_right_camera;
+
+  const Clock::time_point start = Clock::now();
+  result.left_blobs = segment(left_bgr, options_.segmentation);
+  result.right_blobs = segment(right_bgr, options_.segmentation);
+  const Clock::time_point segmented = Clock::now();
+
+  for (const auto& recognizer : recognizers_) {
+    recognizer->recognize(left_bgr, result.left_blobs, result.left_detections);
+    recognizer->recognize(right_bgr, result.right_blobs, result.right_detections);
+  }
+  const Clock::time_point classified = Clock::now();
+
+  const std::vector<StereoPercept> stereo =
+      match_and_triangulate(result.left_detections, result.right_detections, calibration.left,
+                            calibration.right, left_T_right, options_.stereo);
+  // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
+  const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
+  result.percepts.reserve(stereo.size());
+  for (const StereoPercept& s : stereo) {
+    const Detection& left = result.left_detections[s.left_detection];
+    const Detection& right = result.right_detections[s.right_detection];
+    FramePercept p;
+    p.type = left.type;
+    p.ego_position_m = result.ego_T_left_camera * s.left_camera_position_m;
+    p.ego_covariance_m2 = ego_R_left * s.left_camera_covariance_m2 * ego_R_left.transpose();
+    p.left_px = left.reference_px;
+    p.right_px = right.reference_px;
+    p.confidence = s.confidence;
+    p.left_detection = s.left_detection;
+    p.right_detection = s.right_detection;
+    result.percepts.push_back(std::move(p));
+  }
+  const Clock::time_point matched = Clock::now();
+
+  result.segmentation_ms = elapsed_ms(start, segmented);
+  result.classification_ms = elapsed_ms(segmented, classified);
+  result.stereo_ms = elapsed_ms(classified, matched);
+  return result;
+}
+
+}  // namespace vsl::recognition

@@ -1,0 +1,139 @@
+// segment(): region growing (paper §2.1), mean shift over the regions' features
+// F_i = [X_c, K_mean] (Eq. 1), and blobs as the unions of regions that touch
+// AND share a mode. Touching keeps two same-coloured doors 1 px apart (their
+// gap a region of another colour, or dropped) from becoming one blob although
+// they share a mode; the shared mode brings a door that S_max cut into pieces
+// back together while a brass handle next to it stays apart.
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <numeric>
+
+#include "segmentation_mean_shift.hpp"
+#include "segmentation_region_growing.hpp"
+#include "vsl/recognition/segmentation.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int i) {
+    while (parent_[i] != i) {
+      parent_[i] = parent_[parent_[i]];  // path halving
+      i = parent_[i];
+    }
+    return i;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+}  // namespace
+
+std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& options) {
+  const RegionMap map = grow_regions(bgr_image, options);
+
+  // Regions kept for clustering (S_i >= min_region_px) and their features, Eq.
+  // (1).
+  const MeanShiftParams params{options.spatial_bandwidth_px, options.colour_bandwidth_rgb,
+                               options.max_mean_shift_iterations};
+  std::vector<int> kept_index(map.regions.size(), -1);
+  std::vector<Feature5> features;
+  std::vector<double> weights;
+  for (std::size_t r = 0; r < map.regions.size(); ++r) {
+    const GrownRegion& region = map.regions[r];
+    if (region.pixel_count < options.min_region_px) continue;
+    const double n = region.pixel_count;
+    const Eigen::Vector2d centroid_px(region.u_sum_px / n, region.v_sum_px / n);
+    const Eigen::Vector3d mean_rgb(region.rgb_sum[0] / (255.0 * n), region.rgb_sum[1] / (255.0 * n),
+                                   region.rgb_sum[2] / (255.0 * n));
+    kept_index[r] = static_cast<int>(features.size());
+    features.push_back(scaled_feature(centroid_px, mean_rgb, params));
+    weights.push_back(n);
+  }
+  const std::vector<Feature5> modes = mean_shift_modes(features, weights, params.max_iterations);
+
+  // Union of touching (4-connected) kept regions whose modes coincide in
+  // colour. The spatial part of the modes is not compared: on a large uniform
+  // door the density of X_c is flat, so the pieces S_max cut it into stay where
+  // they are instead of climbing to one spatial mode; touching is the spatial
+  // criterion at the scale of pixels, and the spatial kernel keeps each colour
+  // mode local to its neighbourhood.
+  const double max_mode_distance2 = options.max_mode_distance * options.max_mode_distance;
+  UnionFind blobs_of(features.size());
+  std::vector<Eigen::Vector3d> chromaticity(features.size());
+  std::vector<double> brightness(features.size());
+  for (std::size_t k = 0; k < features.size(); ++k) {
+    const Eigen::Vector3d colour = modes[k].tail<3>();
+    brightness[k] = colour.sum();
+    chromaticity[k] = brightness[k] > 0.0 ? Eigen::Vector3d(colour / brightness[k])
+                                          : Eigen::Vector3d::Constant(1.0 / 3.0);
+  }
+  const double max_chromaticity2 =
+      options.max_chromaticity_difference * options.max_chromaticity_difference;
+  for (const TouchingRegions& t : map.touching) {
+    const int ka = kept_index[t.a];
+    const int kb = kept_index[t.b];
+    if (ka < 0 || kb < 0) continue;
+    // Same mode, where only S_max or V_max cut them apart, or across an edge
+    // between the small pieces of one small object (never across an edge
+    // between large regions: two doors behind a faint gap share their mode).
+    const bool small_pieces = std::max(weights[ka], weights[kb]) <= options.max_facet_px;
+    const bool same_mode =
+        (!t.across_edge || small_pieces) &&
+        (modes[ka].tail<3>() - modes[kb].tail<3>()).squaredNorm() < max_mode_distance2;
+    // Shaded facets of one small object (a handle bar): across their edge, same
+    // chromaticity.
+    const bool same_facet_colour =
+        small_pieces && (chromaticity[ka] - chromaticity[kb]).squaredNorm() < max_chromaticity2 &&
+        std::max(brightness[ka], brightness[kb]) < 2.5 * std::min(brightness[ka], brightness[kb]);
+    if (same_mode || same_facet_colour) blobs_of.unite(ka, kb);
+  }
+
+  // Runs per blob in raster order (so sorted by (v, u_begin)); consecutive runs
+  // of one blob in a row are one run.
+  const std::vector<RegionRun>& runs = map.runs;
+  std::vector<int> blob_of_root(features.size(), -1);
+  std::vector<std::vector<PixelRun>> blob_runs;
+  std::vector<int> blob_area;
+  for (int v = 0; v < map.height; ++v) {
+    int last_blob = -1;
+    for (int i = map.row_begin[v]; i < map.row_begin[v + 1]; ++i) {
+      const int kept = kept_index[runs[i].region];
+      if (kept < 0) {
+        last_blob = -1;
+        continue;
+      }
+      int& blob = blob_of_root[blobs_of.find(kept)];
+      if (blob < 0) {
+        blob = static_cast<int>(blob_runs.size());
+        blob_runs.emplace_back();
+        blob_area.push_back(0);
+      }
+      if (blob == last_blob) {
+        blob_runs[blob].back().u_end = runs[i].u_end;
+      } else {
+        blob_runs[blob].push_back({v, runs[i].u_begin, runs[i].u_end});
+      }
+      blob_area[blob] += runs[i].u_end - runs[i].u_begin;
+      last_blob = blob;
+    }
+  }
+
+  std::vector<Blob> blobs;
+  for (std::size_t b = 0; b < blob_runs.size(); ++b) {
+    if (blob_area[b] < options.min_blob_px) continue;
+    blobs.push_back(make_blob(std::move(blob_runs[b]), bgr_image));
+  }
+  return blobs;
+}
+
+}  // namespace vsl::recognition

@@ -1,0 +1,264 @@
+// Left-right cross match and triangulation (paper §2.1). Geometry: epipolar.hpp (gate) and
+// triangulation.hpp (point and covariance); the assignment is below.
+#include "vsl/recognition/stereo_match.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "epipolar.hpp"
+#include "triangulation.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+// An admissible left-right pair.
+struct Candidate {
+  int left = -1;
+  int right = -1;
+  double cost = 0.0;  // normalized: sum of (gate quantity / its limit)^2, each term <= 1
+};
+
+// Leaving a left detection unmatched costs more than any set of admissible pairs can, so that the
+// assignment first maximizes the number of matches, then minimizes their total cost.
+double unmatched_cost(std::size_t pairs) {
+  return 4.0 * static_cast<double>(pairs + 1);
+}
+
+// Orientation difference of two undirected axes (angles in [0, pi)), in [0, pi / 2].
+double axis_difference_rad(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), M_PI);
+  return std::min(d, M_PI - d);
+}
+
+// Major over minor extent; 1 (not elongated) when the recognizer gave no extents.
+double elongation(const Detection& d) {
+  if (!(d.major_extent_px > 0.0)) return 1.0;
+  return d.minor_extent_px > 0.0 ? d.major_extent_px / d.minor_extent_px
+                                 : std::numeric_limits<double>::infinity();
+}
+
+double reference_depth_offset(const StereoMatchOptions& options, const std::string& type) {
+  for (const auto& [name, offset] : options.reference_depth_offset_m) {
+    if (name == type) return offset;
+  }
+  return 0.0;
+}
+
+const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& options,
+                                                    const std::string& type) {
+  for (const StereoMatchOptions::ExtentRange& range : options.major_extent_range_m) {
+    if (range.type == type) return &range;
+  }
+  return nullptr;
+}
+
+// Minimum-cost assignment of rows to columns (rows <= columns), Hungarian method with potentials
+// (Kuhn-Munkres, O(rows^2 columns)). cost is row-major rows x columns; returns the column of each
+// row.
+std::vector<int> hungarian(const std::vector<double>& cost, int rows, int columns) {
+  const double inf = std::numeric_limits<double>::infinity();
+  // 1-based as in the textbook formulation; column 0 is the virtual start.
+  std::vector<double> u(rows + 1, 0.0), v(columns + 1, 0.0);
+  std::vector<int> row_of(columns + 1, 0), way(columns + 1, 0);
+  for (int i = 1; i <= rows; ++i) {
+    row_of[0] = i;
+    int j0 = 0;
+    std::vector<double> min_slack(columns + 1, inf);
+    std::vector<char> used(columns + 1, 0);
+    do {
+      used[j0] = 1;
+      const int i0 = row_of[j0];
+      double delta = inf;
+      int j1 = 0;
+      for (int j = 1; j <= columns; ++j) {
+        if (used[j]) continue;
+        const double slack = cost[(i0 - 1) * columns + (j - 1)] - u[i0] - v[j];
+        if (slack < min_slack[j]) {
+          min_slack[j] = slack;
+          way[j] = j0;
+        }
+        if (min_slack[j] < delta) {
+          delta = min_slack[j];
+          j1 = j;
+        }
+      }
+      for (int j = 0; j <= columns; ++j) {
+        if (used[j]) {
+          u[row_of[j]] += delta;
+          v[j] -= delta;
+        } else {
+          min_slack[j] -= delta;
+        }
+      }
+      j0 = j1;
+    } while (row_of[j0] != 0);
+    do {
+      const int j1 = way[j0];
+      row_of[j0] = row_of[j1];
+      j0 = j1;
+    } while (j0 != 0);
+  }
+  std::vector<int> column_of(rows, -1);
+  for (int j = 1; j <= columns; ++j) {
+    if (row_of[j] != 0) column_of[row_of[j] - 1] = j - 1;
+  }
+  return column_of;
+}
+
+// One-to-one assignment over the candidate pairs: per connected component of the candidate graph
+// (components are independent and usually small), the Hungarian method on the component's
+// admissible costs plus one "unmatched" column per left detection.
+std::vector<Candidate> assign(const std::vector<Candidate>& candidates, int left_count,
+                              int right_count) {
+  // Components by union-find over left nodes 0..L-1 and right nodes L..L+R-1.
+  std::vector<int> parent(left_count + right_count);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Candidate& c : candidates) parent[find(c.left)] = find(left_count + c.right);
+
+  std::vector<std::vector<int>> by_component(left_count + right_count);
+  for (int k = 0; k < static_cast<int>(candidates.size()); ++k) {
+    by_component[find(candidates[k].left)].push_back(k);
+  }
+  std::vector<Candidate> out;
+  for (const std::vector<int>& members : by_component) {
+    if (members.empty()) continue;
+    if (members.size() == 1) {
+      out.push_back(candidates[members[0]]);
+      continue;
+    }
+    // Local indices of the component's left and right detections.
+    std::vector<int> lefts, rights;
+    for (int k : members) {
+      lefts.push_back(candidates[k].left);
+      rights.push_back(candidates[k].right);
+    }
+    for (auto* v : {&lefts, &rights}) {
+      std::sort(v->begin(), v->end());
+      v->erase(std::unique(v->begin(), v->end()), v->end());
+    }
+    const int rows = static_cast<int>(lefts.size());
+    const int columns = static_cast<int>(rights.size()) + rows;
+    const double unmatched = unmatched_cost(members.size());
+    // Inadmissible pairs cost more than leaving every row unmatched.
+    const double forbidden = 2.0 * unmatched * (rows + 1);
+    std::vector<double> cost(static_cast<std::size_t>(rows) * columns, forbidden);
+    for (int i = 0; i < rows; ++i) {
+      for (int j = static_cast<int>(rights.size()); j < columns; ++j)
+        cost[i * columns + j] = unmatched;
+    }
+    for (int k : members) {
+      const int i = static_cast<int>(
+          std::lower_bound(lefts.begin(), lefts.end(), candidates[k].left) - lefts.begin());
+      const int j = static_cast<int>(
+          std::lower_bound(rights.begin(), rights.end(), candidates[k].right) - rights.begin());
+      cost[i * columns + j] = candidates[k].cost;
+    }
+    const std::vector<int> column_of = hungarian(cost, rows, columns);
+    for (int k : members) {
+      const int i = static_cast<int>(
+          std::lower_bound(lefts.begin(), lefts.end(), candidates[k].left) - lefts.begin());
+      const int j = column_of[i];
+      if (j >= 0 && j < static_cast<int>(rights.size()) && rights[j] == candidates[k].right) {
+        out.push_back(candidates[k]);
+      }
+    }
+  }
+  std::sort(out.begin(), out.end(),
+            [](const Candidate& a, const Candidate& b) { return a.left < b.left; });
+  return out;
+}
+
+}  // namespace
+
+std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& left,
+                                                 const std::vector<Detection>& right,
+                                                 const head::CameraIntrinsics& left_intrinsics,
+                                                 const head::CameraIntrinsics& right_intrinsics,
+                                                 const Eigen::Isometry3d& left_T_right,
+                                                 const StereoMatchOptions& options) {
+  if (left.empty() || right.empty()) return {};
+  std::vector<Eigen::Vector2d> left_raw, right_raw;
+  left_raw.reserve(left.size());
+  right_raw.reserve(right.size());
+  for (const Detection& d : left) left_raw.push_back(d.reference_px);
+  for (const Detection& d : right) right_raw.push_back(d.reference_px);
+  const std::vector<detail::IdealPixel> left_ideal = detail::undistort(left_raw, left_intrinsics);
+  const std::vector<detail::IdealPixel> right_ideal =
+      detail::undistort(right_raw, right_intrinsics);
+  const detail::EpipolarGeometry epipolar(left_intrinsics, right_intrinsics, left_T_right);
+  const detail::Triangulator triangulator(left_intrinsics, right_intrinsics, left_T_right);
+
+  const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
+  std::vector<Candidate> candidates;
+  for (int l = 0; l < static_cast<int>(left.size()); ++l) {
+    const Detection& dl = left[l];
+    for (int r = 0; r < static_cast<int>(right.size()); ++r) {
+      const Detection& dr = right[r];
+      if (dl.type != dr.type) continue;
+      // Position: the right reference point on (near) the left one's epipolar line.
+      const double epipolar_px =
+          epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
+      if (!(epipolar_px <= options.max_epipolar_distance_px)) continue;
+      // Size: both cameras are about equally far from the object, so the areas agree.
+      double area_term = 0.0;
+      if (dl.area_px > 0.0 && dr.area_px > 0.0) {
+        const double log_ratio = std::abs(std::log(dl.area_px / dr.area_px));
+        if (log_ratio > log_max_area_ratio) continue;
+        area_term = log_ratio / log_max_area_ratio;
+      }
+      // Orientation: only defined for elongated blobs (a near-round blob's axis is noise).
+      double orientation_term = 0.0;
+      if (elongation(dl) >= options.min_elongation_for_orientation &&
+          elongation(dr) >= options.min_elongation_for_orientation) {
+        const double difference =
+            axis_difference_rad(dl.major_axis_angle_rad, dr.major_axis_angle_rad);
+        if (difference > options.max_orientation_difference_rad) continue;
+        orientation_term = difference / options.max_orientation_difference_rad;
+      }
+      // Disparity range, as the depth of the triangulated point along the left optical axis
+      // (verging eyes make disparity alone depend on where the point is in the image).
+      const auto point = triangulator.point(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
+      if (!point || point->z() < options.min_depth_m || point->z() > options.max_depth_m) continue;
+      // Size at that depth: a fronto-parallel length L spans f L / z pixels.
+      const auto* range = extent_range(options, dl.type);
+      if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
+        const double length_m = 0.5 * (dl.major_extent_px + dr.major_extent_px) * point->z() /
+                                (0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px));
+        if (length_m < range->min_m || length_m > range->max_m) continue;
+      }
+      const double epipolar_term = options.max_epipolar_distance_px > 0.0
+                                       ? epipolar_px / options.max_epipolar_distance_px
+                                       : 0.0;
+      candidates.push_back({l, r,
+                            epipolar_term * epipolar_term + area_term * area_term +
+                                orientation_term * orientation_term});
+    }
+  }
+
+  std::vector<StereoPercept> out;
+  for (const Candidate& c :
+       assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()))) {
+    const auto triangulation =
+        triangulator.triangulate(left_ideal[c.left], right_ideal[c.right], options.pixel_sigma_px,
+                                 reference_depth_offset(options, left[c.left].type));
+    if (!triangulation) continue;
+    StereoPercept percept;
+    percept.left_detection = c.left;
+    percept.right_detection = c.right;
+    percept.left_camera_position_m = triangulation->left_camera_position_m;
+    percept.left_camera_covariance_m2 = triangulation->left_camera_covariance_m2;
+    percept.confidence = static_cast<float>(
+        std::sqrt(std::clamp(static_cast<double>(left[c.left].confidence), 0.0, 1.0) *
+                  std::clamp(static_cast<double>(right[c.right].confidence), 0.0, 1.0)));
+    out.push_back(percept);
+  }
+  return out;
+}
+
+}  // namespace vsl::recognition

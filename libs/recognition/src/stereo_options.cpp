@@ -1,0 +1,73 @@
+// The `stereo:` config section -> StereoMatchOptions, and the `recognition:` section's
+// `segmentation:` and `stereo:` -> FrameRecognizerOptions. Every key is optional (defaults are the
+// structs'); a wrong value or an unknown key is one line "file:line: key: what".
+#include <string>
+
+#include "vsl/config/node.hpp"
+#include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/segmentation.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition {
+
+StereoMatchOptions stereo_match_options_from(const config::Node& section) {
+  StereoMatchOptions out;
+  section.expect_map();
+  section.expect_keys({"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
+                       "max_orientation_difference_rad", "min_elongation_for_orientation",
+                       "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m"});
+  if (const auto v = section.find("max_epipolar_distance_px")) {
+    out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
+  }
+  if (const auto v = section.find("min_depth_m")) out.min_depth_m = v->as_double_in(0.01, 1000.0);
+  if (const auto v = section.find("max_depth_m")) out.max_depth_m = v->as_double_in(0.01, 1000.0);
+  if (out.max_depth_m <= out.min_depth_m) {
+    (section.has("max_depth_m") ? section.at("max_depth_m") : section.at("min_depth_m"))
+        .fail("max_depth_m (" + std::to_string(out.max_depth_m) + ") must exceed min_depth_m (" +
+              std::to_string(out.min_depth_m) + ")");
+  }
+  if (const auto v = section.find("max_area_ratio")) {
+    out.max_area_ratio = v->as_double_in(1.001, 1000.0);
+  }
+  // Undirected axes differ by at most pi / 2.
+  if (const auto v = section.find("max_orientation_difference_rad")) {
+    out.max_orientation_difference_rad = v->as_double_in(1e-3, 1.5708);
+  }
+  if (const auto v = section.find("min_elongation_for_orientation")) {
+    out.min_elongation_for_orientation = v->as_double_in(1.0, 1000.0);
+  }
+  if (const auto v = section.find("pixel_sigma_px")) {
+    out.pixel_sigma_px = v->as_double_in(1e-3, 100.0);
+  }
+  if (const auto offsets = section.find("reference_depth_offset_m")) {
+    offsets->expect_map();
+    for (const std::string& type : offsets->keys()) {
+      // Half the depth of any object a robot recognizes: a metre either way is far beyond that.
+      out.reference_depth_offset_m.emplace_back(type, offsets->at(type).as_double_in(-1.0, 1.0));
+    }
+  }
+  if (const auto ranges = section.find("major_extent_range_m")) {
+    ranges->expect_map();
+    for (const std::string& type : ranges->keys()) {
+      const config::Node range = ranges->at(type);
+      const auto bounds = range.as_array<2>();
+      if (!(bounds[0] >= 0.0 && bounds[0] < bounds[1] && bounds[1] <= 1000.0)) {
+        range.fail("expected [min_m, max_m] with 0 <= min_m < max_m <= 1000");
+      }
+      out.major_extent_range_m.push_back({type, bounds[0], bounds[1]});
+    }
+  }
+  return out;
+}
+
+FrameRecognizerOptions frame_recognizer_options_from(const config::Node& recognition_section) {
+  FrameRecognizerOptions out;
+  recognition_section.expect_map();
+  if (const auto s = recognition_section.find("segmentation")) {
+    out.segmentation = segmentation_options_from(*s);
+  }
+  if (const auto s = recognition_section.find("stereo")) out.stereo = stereo_match_options_from(*s);
+  return out;
+}
+
+}  // namespace vsl::recognition

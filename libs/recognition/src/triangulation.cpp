@@ -1,0 +1,88 @@
+#include "triangulation.hpp"
+
+#include <cmath>
+
+namespace vsl::recognition::detail {
+namespace {
+
+// sin^2 of the smallest angle between the rays that still counts as an intersection.
+constexpr double kMinSin2 = 1e-12;
+constexpr double kDifferenceStepPx = 1e-3;
+
+}  // namespace
+
+Triangulator::Triangulator(const head::CameraIntrinsics& left, const head::CameraIntrinsics& right,
+                           const Eigen::Isometry3d& left_T_right)
+    : left_k_inverse_(camera_matrix(left).inverse()),
+      right_k_inverse_in_left_(left_T_right.linear() * camera_matrix(right).inverse()),
+      right_centre_m_(left_T_right.translation()) {}
+
+std::optional<Eigen::Vector3d> Triangulator::midpoint(const Eigen::Vector2d& left_ideal_px,
+                                                      const Eigen::Vector2d& right_ideal_px,
+                                                      double& s, double& w) const {
+  const Eigen::Vector3d a = left_k_inverse_ * left_ideal_px.homogeneous();
+  const Eigen::Vector3d b = right_k_inverse_in_left_ * right_ideal_px.homogeneous();
+  const Eigen::Vector3d& t = right_centre_m_;
+  const double aa = a.squaredNorm(), bb = b.squaredNorm(), ab = a.dot(b);
+  const double at = a.dot(t), bt = b.dot(t);
+  const double cross2 = aa * bb - ab * ab;  // |a x b|^2
+  if (!(cross2 > kMinSin2 * aa * bb)) return std::nullopt;
+  s = (bb * at - ab * bt) / cross2;
+  w = (ab * at - aa * bt) / cross2;
+  return Eigen::Vector3d(0.5 * (s * a + t + w * b));
+}
+
+std::optional<Eigen::Vector3d> Triangulator::point(const Eigen::Vector2d& left_ideal_px,
+                                                   const Eigen::Vector2d& right_ideal_px) const {
+  double s = 0.0, w = 0.0;
+  auto x = midpoint(left_ideal_px, right_ideal_px, s, w);
+  if (!x || !(s > 0.0) || !(w > 0.0)) return std::nullopt;
+  return x;
+}
+
+std::optional<Triangulation> Triangulator::triangulate(const IdealPixel& left,
+                                                       const IdealPixel& right,
+                                                       double pixel_sigma_px,
+                                                       double reference_depth_offset_m) const {
+  const auto x = point(left.ideal_px, right.ideal_px);
+  if (!x) return std::nullopt;
+
+  // J_mid: columns d X / d (u_l, v_l, u_r, v_r), ideal pixels, central differences.
+  Eigen::Matrix<double, 3, 4> j_mid;
+  const double h = kDifferenceStepPx;
+  for (int k = 0; k < 4; ++k) {
+    Eigen::Vector2d l_plus = left.ideal_px, l_minus = left.ideal_px;
+    Eigen::Vector2d r_plus = right.ideal_px, r_minus = right.ideal_px;
+    if (k < 2) {
+      l_plus[k] += h;
+      l_minus[k] -= h;
+    } else {
+      r_plus[k - 2] += h;
+      r_minus[k - 2] -= h;
+    }
+    double s = 0.0, w = 0.0;
+    const auto x_plus = midpoint(l_plus, r_plus, s, w);
+    const auto x_minus = midpoint(l_minus, r_minus, s, w);
+    if (!x_plus || !x_minus) return std::nullopt;
+    j_mid.col(k) = (*x_plus - *x_minus) / (2 * h);
+  }
+  Eigen::Matrix4d d_ideal_d_raw = Eigen::Matrix4d::Zero();
+  d_ideal_d_raw.topLeftCorner<2, 2>() = left.d_ideal_d_raw;
+  d_ideal_d_raw.bottomRightCorner<2, 2>() = right.d_ideal_d_raw;
+  const Eigen::Matrix<double, 3, 4> j = j_mid * d_ideal_d_raw;
+  Eigen::Matrix3d covariance = pixel_sigma_px * pixel_sigma_px * (j * j.transpose());
+
+  // Reference point behind the surface, along the left viewing ray.
+  const double range_m = x->norm();
+  const Eigen::Vector3d n = *x / range_m;
+  const Eigen::Matrix3d g =
+      Eigen::Matrix3d::Identity() +
+      (reference_depth_offset_m / range_m) * (Eigen::Matrix3d::Identity() - n * n.transpose());
+  Triangulation out;
+  out.left_camera_position_m = *x + reference_depth_offset_m * n;
+  covariance = g * covariance * g.transpose();
+  out.left_camera_covariance_m2 = 0.5 * (covariance + covariance.transpose());
+  return out;
+}
+
+}  // namespace vsl::recognition::detail

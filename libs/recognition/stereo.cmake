@@ -1,0 +1,14 @@
+# Stereo cross match, triangulation with covariance, registration into ego and the per-frame
+# pipeline (paper §2.1, §2.1.1).
+list(APPEND VSL_RECOGNITION_SOURCES
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/epipolar.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/triangulation.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_options.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/frame_recognizer.cpp)
+list(APPEND VSL_RECOGNITION_TESTS
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/stereo_match_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)
+list(APPEND VSL_RECOGNITION_BENCHES ${CMAKE_CURRENT_SOURCE_DIR}/bench/stereo_bench.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/bench/frame_bench.cpp)

@@ -1,0 +1,305 @@
+// Cross match (paper §2.1): the gates (epipolar distance, disparity range, size, orientation),
+// the one-to-one assignment, verging eyes, and the `stereo:` config section.
+#include <gtest/gtest.h>
+#include <opencv2/calib3d.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "vsl/config/node.hpp"
+#include "vsl/head/stereo_calibration.hpp"
+#include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+// The simulated head's calibration: ideal 640x480 pinholes, parallel, 90 mm apart.
+head::StereoCalibration sim_calibration() {
+  return head::load_stereo_calibration("calib/armar3_sim.yaml");
+}
+
+// Raw pixel of a point given in the left camera frame, seen by a camera at left_T_camera.
+Eigen::Vector2d project(const Eigen::Vector3d& left_point_m, const head::CameraIntrinsics& camera,
+                        const Eigen::Isometry3d& left_T_camera) {
+  const Eigen::Vector3d p = left_T_camera.inverse() * left_point_m;
+  const std::vector<cv::Point3d> object{{p.x(), p.y(), p.z()}};
+  const cv::Matx33d k(camera.fx_px, 0, camera.cx_px, 0, camera.fy_px, camera.cy_px, 0, 0, 1);
+  const cv::Matx<double, 1, 5> d(camera.distortion.data());
+  std::vector<cv::Point2d> image;
+  cv::projectPoints(object, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), k, d, image);
+  return {image[0].x, image[0].y};
+}
+
+// A vertical handle-like detection (elongated along v) at a pixel.
+Detection detection(const std::string& type, const Eigen::Vector2d& px, double area_px = 120.0,
+                    double angle_rad = M_PI / 2, float confidence = 0.9f) {
+  Detection d;
+  d.type = type;
+  d.reference_px = px;
+  d.area_px = area_px;
+  d.major_axis_angle_rad = angle_rad;
+  d.major_extent_px = 44.0;
+  d.minor_extent_px = 4.0;
+  d.confidence = confidence;
+  return d;
+}
+
+struct Pair {
+  Detection left, right;
+};
+
+class StereoMatchTest : public ::testing::Test {
+ protected:
+  Pair pair_of(const Eigen::Vector3d& left_point_m, const std::string& type = "handle") const {
+    return {
+        detection(type, project(left_point_m, calibration_.left, Eigen::Isometry3d::Identity())),
+        detection(type, project(left_point_m, calibration_.right, left_T_right_))};
+  }
+  std::vector<StereoPercept> match(const std::vector<Detection>& left,
+                                   const std::vector<Detection>& right) const {
+    return match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_,
+                                 options_);
+  }
+
+  head::StereoCalibration calibration_ = sim_calibration();
+  Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
+  StereoMatchOptions options_;
+};
+
+TEST_F(StereoMatchTest, EpipolarGateRejectsOffLineAndAcceptsOnIt) {
+  const Pair p = pair_of({0.2, 0.1, 2.0});
+  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
+  // Parallel cameras: the epipolar line is the row, so a shift in v is the distance to it.
+  Detection off = p.right;
+  off.reference_px.y() += 4.0;  // > max_epipolar_distance_px = 3
+  EXPECT_TRUE(match({p.left}, {off}).empty());
+  off.reference_px.y() = p.right.reference_px.y() - 2.5;
+  EXPECT_EQ(match({p.left}, {off}).size(), 1u);
+  // Along the line is a change of depth, not an epipolar violation.
+  Detection along = p.right;
+  along.reference_px.x() += 5.0;
+  EXPECT_EQ(match({p.left}, {along}).size(), 1u);
+}
+
+TEST_F(StereoMatchTest, DisparityRangeAsDepth) {
+  options_.min_depth_m = 0.5;
+  options_.max_depth_m = 6.0;
+  for (const double z : {0.55, 1.0, 3.0, 5.9}) {
+    const Pair p = pair_of({0.05, -0.1, z});
+    EXPECT_EQ(match({p.left}, {p.right}).size(), 1u) << z;
+  }
+  for (const double z : {0.35, 6.5, 20.0}) {
+    const Pair p = pair_of({0.05, -0.1, z});
+    EXPECT_TRUE(match({p.left}, {p.right}).empty()) << z;
+  }
+  // Negative disparity: the point would be behind the cameras.
+  const Pair p = pair_of({0.05, -0.1, 2.0});
+  Detection swapped = p.right;
+  swapped.reference_px.x() = 2 * p.left.reference_px.x() - p.right.reference_px.x();
+  EXPECT_TRUE(match({p.left}, {swapped}).empty());
+}
+
+TEST_F(StereoMatchTest, SizeOrientationAndTypeGates) {
+  const Pair p = pair_of({-0.3, 0.2, 2.5});
+  Detection bigger = p.right;
+  bigger.area_px = p.left.area_px * 1.5;
+  EXPECT_EQ(match({p.left}, {bigger}).size(), 1u);
+  bigger.area_px = p.left.area_px * 1.7;  // > max_area_ratio = 1.6
+  EXPECT_TRUE(match({p.left}, {bigger}).empty());
+
+  Detection turned = p.right;
+  turned.major_axis_angle_rad = M_PI / 2 + 0.5;  // > 0.35 rad from the left one
+  EXPECT_TRUE(match({p.left}, {turned}).empty());
+  // Axes are undirected: 0.05 and pi - 0.05 differ by 0.1 rad.
+  Detection a = p.left, b = p.right;
+  a.major_axis_angle_rad = 0.05;
+  b.major_axis_angle_rad = M_PI - 0.05;
+  EXPECT_EQ(match({a}, {b}).size(), 1u);
+  // A near-round blob's axis is noise: not compared.
+  turned.major_extent_px = turned.minor_extent_px = 20.0;
+  EXPECT_EQ(match({p.left}, {turned}).size(), 1u);
+
+  const Pair door = pair_of({-0.3, 0.2, 2.5}, "door");
+  EXPECT_TRUE(match({p.left}, {door.right}).empty());
+  EXPECT_EQ(match({p.left, door.left}, {door.right, p.right}).size(), 2u);
+}
+
+TEST_F(StereoMatchTest, OneToOne) {
+  const Pair p = pair_of({0.1, 0.0, 2.0});
+  // Two left detections compete for one right one: one match, the better one.
+  Detection worse = p.left;
+  worse.reference_px.y() += 2.0;
+  auto percepts = match({worse, p.left}, {p.right});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_EQ(percepts[0].left_detection, 1);
+  EXPECT_EQ(percepts[0].right_detection, 0);
+  percepts = match({p.left}, {p.right, p.right});
+  ASSERT_EQ(percepts.size(), 1u);
+}
+
+// The two handles of a double door, 7.4 cm apart at 2 m: the disparity (25 px) exceeds their
+// spacing in the image (20 px), so the left image's right handle also fits the right image's left
+// handle (at 1.1 m). The assignment must still pair each handle with itself.
+TEST_F(StereoMatchTest, RepeatedObjectsPairWithThemselves) {
+  const Eigen::Vector3d a{-0.037, 0.2, 2.0}, b{0.037, 0.2, 2.0};
+  const Pair pa = pair_of(a), pb = pair_of(b);
+  Detection pb_left = pb.left;
+  pb_left.reference_px.y() += 0.3;  // the wrong pair is no worse than the true ones
+  Detection pa_right = pa.right;
+  pa_right.reference_px.y() += 0.3;
+  for (int order = 0; order < 2; ++order) {
+    const std::vector<Detection> left =
+        order ? std::vector{pb_left, pa.left} : std::vector{pa.left, pb_left};
+    const auto percepts = match(left, {pb.right, pa_right});
+    ASSERT_EQ(percepts.size(), 2u);
+    for (const StereoPercept& s : percepts) {
+      const bool is_a = (left[s.left_detection].reference_px - pa.left.reference_px).norm() < 1.0;
+      EXPECT_EQ(s.right_detection, is_a ? 1 : 0);
+      EXPECT_NEAR(s.left_camera_position_m.z(), 2.0, 0.05);
+    }
+  }
+}
+
+TEST_F(StereoMatchTest, VergedEyesStillMatch) {
+  // Each eye panned 6 degrees inward (about the camera y axis, down): the right camera turned
+  // by 12 degrees against the left one. Epipolar lines are no longer rows.
+  const double pan = 6.0 * M_PI / 180.0;
+  Eigen::Isometry3d left_T_right = Eigen::Isometry3d::Identity();
+  left_T_right.translation() = Eigen::Vector3d(0.09, 0.0, 0.0);
+  left_T_right.linear() = Eigen::AngleAxisd(-2 * pan, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  left_T_right_ = left_T_right;
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0.05, 0.3, 0.9), Eigen::Vector3d(0.4, -0.3, 1.5),
+                                   Eigen::Vector3d(-0.2, 0.5, 2.5)}) {
+    const Pair p = pair_of(x);
+    const auto percepts = match({p.left}, {p.right});
+    ASSERT_EQ(percepts.size(), 1u);
+    EXPECT_LT((percepts[0].left_camera_position_m - x).norm(), 1e-9);
+    // The same pixels under the parallel-camera assumption are far off the epipolar line.
+    left_T_right_ = calibration_.left_T_right();
+    EXPECT_TRUE(match({p.left}, {p.right}).empty());
+    left_T_right_ = left_T_right;
+  }
+}
+
+TEST_F(StereoMatchTest, MajorExtentRangeRejectsImplausibleDepths) {
+  // A 16 cm handle at 2 m spans 44 px (detection()); paired with another handle's right image
+  // at 1 m it would be 8 cm long.
+  const Pair near = pair_of({0.0, 0.1, 1.0}), far = pair_of({0.0, 0.1, 2.0});
+  options_.major_extent_range_m = {{"handle", 0.12, 0.25}};
+  EXPECT_EQ(match({far.left}, {far.right}).size(), 1u);
+  EXPECT_TRUE(match({near.left}, {near.right}).empty());   // 44 px at 1 m: 8 cm
+  options_.major_extent_range_m = {{"door", 0.12, 0.25}};  // other classes are not checked
+  EXPECT_EQ(match({near.left}, {near.right}).size(), 1u);
+}
+
+TEST_F(StereoMatchTest, ReferenceDepthOffsetAlongTheViewingRay) {
+  const Eigen::Vector3d surface{0.3, -0.2, 1.8};
+  const Pair p = pair_of(surface);
+  options_.reference_depth_offset_m = {{"door", 0.0095}, {"handle", 0.006}};
+  const auto percepts = match({p.left}, {p.right});
+  ASSERT_EQ(percepts.size(), 1u);
+  const Eigen::Vector3d expected = surface + 0.006 * surface.normalized();
+  EXPECT_LT((percepts[0].left_camera_position_m - expected).norm(), 1e-9);
+}
+
+TEST_F(StereoMatchTest, ConfidenceIsTheGeometricMean) {
+  Pair p = pair_of({0.0, 0.0, 1.5});
+  p.left.confidence = 0.81f;
+  p.right.confidence = 0.64f;
+  const auto percepts = match({p.left}, {p.right});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_NEAR(percepts[0].confidence, 0.72, 1e-6);
+}
+
+TEST_F(StereoMatchTest, EmptyInputs) {
+  const Pair p = pair_of({0.0, 0.0, 1.5});
+  EXPECT_TRUE(match({}, {p.right}).empty());
+  EXPECT_TRUE(match({p.left}, {}).empty());
+}
+
+TEST(StereoOptionsTest, ReadsEveryKey) {
+  const auto root = config::Node::load_string(R"(
+stereo:
+  max_epipolar_distance_px: 2.5
+  min_depth_m: 0.4
+  max_depth_m: 5.0
+  max_area_ratio: 1.8
+  max_orientation_difference_rad: 0.3
+  min_elongation_for_orientation: 2.5
+  pixel_sigma_px: 0.5
+  reference_depth_offset_m: {door: 0.0095, handle: 0.006}
+  major_extent_range_m: {handle: [0.12, 0.25]}
+)",
+                                              "stereo.yaml");
+  const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
+  EXPECT_EQ(o.max_epipolar_distance_px, 2.5);
+  EXPECT_EQ(o.min_depth_m, 0.4);
+  EXPECT_EQ(o.max_depth_m, 5.0);
+  EXPECT_EQ(o.max_area_ratio, 1.8);
+  EXPECT_EQ(o.max_orientation_difference_rad, 0.3);
+  EXPECT_EQ(o.min_elongation_for_orientation, 2.5);
+  EXPECT_EQ(o.pixel_sigma_px, 0.5);
+  ASSERT_EQ(o.reference_depth_offset_m.size(), 2u);
+  EXPECT_EQ(o.reference_depth_offset_m[0].first, "door");
+  EXPECT_EQ(o.reference_depth_offset_m[1].second, 0.006);
+  ASSERT_EQ(o.major_extent_range_m.size(), 1u);
+  EXPECT_EQ(o.major_extent_range_m[0].type, "handle");
+  EXPECT_EQ(o.major_extent_range_m[0].min_m, 0.12);
+  EXPECT_EQ(o.major_extent_range_m[0].max_m, 0.25);
+}
+
+std::string stereo_error(const std::string& body) {
+  try {
+    stereo_match_options_from(config::Node::load_string("stereo:\n" + body, "s.yaml").at("stereo"));
+  } catch (const config::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
+  EXPECT_EQ(stereo_error("  max_epipolar_distanse_px: 2\n").rfind("s.yaml:", 0), 0u)
+      << stereo_error("  max_epipolar_distanse_px: 2\n");
+  EXPECT_NE(stereo_error("  max_epipolar_distanse_px: 2\n").find("unknown key"), std::string::npos);
+  EXPECT_NE(stereo_error("  pixel_sigma_px: -1\n").find("s.yaml:2: stereo.pixel_sigma_px"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  max_area_ratio: .nan\n").find("max_area_ratio"), std::string::npos);
+  EXPECT_NE(stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n").find("must exceed"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  reference_depth_offset_m: {door: 2}\n")
+                .find("stereo.reference_depth_offset_m.door"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  reference_depth_offset_m: [1, 2]\n").find("reference_depth_offset_m"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  major_extent_range_m: {handle: [0.3, 0.2]}\n")
+                .find("s.yaml:2: stereo.major_extent_range_m.handle: expected [min_m, max_m]"),
+            std::string::npos)
+      << stereo_error("  major_extent_range_m: {handle: [0.3, 0.2]}\n");
+  EXPECT_NE(stereo_error("  major_extent_range_m: {handle: [0.3]}\n").find("handle"),
+            std::string::npos);
+  for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
+                               stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  }
+}
+
+TEST(StereoOptionsTest, FrameRecognizerOptionsReadBothSections) {
+  const auto root = config::Node::load_string(R"(
+recognition:
+  models: [door.yaml]
+  segmentation: {min_blob_px: 20}
+  stereo: {max_depth_m: 4.5}
+)",
+                                              "r.yaml");
+  const FrameRecognizerOptions o = frame_recognizer_options_from(root.at("recognition"));
+  EXPECT_EQ(o.segmentation.min_blob_px, 20);
+  EXPECT_EQ(o.stereo.max_depth_m, 4.5);
+  EXPECT_THROW(frame_recognizer_options_from(
+                   config::Node::load_string("r:\n  stereo: {bad: 1}\n", "r.yaml").at("r")),
+               config::Error);
+}
+
+}  // namespace
+}  // namespace vsl::recognition

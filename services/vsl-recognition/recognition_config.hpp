@@ -1,0 +1,42 @@
+// The configuration of vsl-recognition (config/recognition.yaml): the head (kinematics and
+// calibration), the class model files, the segmentation and stereo options of the library, the
+// optional debug image and the status period. Every key is validated; a bad value throws
+// vsl::config::Error with one line "file:line: key.path: what".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/runtime/config.hpp"
+
+namespace vsl::config {
+class Node;
+}
+
+namespace vsl::recognition_daemon {
+
+inline constexpr const char* kDefaultDebugChannel = "RECOGNITION_DEBUG";
+
+struct RecognitionConfig {
+  // Paths as given in the file, resolved against the config file's directory.
+  std::string head_path;
+  std::optional<std::string> calibration_path;  // replaces the head file's own when given
+  std::vector<std::string> model_paths;         // one class model per file (at least one)
+  recognition::FrameRecognizerOptions options;  // segmentation: and stereo:
+  // An image_t on debug_channel per processed frame: the left image with the blobs outlined and
+  // the detections and percepts drawn and labelled. Off by default: it costs a copy, the drawing
+  // and 0.9 MB on the bus per frame.
+  bool debug_image = false;
+  std::string debug_channel = kDefaultDebugChannel;
+  // Period of the status line in the log and in the heartbeat's state, seconds.
+  double status_period_s = 10.0;
+};
+
+// Reads the `recognition:` section of the daemon's config root (which may also hold `runtime:`).
+// `channels` are the runtime's: the debug channel must not reuse one of them.
+RecognitionConfig read_recognition_config(const config::Node& root,
+                                          const runtime::Channels& channels = {});
+
+}  // namespace vsl::recognition_daemon

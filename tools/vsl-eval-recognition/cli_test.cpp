@@ -1,0 +1,66 @@
+// vsl-eval-recognition as a process: evaluates the shipped models on a few frames of the unseen
+// kitchen, as a table and as JSON; bad input exits 2 with one line.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "run_command.hpp"
+
+namespace {
+
+using vsl::testing::run_command;
+
+TEST(VslEvalRecognition, PrintsPrecisionRecallErrorAndTiming) {
+  const auto result = run_command(
+      {VSL_EVAL_RECOGNITION_BIN, "--world", "config/worlds/kitchen_galley.yaml", "--views", "3"},
+      300.0);
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  for (const char* text : {"3 stereo frames", "precision", "recall", "door ", "handle ", "2-3 m",
+                           "time per stereo pair: median"}) {
+    EXPECT_NE(result.out.find(text), std::string::npos) << text << "\n" << result.out;
+  }
+  EXPECT_NE(result.err.find("frame 3/3"), std::string::npos) << result.err;  // the status line
+}
+
+TEST(VslEvalRecognition, JsonOnStandardOutput) {
+  const auto result =
+      run_command({VSL_EVAL_RECOGNITION_BIN, "--world", "config/worlds/kitchen_galley.yaml",
+                   "--views", "2", "--seed", "5", "--json", "-", "-q"},
+                  300.0);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(result.err.empty()) << result.err;
+  ASSERT_FALSE(result.out.empty());
+  EXPECT_EQ(result.out.front(), '{') << result.out;
+  for (const char* key :
+       {"\"frames\":2", "\"type\":\"door\"", "\"type\":\"handle\"", "\"precision\":", "\"recall\":",
+        "\"error_by_distance_band\":", "\"median_error_m\":", "\"time_per_stereo_pair_ms\":"}) {
+    EXPECT_NE(result.out.find(key), std::string::npos) << key << "\n" << result.out;
+  }
+}
+
+TEST(VslEvalRecognition, BadInputExitsTwoWithOneLine) {
+  const std::vector<std::vector<std::string>> cases{
+      {},
+      {"--world", "config/worlds/kitchen.yaml", "--views", "-3"},
+      {"--world", "config/worlds/kitchen.yaml", "--max-distance", "0"},
+      {"--world", "no/such/world.yaml"},
+      {"--world", "config/worlds/kitchen.yaml", "--models", "no/such/model.yaml"},
+      {"--world", "config/worlds/kitchen.yaml", "--config", "config/localizer.yaml"},
+      {"--world", "config/worlds/kitchen.yaml", "--bogus"},
+  };
+  for (const auto& args : cases) {
+    std::vector<std::string> argv{VSL_EVAL_RECOGNITION_BIN};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto result = run_command(argv);
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    EXPECT_EQ(result.exit_code, 2) << joined << "\n" << result.err;
+    EXPECT_EQ(vsl::testing::line_count(result.err), 1) << joined << "\n" << result.err;
+  }
+  const auto help = run_command({VSL_EVAL_RECOGNITION_BIN, "--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--json FILE"), std::string::npos);
+}
+
+}  // namespace

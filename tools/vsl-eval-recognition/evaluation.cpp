@@ -1,0 +1,71 @@
+// Tallies of a recognition evaluation (evaluation.hpp).
+#include "evaluation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vsl::tools {
+
+int distance_band(double distance_m) {
+  return std::clamp(static_cast<int>(std::floor(distance_m)), 0, kDistanceBands - 1);
+}
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const double position = std::clamp(q, 0.0, 1.0) * static_cast<double>(values.size() - 1);
+  const auto below = static_cast<std::size_t>(std::floor(position));
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  const double t = position - static_cast<double>(below);
+  return values[below] + t * (values[above] - values[below]);
+}
+
+std::vector<recognition::PerceptMatch> tally_frame(
+    const std::vector<recognition::GroundTruthObject>& ground_truth,
+    const recognition::FrameResult& result, double frame_ms, double max_distance_m,
+    double max_error_m, EvaluationTally& tally) {
+  const Eigen::Vector3d ego_left_centre_m = result.ego_T_left_camera.translation();
+  std::vector<recognition::PerceptToMatch> percepts;
+  for (const recognition::FramePercept& p : result.percepts) {
+    percepts.push_back({p.type, p.ego_position_m, p.confidence});
+  }
+  const std::vector<recognition::PerceptMatch> matches =
+      recognition::match_percepts(percepts, ground_truth, max_error_m);
+  for (ClassTally& c : tally.classes) {
+    for (const recognition::GroundTruthObject& object : ground_truth) {
+      if (object.visible && object.type == c.type) ++c.ground_truth;
+    }
+    for (std::size_t i = 0; i < percepts.size(); ++i) {
+      if (percepts[i].type != c.type) continue;
+      if (matches[i].ground_truth < 0 &&
+          (percepts[i].ego_position_m - ego_left_centre_m).norm() > max_distance_m + max_error_m) {
+        ++c.out_of_range;
+        continue;
+      }
+      ++c.percepts;
+      if (matches[i].ground_truth >= 0) {
+        ++c.true_positives;
+        const auto& object = ground_truth[static_cast<std::size_t>(matches[i].ground_truth)];
+        c.errors_m[static_cast<std::size_t>(distance_band(object.distance_m))].push_back(
+            matches[i].error_m);
+        continue;
+      }
+      for (const recognition::GroundTruthObject& object : ground_truth) {
+        if (!object.visible && object.type == c.type &&
+            (object.ego_position_m - percepts[i].ego_position_m).norm() <= max_error_m) {
+          ++c.false_positives_on_other_objects;
+          break;
+        }
+      }
+    }
+  }
+  ++tally.frames;
+  tally.frame_ms.push_back(frame_ms);
+  tally.segmentation_ms.push_back(result.segmentation_ms);
+  tally.classification_ms.push_back(result.classification_ms);
+  tally.stereo_ms.push_back(result.stereo_ms);
+  return matches;
+}
+
+}  // namespace vsl::tools

@@ -1,0 +1,55 @@
+// Per-class tallies of a recognition evaluation (docs/recognition.md): percepts matched to the
+// ground truth (labelling.hpp: within 10 cm of a visible object of their type, one to one),
+// precision over every percept, recall over the visible objects, the 3D error of the matched
+// percepts by distance band, and the time per stereo pair.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/labelling.hpp"
+
+namespace vsl::tools {
+
+// Distance bands of the 3D error, by the object's distance from the left camera: [0, 1), [1, 2),
+// [2, 3), [3, 4] m.
+inline constexpr int kDistanceBands = 4;
+int distance_band(double distance_m);
+
+struct ClassTally {
+  std::string type;
+  int ground_truth = 0;  // visible objects of the type, summed over the frames
+  int percepts = 0;      // every percept of the type within range (see tally_frame)
+  int out_of_range = 0;  // percepts farther away: outside the evaluated range, not counted
+  int true_positives = 0;
+  // False positives within the match distance of a real object of the type that is not in the
+  // ground truth (farther than the limit, or less than half visible): not wrong, just not counted.
+  int false_positives_on_other_objects = 0;
+  std::array<std::vector<double>, kDistanceBands> errors_m;  // matched percepts' 3D errors
+
+  double precision() const { return percepts == 0 ? 1.0 : double(true_positives) / percepts; }
+  double recall() const { return ground_truth == 0 ? 1.0 : double(true_positives) / ground_truth; }
+};
+
+struct EvaluationTally {
+  std::vector<ClassTally> classes;  // one per evaluated type
+  int frames = 0;
+  std::vector<double> frame_ms, segmentation_ms, classification_ms, stereo_ms;
+};
+
+// Adds one frame: `ground_truth` marked (mark_ground_truth_visible), the recognizer's result and
+// its wall time. Percepts farther than max_distance_m + max_error_m from the left camera lie
+// outside the evaluated range (the ground truth stops at max_distance_m): they are counted apart,
+// not as false positives. Returns the match of each percept (match_percepts).
+std::vector<recognition::PerceptMatch> tally_frame(
+    const std::vector<recognition::GroundTruthObject>& ground_truth,
+    const recognition::FrameResult& result, double frame_ms, double max_distance_m,
+    double max_error_m, EvaluationTally& tally);
+
+// The q-quantile (0..1) of `values` by linear interpolation between order statistics; NaN when
+// empty.
+double quantile(std::vector<double> values, double q);
+
+}  // namespace vsl::tools

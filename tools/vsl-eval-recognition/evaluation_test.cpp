@@ -1,0 +1,69 @@
+// The evaluation's tallies: quantiles, distance bands, true and false positives, percepts beyond
+// the evaluated range.
+#include "evaluation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace vsl::tools {
+namespace {
+
+TEST(RecognitionEvaluation, QuantilesInterpolateBetweenOrderStatistics) {
+  EXPECT_DOUBLE_EQ(quantile({3.0, 1.0, 2.0}, 0.5), 2.0);
+  EXPECT_DOUBLE_EQ(quantile({1.0, 2.0, 3.0, 4.0}, 0.5), 2.5);
+  EXPECT_NEAR(quantile({0.0, 10.0}, 0.9), 9.0, 1e-12);
+  EXPECT_TRUE(std::isnan(quantile({}, 0.5)));
+  EXPECT_EQ(distance_band(0.2), 0);
+  EXPECT_EQ(distance_band(1.0), 1);
+  EXPECT_EQ(distance_band(3.99), 3);
+  EXPECT_EQ(distance_band(4.0), 3);  // the 4 m limit belongs to the last band
+}
+
+TEST(RecognitionEvaluation, TalliesPrecisionRecallErrorsAndRange) {
+  std::vector<recognition::GroundTruthObject> truth(3);
+  truth[0].type = "door";
+  truth[0].ego_position_m = {2.5, 0.0, 1.0};
+  truth[0].distance_m = 2.5;
+  truth[0].visible = true;
+  truth[1].type = "door";
+  truth[1].ego_position_m = {1.5, 1.0, 1.0};
+  truth[1].distance_m = 1.5;
+  truth[1].visible = true;
+  truth[2].type = "door";  // a door hidden behind the table: not ground truth
+  truth[2].ego_position_m = {1.0, -1.0, 0.5};
+  truth[2].distance_m = 1.2;
+  recognition::FrameResult result;
+  result.ego_T_left_camera.translation() = Eigen::Vector3d(0.0, 0.0, 1.0);
+  auto percept = [](Eigen::Vector3d p) {
+    recognition::FramePercept out;
+    out.type = "door";
+    out.ego_position_m = p;
+    out.confidence = 0.5f;
+    return out;
+  };
+  result.percepts = {percept({2.52, 0.0, 1.0}),   // true positive, 2 cm, band 2-3 m
+                     percept({1.0, -1.0, 0.52}),  // on the hidden door
+                     percept({6.0, 0.0, 1.0}),    // beyond range: not counted
+                     percept({0.5, 0.5, 1.0})};   // on nothing
+  EvaluationTally tally;
+  tally.classes.push_back(ClassTally{"door", 0, 0, 0, 0, 0, {}});
+  const auto matches = tally_frame(truth, result, 12.0, 4.0, 0.1, tally);
+  ASSERT_EQ(matches.size(), 4u);
+  EXPECT_EQ(matches[0].ground_truth, 0);
+  const ClassTally& c = tally.classes[0];
+  EXPECT_EQ(c.ground_truth, 2);
+  EXPECT_EQ(c.percepts, 3);
+  EXPECT_EQ(c.true_positives, 1);
+  EXPECT_EQ(c.false_positives_on_other_objects, 1);
+  EXPECT_EQ(c.out_of_range, 1);
+  EXPECT_NEAR(c.precision(), 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(c.recall(), 0.5, 1e-12);
+  ASSERT_EQ(c.errors_m[2].size(), 1u);
+  EXPECT_NEAR(c.errors_m[2][0], 0.02, 1e-12);
+  EXPECT_EQ(tally.frames, 1);
+  EXPECT_EQ(tally.frame_ms, std::vector<double>{12.0});
+}
+
+}  // namespace
+}  // namespace vsl::tools

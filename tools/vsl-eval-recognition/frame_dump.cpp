@@ -1,0 +1,65 @@
+// Pictures of evaluated frames (frame_dump.hpp).
+#include "frame_dump.hpp"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+namespace vsl::tools {
+namespace {
+
+// Pinhole projection of a left-camera point (distortion ignored: a picture, not a measurement).
+bool project(const head::CameraIntrinsics& k, const Eigen::Vector3d& p, cv::Point& out) {
+  if (p.z() <= 1e-3) return false;
+  out = cv::Point(static_cast<int>(std::lround(k.fx_px * p.x() / p.z() + k.cx_px)),
+                  static_cast<int>(std::lround(k.fy_px * p.y() / p.z() + k.cy_px)));
+  return true;
+}
+
+}  // namespace
+
+bool write_frame_dump(const std::string& path, const cv::Mat& left_bgr,
+                      const head::CameraIntrinsics& left_intrinsics,
+                      const recognition::FrameResult& result,
+                      const std::vector<recognition::GroundTruthObject>& ground_truth,
+                      const std::vector<recognition::PerceptMatch>& matches) {
+  cv::Mat picture = left_bgr.clone();
+  for (const recognition::Blob& blob : result.left_blobs) {
+    cv::Mat mask(left_bgr.size(), CV_8U, cv::Scalar(0));
+    for (const recognition::PixelRun& run : blob.runs) {
+      mask.row(run.v).colRange(run.u_begin, run.u_end).setTo(255);
+    }
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    cv::drawContours(picture, contours, -1, cv::Scalar(160, 160, 160), 1);
+  }
+  for (const recognition::Detection& d : result.left_detections) {
+    if (d.blob_index < 0 || d.blob_index >= static_cast<int>(result.left_blobs.size())) continue;
+    const recognition::Blob& b = result.left_blobs[static_cast<std::size_t>(d.blob_index)];
+    cv::rectangle(picture, cv::Point(b.u_min, b.v_min), cv::Point(b.u_max, b.v_max),
+                  cv::Scalar(0, 220, 255), 1);
+  }
+  const Eigen::Isometry3d left_T_ego = result.ego_T_left_camera.inverse();
+  for (const recognition::GroundTruthObject& object : ground_truth) {
+    cv::Point p;
+    if (object.visible && project(left_intrinsics, left_T_ego * object.ego_position_m, p)) {
+      cv::circle(picture, p, 6, cv::Scalar(255, 80, 0), 2);
+    }
+  }
+  for (std::size_t i = 0; i < result.percepts.size(); ++i) {
+    cv::Point p;
+    if (!project(left_intrinsics, left_T_ego * result.percepts[i].ego_position_m, p)) continue;
+    const bool hit = i < matches.size() && matches[i].ground_truth >= 0;
+    cv::drawMarker(picture, p, hit ? cv::Scalar(0, 200, 0) : cv::Scalar(0, 0, 255),
+                   cv::MARKER_CROSS, 10, 2);
+  }
+  try {
+    return cv::imwrite(path, picture);
+  } catch (const cv::Exception&) {
+    return false;
+  }
+}
+
+}  // namespace vsl::tools

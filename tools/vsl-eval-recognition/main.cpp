@@ -1,0 +1,347 @@
+// vsl-eval-recognition: runs the recognition pipeline (FrameRecognizer, paper §2.1 and §2.1.1) on
+// noisy stereo frames rendered from seeded robot poses in a world and judges its percepts against
+// the renderer's ground truth: precision and recall per class, the 3D error of matched percepts by
+// distance band, and the time per stereo pair.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "evaluation.hpp"
+#include "frame_dump.hpp"
+#include "json_writer.hpp"
+#include "recognition_config.hpp"
+#include "recognition_views.hpp"
+#include "vsl/config/node.hpp"
+#include "vsl/head/head_kinematics.hpp"
+#include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/recognizer_factory.hpp"
+#include "vsl/render/renderer.hpp"
+#include "vsl/world/world_io.hpp"
+
+namespace {
+
+using namespace vsl;
+
+constexpr const char* kUsage =
+    R"(usage: vsl-eval-recognition --world FILE [options]
+
+Evaluates recognition (docs/recognition.md): renders noisy stereo frames from seeded robot poses in
+the world (the head looking at the cupboards), runs the recognition pipeline with the settings of
+the recognition config, and prints per class the precision (over every percept within range) and the recall
+(over the objects within 4 m of the left camera and at least half visible in both images), the 3D
+error of the matched percepts (within 10 cm of their object's reference point) by distance band,
+and the time per stereo pair.
+  --world FILE          world model, e.g. config/worlds/kitchen_galley.yaml
+options:
+  --views N             robot poses (default 100)
+  --seed S              seed of the poses and the sensor noise (default 2; training uses 1)
+  --config FILE         recognition config: head, model files, segmentation and stereo options
+                        (default config/recognition.yaml)
+  --models LIST         comma-separated model files instead of the config's
+  --max-distance M      ground truth: objects within M metres of the left camera (default 4)
+  --match-distance M    a percept within M metres of its object is a true positive (default 0.1)
+  --dump DIR            write DIR/frame_NNNN.png per frame: the left image with the blobs
+                        (grey), detections (yellow), visible ground truth (blue circles) and
+                        percepts (green crosses: true positives, red: false ones); and
+                        DIR/frame_NNNN.txt: the objects in view, their pixel counts, distances
+                        and whether they count as ground truth
+  --json FILE           also write the results as JSON (- for standard output, then no table)
+  -q, --quiet           no status line
+exit codes: 0 ok, 1 an output file could not be written, 2 bad usage or input file
+)";
+
+[[noreturn]] void usage_error(const std::string& what) {
+  std::cerr << "vsl-eval-recognition: " << what << " (see vsl-eval-recognition --help)\n";
+  std::exit(2);
+}
+
+std::uint64_t parse_count(const std::string& text, const std::string& option) {
+  try {
+    std::size_t used = 0;
+    const unsigned long long value = std::stoull(text, &used);
+    if (used == text.size() && text[0] != '-') return value;
+  } catch (const std::exception&) {
+  }
+  usage_error(option + " wants a non-negative integer, got '" + text + "'");
+}
+
+double parse_positive(const std::string& text, const std::string& option) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(value) && value > 0.0) return value;
+  } catch (const std::exception&) {
+  }
+  usage_error(option + " wants a positive number, got '" + text + "'");
+}
+
+struct Options {
+  std::string world_file;
+  std::uint64_t views = 100;
+  std::uint64_t seed = 2;
+  std::string config_file = "config/recognition.yaml";
+  std::vector<std::string> model_files;
+  double max_distance_m = 4.0;
+  double match_distance_m = 0.10;
+  std::string json_file;
+  std::string dump_dir;
+  bool quiet = false;
+};
+
+Options parse(int argc, char** argv) {
+  Options options;
+  auto value_of = [&](int& i, const std::string& arg) -> std::string {
+    if (i + 1 >= argc) usage_error(arg + " needs a value");
+    return argv[++i];
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      std::exit(0);
+    } else if (arg == "--world") {
+      options.world_file = value_of(i, arg);
+    } else if (arg == "--views") {
+      options.views = parse_count(value_of(i, arg), arg);
+      if (options.views == 0 || options.views > 1000000) usage_error("--views wants 1..1000000");
+    } else if (arg == "--seed") {
+      options.seed = parse_count(value_of(i, arg), arg);
+    } else if (arg == "--config") {
+      options.config_file = value_of(i, arg);
+    } else if (arg == "--models") {
+      std::stringstream list(value_of(i, arg));
+      for (std::string file; std::getline(list, file, ',');) {
+        if (file.empty()) usage_error("--models: empty file name");
+        options.model_files.push_back(file);
+      }
+      if (options.model_files.empty()) usage_error("--models wants a comma-separated list");
+    } else if (arg == "--max-distance") {
+      options.max_distance_m = parse_positive(value_of(i, arg), arg);
+    } else if (arg == "--match-distance") {
+      options.match_distance_m = parse_positive(value_of(i, arg), arg);
+    } else if (arg == "--dump") {
+      options.dump_dir = value_of(i, arg);
+    } else if (arg == "--json") {
+      options.json_file = value_of(i, arg);
+    } else if (arg == "-q" || arg == "--quiet") {
+      options.quiet = true;
+    } else {
+      usage_error("unknown argument " + arg);
+    }
+  }
+  if (options.world_file.empty()) usage_error("--world is required");
+  return options;
+}
+
+const char* const kBandNames[tools::kDistanceBands] = {"0-1 m", "1-2 m", "2-3 m", "3-4 m"};
+
+void print_table(const Options& options, const tools::EvaluationTally& tally) {
+  std::printf(
+      "world %s: %d stereo frames (seed %llu), objects within %.1f m, at least half "
+      "visible in both images\n",
+      options.world_file.c_str(), tally.frames, static_cast<unsigned long long>(options.seed),
+      options.max_distance_m);
+  std::printf("%-8s %8s %8s %8s %8s %10s %8s %10s %10s\n", "class", "objects", "percepts", "true+",
+              "false+", "precision", "recall", "false+ on", "beyond");
+  std::printf("%-8s %8s %8s %8s %8s %10s %8s %10s %10s\n", "", "", "", "", "", "", "", "non-truth",
+              "range");
+  for (const tools::ClassTally& c : tally.classes) {
+    std::printf("%-8s %8d %8d %8d %8d %9.1f%% %7.1f%% %10d %10d\n", c.type.c_str(), c.ground_truth,
+                c.percepts, c.true_positives, c.percepts - c.true_positives, 100.0 * c.precision(),
+                100.0 * c.recall(), c.false_positives_on_other_objects, c.out_of_range);
+  }
+  std::printf(
+      "(false+ on non-truth: false positives within the match distance of a real object of "
+      "the type that is not ground truth, i.e. less than half visible; beyond range: "
+      "percepts farther than %.2f m, not counted)\n",
+      options.max_distance_m + options.match_distance_m);
+  std::printf("3D error of matched percepts by distance from the left camera (cm):\n");
+  std::printf("%-8s %-7s %6s %8s %8s\n", "class", "band", "n", "median", "p90");
+  for (const tools::ClassTally& c : tally.classes) {
+    for (int b = 0; b < tools::kDistanceBands; ++b) {
+      const auto& errors = c.errors_m[static_cast<std::size_t>(b)];
+      if (errors.empty()) {
+        std::printf("%-8s %-7s %6d %8s %8s\n", c.type.c_str(), kBandNames[b], 0, "-", "-");
+        continue;
+      }
+      std::printf("%-8s %-7s %6zu %8.2f %8.2f\n", c.type.c_str(), kBandNames[b], errors.size(),
+                  100.0 * tools::quantile(errors, 0.5), 100.0 * tools::quantile(errors, 0.9));
+    }
+  }
+  std::printf(
+      "time per stereo pair: median %.2f ms, p90 %.2f ms (median segmentation %.2f, "
+      "classification %.2f, stereo %.2f ms)\n",
+      tools::quantile(tally.frame_ms, 0.5), tools::quantile(tally.frame_ms, 0.9),
+      tools::quantile(tally.segmentation_ms, 0.5), tools::quantile(tally.classification_ms, 0.5),
+      tools::quantile(tally.stereo_ms, 0.5));
+}
+
+void write_json(std::ostream& out, const Options& options, const tools::EvaluationTally& tally) {
+  tools::JsonWriter json(out);
+  json.begin_object();
+  json.key("world").string(options.world_file);
+  json.key("frames").number(tally.frames);
+  json.key("seed").number(static_cast<double>(options.seed));
+  json.key("max_distance_m").number(options.max_distance_m);
+  json.key("match_distance_m").number(options.match_distance_m);
+  json.key("classes").begin_array();
+  for (const tools::ClassTally& c : tally.classes) {
+    json.begin_object();
+    json.key("type").string(c.type);
+    json.key("ground_truth_objects").number(c.ground_truth);
+    json.key("percepts").number(c.percepts);
+    json.key("true_positives").number(c.true_positives);
+    json.key("false_positives").number(c.percepts - c.true_positives);
+    json.key("false_positives_on_objects_outside_ground_truth")
+        .number(c.false_positives_on_other_objects);
+    json.key("percepts_beyond_range").number(c.out_of_range);
+    json.key("precision").number(c.precision());
+    json.key("recall").number(c.recall());
+    json.key("error_by_distance_band").begin_array();
+    for (int b = 0; b < tools::kDistanceBands; ++b) {
+      const auto& errors = c.errors_m[static_cast<std::size_t>(b)];
+      json.begin_object();
+      json.key("min_distance_m").number(b);
+      json.key("max_distance_m").number(b + 1);
+      json.key("matched").number(static_cast<double>(errors.size()));
+      json.key("median_error_m").number(tools::quantile(errors, 0.5));
+      json.key("p90_error_m").number(tools::quantile(errors, 0.9));
+      json.end_object();
+    }
+    json.end_array();
+    json.end_object();
+  }
+  json.end_array();
+  json.key("time_per_stereo_pair_ms").begin_object();
+  json.key("median").number(tools::quantile(tally.frame_ms, 0.5));
+  json.key("p90").number(tools::quantile(tally.frame_ms, 0.9));
+  json.key("median_segmentation").number(tools::quantile(tally.segmentation_ms, 0.5));
+  json.key("median_classification").number(tools::quantile(tally.classification_ms, 0.5));
+  json.key("median_stereo").number(tools::quantile(tally.stereo_ms, 0.5));
+  json.end_object();
+  json.end_object();
+  out << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Options options = parse(argc, argv);
+    const tools::RecognitionConfig config = tools::read_recognition_config(options.config_file);
+    const std::vector<std::string> model_files =
+        options.model_files.empty() ? config.model_files : options.model_files;
+    const world::WorldModel world = world::load_world(options.world_file);
+    const head::HeadKinematics head =
+        head::HeadKinematics::load(config.head_file, config.calibration_file);
+    std::vector<std::unique_ptr<recognition::ClassRecognizer>> recognizers =
+        recognition::load_recognizers(model_files);
+    tools::EvaluationTally tally;
+    std::vector<std::string> types;
+    for (const auto& recognizer : recognizers) {
+      types.push_back(recognizer->type());
+      tally.classes.push_back(tools::ClassTally{recognizer->type(), 0, 0, 0, 0, 0, {}});
+    }
+    const recognition::FrameRecognizer recognizer(config.options, head, std::move(recognizers));
+    const render::Renderer renderer(world);
+    const tools::ViewSampler sampler(world, head);
+    const tools::GroundTruthRenderer truth_renderer(world, head, types);
+    recognition::GroundTruthOptions truth_options;
+    truth_options.max_distance_m = options.max_distance_m;
+
+    const bool tty = isatty(2) != 0;
+    for (std::uint64_t k = 0; k < options.views; ++k) {
+      const tools::ViewPose view = sampler.sample(options.seed, k);
+      const tools::StereoRender frame =
+          tools::render_view(renderer, head, view, (options.seed << 32) + k);
+      std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
+      recognition::mark_ground_truth_visible(truth, truth_options);
+      const auto start = std::chrono::steady_clock::now();
+      const recognition::FrameResult result =
+          recognizer.recognize(frame.left.image, frame.right.image, view.joints);
+      const double frame_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+      const std::vector<recognition::PerceptMatch> matches = tools::tally_frame(
+          truth, result, frame_ms, options.max_distance_m, options.match_distance_m, tally);
+      if (!options.dump_dir.empty()) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04llu.png", static_cast<unsigned long long>(k));
+        const std::string path = (std::filesystem::path(options.dump_dir) / name).string();
+        if (!tools::write_frame_dump(path, frame.left.image, head.calibration().left, result, truth,
+                                     matches)) {
+          std::cerr << "vsl-eval-recognition: cannot write " << path << "\n";
+          return 1;
+        }
+        std::ofstream text(path.substr(0, path.size() - 4) + ".txt");
+        text << "# object type distance_m left_visible/unoccluded_px right_visible/unoccluded_px "
+                "ground_truth\n";
+        for (const recognition::GroundTruthObject& object : truth) {
+          text << world.objects[object.object_index].id << " " << object.type << " "
+               << object.distance_m << " " << object.left_visible_px << "/"
+               << object.left_unoccluded_px << " " << object.right_visible_px << "/"
+               << object.right_unoccluded_px << " " << (object.visible ? "yes" : "no") << "\n";
+        }
+        text << "# percept type left_px right_px distance_m matched_object error_m\n";
+        for (std::size_t i = 0; i < result.percepts.size(); ++i) {
+          const recognition::FramePercept& p = result.percepts[i];
+          text << "percept " << p.type << " " << p.left_px.x() << "," << p.left_px.y() << " "
+               << p.right_px.x() << "," << p.right_px.y() << " "
+               << (p.ego_position_m - result.ego_T_left_camera.translation()).norm() << " ";
+          if (matches[i].ground_truth >= 0) {
+            const auto& object = truth[static_cast<std::size_t>(matches[i].ground_truth)];
+            text << world.objects[object.object_index].id << " " << matches[i].error_m << "\n";
+          } else {
+            text << "- -\n";
+          }
+        }
+      }
+      if (!options.quiet) {
+        const std::uint64_t done = k + 1;
+        std::string text = "frame " + std::to_string(done) + "/" + std::to_string(options.views);
+        for (const tools::ClassTally& c : tally.classes) {
+          char item[96];
+          std::snprintf(item, sizeof item, ", %s P %.1f%% R %.1f%%", c.type.c_str(),
+                        100.0 * c.precision(), 100.0 * c.recall());
+          text += item;
+        }
+        if (tty) {
+          std::fprintf(stderr, "\r\033[Kvsl-eval-recognition: %s%s", text.c_str(),
+                       done == options.views ? "\n" : "");
+        } else if (done == options.views || done * 10 / options.views != k * 10 / options.views) {
+          std::fprintf(stderr, "vsl-eval-recognition: %s\n", text.c_str());
+        }
+      }
+    }
+
+    if (options.json_file != "-") print_table(options, tally);
+    if (options.json_file == "-") {
+      write_json(std::cout, options, tally);
+    } else if (!options.json_file.empty()) {
+      std::ofstream out(options.json_file);
+      if (out) write_json(out, options, tally);
+      if (!out) {
+        std::cerr << "vsl-eval-recognition: cannot write " << options.json_file << "\n";
+        return 1;
+      }
+    }
+  } catch (const config::Error& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "vsl-eval-recognition: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
