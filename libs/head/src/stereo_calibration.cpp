@@ -31,6 +31,33 @@ CameraIntrinsics intrinsics(const Node& node) {
   return out;
 }
 
+// A rows x cols matrix, row-major: [[...], [...], ...] of finite numbers.
+template <int Rows, int Cols>
+Eigen::Matrix<double, Rows, Cols> matrix(const Node& node) {
+  if (!node.is_sequence() || node.size() != Rows) {
+    node.fail("expected a " + std::to_string(Rows) + "x" + std::to_string(Cols) + " matrix as " +
+              std::to_string(Rows) + " rows of " + std::to_string(Cols) + " numbers");
+  }
+  Eigen::Matrix<double, Rows, Cols> out;
+  for (int r = 0; r < Rows; ++r) {
+    const auto row = node[static_cast<std::size_t>(r)].as_array<Cols>();
+    for (int c = 0; c < Cols; ++c) out(r, c) = row[static_cast<std::size_t>(c)];
+  }
+  return out;
+}
+
+StereoRectification rectification(const Node& node) {
+  node.expect_map();
+  node.expect_keys({"R1", "R2", "P1", "P2", "Q"});
+  StereoRectification out;
+  out.left_rect_R_left = detail::rotation_matrix(node.at("R1"));
+  out.right_rect_R_right = detail::rotation_matrix(node.at("R2"));
+  out.left_projection = matrix<3, 4>(node.at("P1"));
+  out.right_projection = matrix<3, 4>(node.at("P2"));
+  out.disparity_to_depth = matrix<4, 4>(node.at("Q"));
+  return out;
+}
+
 }  // namespace
 
 Eigen::Isometry3d StereoCalibration::right_T_left() const {
@@ -46,7 +73,7 @@ Eigen::Isometry3d StereoCalibration::left_T_right() const {
 
 StereoCalibration stereo_calibration_from(const Node& root) {
   root.expect_map();
-  root.expect_keys({"left", "right", "stereo", "rms_reprojection_error_px"});
+  root.expect_keys({"left", "right", "stereo", "rms_reprojection_error_px", "rectification"});
   StereoCalibration out;
   out.left = intrinsics(root.at("left"));
   out.right = intrinsics(root.at("right"));
@@ -63,6 +90,7 @@ StereoCalibration stereo_calibration_from(const Node& root) {
   if (const auto rms = root.find("rms_reprojection_error_px")) {
     out.rms_reprojection_error_px = rms->as_double_in(0.0, 100.0);
   }
+  if (const auto rect = root.find("rectification")) out.rectification = rectification(*rect);
   return out;
 }
 

@@ -117,5 +117,29 @@ TEST(StereoCalibration, MissingFileNamesIt) {
   }
 }
 
+TEST(StereoCalibration, OptionalRectification) {
+  std::string text = kGood;
+  text += R"(rectification:
+  R1: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+  R2: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+  P1: [[500, 0, 320, 0], [0, 500, 240, 0], [0, 0, 1, 0]]
+  P2: [[500, 0, 320, -45], [0, 500, 240, 0], [0, 0, 1, 0]]
+  Q: [[1, 0, 0, -320], [0, 1, 0, -240], [0, 0, 0, 500], [0, 0, 11.1, 0]]
+)";
+  const StereoCalibration calib = parse(text);
+  ASSERT_TRUE(calib.rectification.has_value());
+  EXPECT_EQ(calib.rectification->right_projection(0, 3), -45.0);
+  EXPECT_EQ(calib.rectification->disparity_to_depth(3, 2), 11.1);
+  EXPECT_FALSE(parse(kGood).rectification.has_value());
+  const std::size_t at = text.find("P2: [[500, 0, 320, -45]");
+  text.replace(at, 23, "P2: [[500, 0, 320]");
+  try {
+    parse(text);
+    ADD_FAILURE() << "a 3-column P2 must not load";
+  } catch (const config::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("rectification.P2"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace vsl::head

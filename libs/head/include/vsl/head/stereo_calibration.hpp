@@ -17,6 +17,18 @@ class Node;
 
 namespace vsl::head {
 
+// cv::stereoRectify's outputs for the calibrated pair: rectified camera frame <- raw camera frame
+// rotations (R1, R2), the rectified projections (P1, P2: 3x4, pixels) and the disparity-to-depth
+// matrix Q (4x4). Optional in the file: the calibration tool writes it, recognition works on raw
+// images and does not need it.
+struct StereoRectification {
+  Eigen::Matrix3d left_rect_R_left = Eigen::Matrix3d::Identity();                      // R1
+  Eigen::Matrix3d right_rect_R_right = Eigen::Matrix3d::Identity();                    // R2
+  Eigen::Matrix<double, 3, 4> left_projection = Eigen::Matrix<double, 3, 4>::Zero();   // P1
+  Eigen::Matrix<double, 3, 4> right_projection = Eigen::Matrix<double, 3, 4>::Zero();  // P2
+  Eigen::Matrix4d disparity_to_depth = Eigen::Matrix4d::Zero();                        // Q
+};
+
 struct StereoCalibration {
   CameraIntrinsics left;
   CameraIntrinsics right;
@@ -25,6 +37,7 @@ struct StereoCalibration {
   Eigen::Vector3d right_t_left_m{-0.09, 0.0, 0.0};
   // RMS reprojection error the calibration reported (pixels), when the file gives it.
   std::optional<double> rms_reprojection_error_px;
+  std::optional<StereoRectification> rectification;
 
   // X_right = right_T_left() * X_left.
   Eigen::Isometry3d right_T_left() const;
