@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "driver_setup.hpp"
 #include "recognition_setup.hpp"
 #include "sim_head_setup.hpp"
 #include "vsl/config/node.hpp"
@@ -58,6 +59,14 @@ void load_recognition_config(const std::string& path) {
   EXPECT_FALSE(setup.config.model_paths.empty()) << path;
 }
 
+// Everything a real stereo driver (vsl-v4l2-stereo, vsl-libcamera-stereo) loads before it opens a
+// camera: its config section and the head kinematics with their calibration.
+void load_stereo_driver_config(const std::string& path, const std::string& section) {
+  const auto setup =
+      vsl::stereo_capture::load_driver_setup(vsl::config::Node::load_file(path), section);
+  EXPECT_FALSE(setup.head.joint_names().empty()) << path;
+}
+
 // A class model file as the recognition pipeline loads it.
 void load_recognizer_file(const std::string& path) {
   const auto recognizer = vsl::recognition::load_recognizer(path);
@@ -81,6 +90,10 @@ const std::vector<Loader>& loaders() {
       {"config/sim_head.yaml", load_sim_head_config},
       {"config/recognition.yaml", load_recognition_config},
       {"config/recognition/", load_recognizer_file},
+      {"config/v4l2_stereo.yaml",
+       [](const std::string& p) { load_stereo_driver_config(p, "v4l2_stereo"); }},
+      {"config/libcamera_stereo.yaml",
+       [](const std::string& p) { load_stereo_driver_config(p, "libcamera_stereo"); }},
   };
   return kLoaders;
 }
