@@ -4,6 +4,8 @@
 // distance band, and the time per stereo pair.
 #include <unistd.h>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -55,7 +57,8 @@ options:
                         (grey), detections (yellow), visible ground truth (blue circles) and
                         percepts (green crosses: true positives, red: false ones); and
                         DIR/frame_NNNN.txt: the objects in view, their pixel counts, distances
-                        and whether they count as ground truth
+                        and whether they count as ground truth; DIR/frame_NNNN_raw.png: the
+                        left image as the recognizer saw it
   --json FILE           also write the results as JSON (- for standard output, then no table)
   -q, --quiet           no status line
 exit codes: 0 ok, 1 an output file could not be written, 2 bad usage or input file
@@ -254,7 +257,7 @@ int main(int argc, char** argv) {
       tally.classes.push_back(tools::ClassTally{recognizer->type(), 0, 0, 0, 0, 0, {}});
     }
     const recognition::FrameRecognizer recognizer(config.options, head, std::move(recognizers));
-    const render::Renderer renderer(world);
+    const render::Renderer renderer(world, tools::simulated_camera_options());
     const tools::ViewSampler sampler(world, head);
     const tools::GroundTruthRenderer truth_renderer(world, head, types);
     recognition::GroundTruthOptions truth_options;
@@ -282,6 +285,11 @@ int main(int argc, char** argv) {
         if (!tools::write_frame_dump(path, frame.left.image, head.calibration().left, result, truth,
                                      matches)) {
           std::cerr << "vsl-eval-recognition: cannot write " << path << "\n";
+          return 1;
+        }
+        // The image as the recognizer saw it, without the drawing, to inspect the segmentation.
+        if (!cv::imwrite(path.substr(0, path.size() - 4) + "_raw.png", frame.left.image)) {
+          std::cerr << "vsl-eval-recognition: cannot write the raw image beside " << path << "\n";
           return 1;
         }
         std::ofstream text(path.substr(0, path.size() - 4) + ".txt");

@@ -216,7 +216,7 @@ void collect_from_world(const Options& options, const tools::RecognitionConfig& 
   const world::WorldModel world = world::load_world(options.world_file);
   const head::HeadKinematics head =
       head::HeadKinematics::load(config.head_file, config.calibration_file);
-  const render::Renderer renderer(world);
+  const render::Renderer renderer(world, tools::simulated_camera_options());
   const tools::ViewSampler sampler(world, head);
   std::vector<std::string> object_types;
   for (const world::ObjectModel& object : world.objects) object_types.push_back(object.type);

@@ -41,6 +41,12 @@ head::CameraIntrinsics widened(head::CameraIntrinsics intrinsics, int margin_px)
 
 }  // namespace
 
+render::RenderOptions simulated_camera_options() {
+  render::RenderOptions options;  // noise and exposure variation as config/sim_head.yaml
+  options.samples = 2;            // as config/sim_head.yaml: render.samples
+  return options;
+}
+
 ViewSampler::ViewSampler(const world::WorldModel& world, const head::HeadKinematics& head,
                          ViewSamplingOptions options)
     : world_(world), head_(head), options_(std::move(options)) {

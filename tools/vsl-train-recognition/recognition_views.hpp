@@ -38,6 +38,12 @@ struct ViewSamplingOptions {
   std::vector<std::string> target_types{"door", "drawer_front", "handle"};
 };
 
+// How the simulated head renders its frames (config/sim_head.yaml's render section): sensor noise,
+// exposure variation and 2x2 area sampling, so that a sub-pixel gap between two doors blends into
+// its pixels as a real sensor integrates it instead of vanishing from the rows that a point sample
+// misses. Training and evaluation must see the frames the daemon will see.
+render::RenderOptions simulated_camera_options();
+
 // A robot pose (ego on the floor, upright) and the head's joint state.
 struct ViewPose {
   Eigen::Isometry3d world_T_ego = Eigen::Isometry3d::Identity();

@@ -45,21 +45,36 @@ std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& o
   // (1).
   const MeanShiftParams params{options.spatial_bandwidth_px, options.colour_bandwidth_rgb,
                                options.max_mean_shift_iterations};
+  // Regions below min_region_px (the 1-5 px fragments a thin handle bar breaks into, where every
+  // pixel blends brass and door by another fraction) take no part in the density (their
+  // centroids and colours are noise) but are kept, with their own feature as their mode, to join
+  // a touching piece of the same chromaticity below.
   std::vector<int> kept_index(map.regions.size(), -1);
   std::vector<Feature5> features;
   std::vector<double> weights;
-  for (std::size_t r = 0; r < map.regions.size(); ++r) {
-    const GrownRegion& region = map.regions[r];
-    if (region.pixel_count < options.min_region_px) continue;
-    const double n = region.pixel_count;
-    const Eigen::Vector2d centroid_px(region.u_sum_px / n, region.v_sum_px / n);
-    const Eigen::Vector3d mean_rgb(region.rgb_sum[0] / (255.0 * n), region.rgb_sum[1] / (255.0 * n),
-                                   region.rgb_sum[2] / (255.0 * n));
-    kept_index[r] = static_cast<int>(features.size());
-    features.push_back(scaled_feature(centroid_px, mean_rgb, params));
-    weights.push_back(n);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t r = 0; r < map.regions.size(); ++r) {
+      const GrownRegion& region = map.regions[r];
+      if (region.barrier || (region.pixel_count < options.min_region_px) != (pass == 1)) continue;
+      const double n = region.pixel_count;
+      const Eigen::Vector2d centroid_px(region.u_sum_px / n, region.v_sum_px / n);
+      const Eigen::Vector3d mean_rgb(region.rgb_sum[0] / (255.0 * n),
+                                     region.rgb_sum[1] / (255.0 * n),
+                                     region.rgb_sum[2] / (255.0 * n));
+      kept_index[r] = static_cast<int>(features.size());
+      features.push_back(scaled_feature(centroid_px, mean_rgb, params));
+      weights.push_back(n);
+    }
+    if (pass == 0) features.reserve(features.size() + map.regions.size() / 2);
   }
-  const std::vector<Feature5> modes = mean_shift_modes(features, weights, params.max_iterations);
+  std::size_t large_count = 0;
+  while (large_count < weights.size() && weights[large_count] >= options.min_region_px) {
+    ++large_count;
+  }
+  std::vector<Feature5> modes = mean_shift_modes(
+      std::vector<Feature5>(features.begin(), features.begin() + large_count),
+      std::vector<double>(weights.begin(), weights.begin() + large_count), params.max_iterations);
+  modes.insert(modes.end(), features.begin() + large_count, features.end());
 
   // Union of touching (4-connected) kept regions whose modes coincide in
   // colour. The spatial part of the modes is not compared: on a large uniform
@@ -87,8 +102,9 @@ std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& o
     // between the small pieces of one small object (never across an edge
     // between large regions: two doors behind a faint gap share their mode).
     const bool small_pieces = std::max(weights[ka], weights[kb]) <= options.max_facet_px;
+    const bool fragment = std::min(weights[ka], weights[kb]) < options.min_region_px;
     const bool same_mode =
-        (!t.across_edge || small_pieces) &&
+        !fragment && (!t.across_edge || small_pieces) &&
         (modes[ka].tail<3>() - modes[kb].tail<3>()).squaredNorm() < max_mode_distance2;
     // Shaded facets of one small object (a handle bar): across their edge, same
     // chromaticity.

@@ -26,8 +26,8 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
   section.expect_keys({"max_neighbour_difference_rgb", "max_colour_volume_rgb3", "max_region_px",
                        "min_region_px", "spatial_bandwidth_px", "colour_bandwidth_rgb",
                        "max_mean_shift_iterations", "max_mode_distance", "min_blob_px",
-                       "edge_half_length_px", "max_edge_brightness_step_rgb",
-                       "max_chromaticity_difference", "max_facet_px"});
+                       "min_line_contrast_rgb", "line_bridge_px", "max_chromaticity_difference",
+                       "max_facet_px"});
   if (const auto v = section.find("max_neighbour_difference_rgb")) {
     out.max_neighbour_difference_rgb = v->as_double_in(0.0, 1.0);
   }
@@ -50,12 +50,10 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
     out.max_mode_distance = v->as_double_in(0.0, 10.0);
   }
   if (const auto v = section.find("min_blob_px")) out.min_blob_px = int_in(*v, 1, 100000000);
-  if (const auto v = section.find("edge_half_length_px")) {
-    out.edge_half_length_px = int_in(*v, 0, 100);
+  if (const auto v = section.find("min_line_contrast_rgb")) {
+    out.min_line_contrast_rgb = v->as_double_in(0.0, 1.0);
   }
-  if (const auto v = section.find("max_edge_brightness_step_rgb")) {
-    out.max_edge_brightness_step_rgb = v->as_double_in(0.0, 1.0);
-  }
+  if (const auto v = section.find("line_bridge_px")) out.line_bridge_px = int_in(*v, 0, 100);
   if (const auto v = section.find("max_chromaticity_difference")) {
     out.max_chromaticity_difference = v->as_double_in(0.0, 1.0);
   }

@@ -18,6 +18,7 @@
 #include "segmentation_region_growing.hpp"
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -69,51 +70,112 @@ inline bool admitted_step(const std::uint8_t* p, const std::uint8_t* q, int max_
          std::abs(int{p[1]} - int{q[1]}) <= max_step && std::abs(int{p[2]} - int{q[2]}) <= max_step;
 }
 
-// Brightness R + G + B summed over 2 k + 1 pixels along the rows (along_rows)
-// or the columns (border pixels replicated): the weak gap between two doors is
-// a faint line along one of them, which the sum lifts above the sensor noise
-// that it averages down.
-std::vector<std::int32_t> brightness_line_sums(const cv::Mat& bgr, int k, bool along_rows) {
+// Thin-line barrier (SegmentationOptions::min_line_contrast_rgb): the reveal between two flush
+// doors or drawer fronts renders as a faint line 0.5-2 px wide, brighter or darker than the fronts
+// on both sides but of their hue (the shaded side face of a front, or the carcass behind the gap),
+// and only a few grey levels above the sensor noise. A pixel (or a pair of pixels, when the line
+// straddles two columns) is on such a line when its brightness R + G + B stands out from BOTH
+// neighbours across the line by at least 3 c (in the same direction: a line, not a step), and no
+// channel moves against the others by more than the noise (a change of brightness, not of hue: a
+// 2 px brass handle bar on a blue door is a colour edge that criterion (1) of region growing
+// handles, and must stay a region of its own, not become barrier). Tested across rows (vertical
+// lines) and across columns (horizontal lines).
+constexpr int kHueNoiseGrey = 6;  // about 3 sigma of the renderer's and a webcam's sensor noise
+constexpr int kFlatGrey = 9;      // about 3 sigma of the difference of two noisy pixels
+
+struct LineTest {
+  int threshold;  // on the brightness difference to each side, grey levels summed over R, G, B
+  // `step` is the distance in bytes from one pixel to the next across the line: the surface two
+  // pixels beyond the line's neighbours, on both sides, must be flat (within kFlatGrey of them per
+  // channel). A reveal runs through a flat front; the highlight along a handle bar (a bright line
+  // of the bar's own hue) has the bar's shaded facets and then the door beside it, and must not
+  // become barrier that cuts the bar apart.
+  std::ptrdiff_t step;
+  bool operator()(const std::uint8_t* before, const std::uint8_t* line_a,
+                  const std::uint8_t* line_b, const std::uint8_t* after) const {
+    for (int c = 0; c < 3; ++c) {
+      if (std::abs(int{before[c]} - int{before[c - 2 * step]}) > kFlatGrey ||
+          std::abs(int{after[c]} - int{after[c + 2 * step]}) > kFlatGrey) {
+        return false;
+      }
+    }
+    // line_a == line_b: a 1 px line; otherwise the pair straddled by a thinner one (weights 1/2).
+    int side_1 = 0, side_2 = 0;
+    int deviation[3];
+    for (int c = 0; c < 3; ++c) {
+      const int line2 = int{line_a[c]} + int{line_b[c]};
+      side_1 += line2 - 2 * int{before[c]};
+      side_2 += line2 - 2 * int{after[c]};
+      deviation[c] = 2 * line2 - 2 * int{before[c]} - 2 * int{after[c]};  // 4 x per-channel
+    }
+    const int t2 = 2 * threshold;
+    if (!((side_1 >= t2 && side_2 >= t2) || (side_1 <= -t2 && side_2 <= -t2))) return false;
+    // Same hue: the deviation is the surroundings' colour scaled, deviation ~ k (before + after),
+    // within the noise plus a third of it per channel.
+    double surround[3];
+    double surround_sum = 0.0, deviation_sum = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      surround[c] = 2.0 * (int{before[c]} + int{after[c]});  // 4 x mean surroundings
+      surround_sum += surround[c];
+      deviation_sum += deviation[c];
+    }
+    if (surround_sum <= 0.0) return true;  // black surroundings: no hue to compare
+    const double k = deviation_sum / surround_sum;
+    for (int c = 0; c < 3; ++c) {
+      const double expected = k * surround[c];
+      if (std::abs(deviation[c] - expected) > 4.0 * kHueNoiseGrey + std::abs(expected) / 3.0) {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+// The barrier map (CV_8U, 1 on line pixels). Lines found across rows are bridged along the columns
+// (and those found across columns along the rows) over breaks of up to 2 bridge_px pixels: where
+// the reveal is narrower than the renderer's sample spacing, or the noise hides it, for a few rows,
+// one row without barrier would let the two doors grow into one region. The lines are widened by a
+// pixel across before bridging, so that the pieces of a slanted line (a vertical seen with the
+// neck pitched) still overlap across their break.
+cv::Mat line_barrier(const cv::Mat& bgr, const SegmentationOptions& options) {
   const int width = bgr.cols;
   const int height = bgr.rows;
-  std::vector<std::int32_t> brightness(static_cast<std::size_t>(width) * height);
+  cv::Mat across_rows(height, width, CV_8U, cv::Scalar(0));     // vertical lines
+  cv::Mat across_columns(height, width, CV_8U, cv::Scalar(0));  // horizontal lines
+  if (options.min_line_contrast_rgb <= 0.0) return across_rows;
+  const int threshold = static_cast<int>(std::ceil(3.0 * options.min_line_contrast_rgb * 255.0));
+  const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(bgr.step[0]);
+  const LineTest across_row{threshold, 3};
+  const LineTest across_column{threshold, step};
+  // Three pixels of margin: the test reads the line's neighbours and two pixels beyond them.
   for (int v = 0; v < height; ++v) {
     const std::uint8_t* row = bgr.ptr<std::uint8_t>(v);
-    std::int32_t* out = brightness.data() + static_cast<std::size_t>(v) * width;
-    for (int u = 0; u < width; ++u) out[u] = row[3 * u] + row[3 * u + 1] + row[3 * u + 2];
-  }
-  std::vector<std::int32_t> sums(brightness.size());
-  if (along_rows) {
-    for (int v = 0; v < height; ++v) {
-      const std::int32_t* in = brightness.data() + static_cast<std::size_t>(v) * width;
-      std::int32_t* out = sums.data() + static_cast<std::size_t>(v) * width;
-      std::int32_t sum = 0;
-      for (int j = -k; j <= k; ++j) sum += in[std::clamp(j, 0, width - 1)];
-      for (int u = 0; u < width; ++u) {
-        out[u] = sum;
-        sum += in[std::min(u + k + 1, width - 1)] - in[std::max(u - k, 0)];
-      }
+    std::uint8_t* vertical = across_rows.ptr<std::uint8_t>(v);
+    for (int u = 3; u + 4 < width; ++u) {
+      const std::uint8_t* p = row + 3 * u;
+      if (across_row(p - 3, p, p, p + 3)) vertical[u] = 1;
+      if (across_row(p - 3, p, p + 3, p + 6)) vertical[u] = vertical[u + 1] = 1;
     }
-  } else {
-    std::vector<std::int32_t> sum(static_cast<std::size_t>(width), 0);
-    auto row_of = [&](int v) {
-      return brightness.data() + static_cast<std::size_t>(std::clamp(v, 0, height - 1)) * width;
-    };
-    for (int j = -k; j <= k; ++j) {
-      const std::int32_t* in = row_of(j);
-      for (int u = 0; u < width; ++u) sum[u] += in[u];
-    }
-    for (int v = 0; v < height; ++v) {
-      std::int32_t* out = sums.data() + static_cast<std::size_t>(v) * width;
-      const std::int32_t* add = row_of(v + k + 1);
-      const std::int32_t* sub = row_of(v - k);
-      for (int u = 0; u < width; ++u) {
-        out[u] = sum[u];
-        sum[u] += add[u] - sub[u];
+    if (v < 3 || v + 4 >= height) continue;
+    std::uint8_t* horizontal = across_columns.ptr<std::uint8_t>(v);
+    std::uint8_t* horizontal_below = across_columns.ptr<std::uint8_t>(v + 1);
+    for (int u = 0; u < width; ++u) {
+      const std::uint8_t* p = row + 3 * u;
+      if (across_column(p - step, p, p, p + step)) horizontal[u] = 1;
+      if (across_column(p - step, p, p + step, p + 2 * step)) {
+        horizontal[u] = horizontal_below[u] = 1;
       }
     }
   }
-  return sums;
+  const int bridge = options.line_bridge_px;
+  if (bridge > 0) {
+    cv::morphologyEx(across_rows, across_rows, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, {1, 2 * bridge + 1}));
+    cv::morphologyEx(across_columns, across_columns, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, {2 * bridge + 1, 1}));
+  }
+  across_rows |= across_columns;
+  return across_rows;
 }
 
 int find_root(std::vector<int>& parent, int i) {
@@ -139,21 +201,8 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
 
   const int max_step_grey =
       static_cast<int>(std::floor(options.max_neighbour_difference_rgb * 255.0));
-  // The line-sum criterion: brightness (mean of R, G, B) averaged along the
-  // edge.
-  const int k = options.edge_half_length_px;
-  const double max_line_step = options.max_edge_brightness_step_rgb * 3.0 * 255.0 * (2.0 * k + 1.0);
-  const std::vector<std::int32_t> column_sums = brightness_line_sums(bgr_image, k, false);
-  const std::vector<std::int32_t> row_sums = brightness_line_sums(bgr_image, k, true);
-  // True when the middle line sum stands out of both neighbours on the same
-  // side by more than max_line_step: a faint line (a gap) runs there, not a
-  // gradient.
-  auto on_line = [max_line_step](std::int32_t before, std::int32_t middle, std::int32_t after) {
-    const double rise = middle - before;
-    const double fall = middle - after;
-    return (rise > max_line_step && fall > max_line_step) ||
-           (rise < -max_line_step && fall < -max_line_step);
-  };
+  // Computed once per image: pixels on thin lines neither join nor let regions grow across them.
+  const cv::Mat barrier = line_barrier(bgr_image, options);
 
   const double max_volume_grey3 = options.max_colour_volume_rgb3 * 255.0 * 255.0 * 255.0;
   const int max_region_px = options.max_region_px;
@@ -170,9 +219,10 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
   for (int v = 0; v < map.height; ++v) {
     map.row_begin[v] = static_cast<int>(map.runs.size());
     const std::uint8_t* row = bgr_image.ptr<std::uint8_t>(v);
-    // Row pass: cut where the step is refused or the run's own ellipsoid would
-    // reach V_max. The volume is recomputed only when K_min or K_max widens (a
-    // few times per run).
+    const std::uint8_t* on_barrier = barrier.ptr<std::uint8_t>(v);
+    // Row pass: cut where the step is refused, the barrier starts or ends, or the run's own
+    // ellipsoid would reach V_max. The volume is recomputed only when K_min or K_max widens (a
+    // few times per run). A run of barrier pixels is a run of its own that joins nothing.
     int u = 0;
     while (u < width) {
       GrownRegion run;
@@ -180,66 +230,72 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
       for (int c = 0; c < 3; ++c) run.rgb_min[c] = run.rgb_max[c] = p[2 - c];
       std::array<std::int64_t, 3> sum{p[2], p[1], p[0]};
       const int begin = u;
-      const std::int32_t* line = column_sums.data() + static_cast<std::size_t>(v) * width;
+      const bool is_barrier = on_barrier[u] != 0;
       bool cut_by_edge = true;
       for (++u; u < width; ++u) {
         const std::uint8_t* q = row + 3 * u;
-        if (!admitted_step(q - 3, q, max_step_grey) ||
-            (u >= 2 && on_line(line[u - 2], line[u - 1], line[u])) ||
-            (u + 1 < width && on_line(line[u - 1], line[u], line[u + 1]))) {
-          break;
-        }
-        const std::uint8_t r = q[2], g = q[1], b = q[0];
-        if (r < run.rgb_min[0] || r > run.rgb_max[0] || g < run.rgb_min[1] || g > run.rgb_max[1] ||
-            b < run.rgb_min[2] || b > run.rgb_max[2]) {
-          GrownRegion widened = run;
-          widened.pixel_count = u - begin + 1;
-          widened.rgb_sum = {sum[0] + r, sum[1] + g, sum[2] + b};
-          widened.rgb_min = {std::min(run.rgb_min[0], r), std::min(run.rgb_min[1], g),
-                             std::min(run.rgb_min[2], b)};
-          widened.rgb_max = {std::max(run.rgb_max[0], r), std::max(run.rgb_max[1], g),
-                             std::max(run.rgb_max[2], b)};
-          if (volume_of(widened) >= max_volume_grey3) {
-            cut_by_edge = false;
-            break;
+        if ((on_barrier[u] != 0) != is_barrier) break;
+        if (!is_barrier) {
+          if (!admitted_step(q - 3, q, max_step_grey)) break;
+          const std::uint8_t r = q[2], g = q[1], b = q[0];
+          if (r < run.rgb_min[0] || r > run.rgb_max[0] || g < run.rgb_min[1] ||
+              g > run.rgb_max[1] || b < run.rgb_min[2] || b > run.rgb_max[2]) {
+            GrownRegion widened = run;
+            widened.pixel_count = u - begin + 1;
+            widened.rgb_sum = {sum[0] + r, sum[1] + g, sum[2] + b};
+            widened.rgb_min = {std::min(run.rgb_min[0], r), std::min(run.rgb_min[1], g),
+                               std::min(run.rgb_min[2], b)};
+            widened.rgb_max = {std::max(run.rgb_max[0], r), std::max(run.rgb_max[1], g),
+                               std::max(run.rgb_max[2], b)};
+            if (volume_of(widened) >= max_volume_grey3) {
+              cut_by_edge = false;
+              break;
+            }
+            run.rgb_min = widened.rgb_min;
+            run.rgb_max = widened.rgb_max;
           }
-          run.rgb_min = widened.rgb_min;
-          run.rgb_max = widened.rgb_max;
+        } else {
+          for (int c = 0; c < 3; ++c) {
+            run.rgb_min[c] = std::min(run.rgb_min[c], q[2 - c]);
+            run.rgb_max[c] = std::max(run.rgb_max[c], q[2 - c]);
+          }
         }
-        sum[0] += r;
-        sum[1] += g;
-        sum[2] += b;
+        sum[0] += q[2];
+        sum[1] += q[1];
+        sum[2] += q[0];
       }
       const int n = u - begin;
       run.pixel_count = n;
       run.u_sum_px = static_cast<std::int64_t>(begin + u - 1) * n / 2;
       run.v_sum_px = static_cast<std::int64_t>(v) * n;
       run.rgb_sum = sum;
+      run.barrier = is_barrier;
       const int index = static_cast<int>(map.runs.size());
       map.runs.push_back({v, begin, u, index});
       stats.push_back(run);
       parent.push_back(index);
-      if (u < width) touching_runs.push_back({index, index + 1, cut_by_edge});
+      if (u < width && !is_barrier && on_barrier[u] == 0) {
+        touching_runs.push_back({index, index + 1, cut_by_edge});
+      }
     }
     if (v == 0) continue;
 
     // Join the runs of this row to the regions of the overlapping runs of the
-    // row above.
+    // row above (never a barrier run: barrier pixels join nothing).
     const std::uint8_t* above = bgr_image.ptr<std::uint8_t>(v - 1);
     int a = map.row_begin[v - 1];
     const int a_end = map.row_begin[v];
     for (int b = a_end; b < static_cast<int>(map.runs.size()); ++b) {
       const RegionRun& run = map.runs[b];
+      if (stats[b].barrier) continue;
       while (a < a_end && map.runs[a].u_end <= run.u_begin) ++a;
       for (int k_above = a; k_above < a_end && map.runs[k_above].u_begin < run.u_end; ++k_above) {
+        if (stats[k_above].barrier) continue;
         const int lo = std::max(run.u_begin, map.runs[k_above].u_begin);
         const int hi = std::min(run.u_end, map.runs[k_above].u_end);
-        const std::int32_t* line = row_sums.data() + static_cast<std::size_t>(v) * width;
         bool touching = false;
         for (int x = lo; x < hi && !touching; ++x) {
-          touching = admitted_step(above + 3 * x, row + 3 * x, max_step_grey) &&
-                     !(v >= 2 && on_line(line[x - 2 * width], line[x - width], line[x])) &&
-                     !(v + 1 < map.height && on_line(line[x - width], line[x], line[x + width]));
+          touching = admitted_step(above + 3 * x, row + 3 * x, max_step_grey);
         }
         if (!touching) {
           touching_runs.push_back({k_above, b, true});

@@ -28,6 +28,7 @@ struct GrownRegion {
   std::array<std::int64_t, 3> rgb_sum{};  // grey levels, R, G, B
   std::array<std::uint8_t, 3> rgb_min{};  // K_min, grey levels
   std::array<std::uint8_t, 3> rgb_max{};  // K_max, grey levels
+  bool barrier = false;  // pixels of the thin-line barrier: never a blob (segmentation.hpp)
 };
 
 // One horizontal run of a region's pixels: row v, columns u_begin .. u_end - 1.

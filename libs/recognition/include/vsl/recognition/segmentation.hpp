@@ -18,16 +18,20 @@ namespace vsl::recognition {
 struct SegmentationOptions {
   // Region growing. A pixel joins a region when its colour is within
   // max_neighbour_difference_rgb of the neighbour it is reached from (max over
-  // channels, colours in [0, 1]) and their brightnesses (mean of R, G, B), each
-  // averaged over 2 edge_half_length_px
-  // + 1 pixels along the edge between them, within max_edge_brightness_step_rgb
-  // (a sub-pixel gap between two flush doors is a faint line that only the
-  // average lifts above the noise), and the region's colour ellipsoid volume
-  // stays below max_colour_volume_rgb3 (V_max) and its size at most
-  // max_region_px (S_max).
+  // channels, colours in [0, 1]), it is not on a thin line (below), the
+  // region's colour ellipsoid volume stays below max_colour_volume_rgb3 (V_max)
+  // and its size at most max_region_px (S_max).
   double max_neighbour_difference_rgb = 0.06;
-  int edge_half_length_px = 4;
-  double max_edge_brightness_step_rgb = 0.005;
+  // Thin-line barrier, computed once per image: a pixel (or a pair of pixels)
+  // whose brightness stands out from both neighbours across it by at least
+  // min_line_contrast_rgb (mean over R, G, B) with the hue of its surroundings
+  // is on a line: the reveal between two flush doors, a few grey levels
+  // brighter or darker than the fronts, which the step criterion alone lets
+  // regions grow across. Line pixels join no region; breaks of up to 2
+  // line_bridge_px pixels along a line (rows where the reveal is thinner than
+  // the sampling or lost in the noise) are bridged. 0 turns it off.
+  double min_line_contrast_rgb = 0.02;
+  int line_bridge_px = 8;
   double max_colour_volume_rgb3 = 1e-3;
   int max_region_px = 20000;
   // Regions smaller than this are dropped before clustering (noise, edges).
