@@ -32,3 +32,10 @@ find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs calib3d)
 add_library(vsl_opencv_external INTERFACE)
 target_link_libraries(vsl_opencv_external INTERFACE ${OpenCV_LIBS})
 target_include_directories(vsl_opencv_external SYSTEM INTERFACE ${OpenCV_INCLUDE_DIRS})
+
+# libcamera 0.0.3 (libcamera-dev) for vsl-libcamera-stereo: pkg-config only, no CMake package.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBCAMERA REQUIRED IMPORTED_TARGET libcamera)
+add_library(vsl_libcamera_external INTERFACE)
+target_link_libraries(vsl_libcamera_external INTERFACE PkgConfig::LIBCAMERA)
+target_include_directories(vsl_libcamera_external SYSTEM INTERFACE ${LIBCAMERA_INCLUDE_DIRS})
