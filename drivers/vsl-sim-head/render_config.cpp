@@ -35,7 +35,8 @@ render::RenderOptions render_options_from(const config::Node& section) {
   section.expect_map();
   section.expect_keys({"ambient", "diffuse", "world_light_direction", "noise_sigma_grey",
                        "exposure_variation", "apply_distortion", "background", "near_clip_m",
-                       "far_clip_m", "cylinder_segments", "samples"});
+                       "far_clip_m", "cylinder_segments", "samples",
+                       "slot_occlusion_max_width_m"});
   if (const auto v = section.find("ambient")) out.ambient = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("diffuse")) out.diffuse = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("world_light_direction")) {
@@ -64,6 +65,9 @@ render::RenderOptions render_options_from(const config::Node& section) {
     const std::int64_t n = v->as_int();
     if (n < 1 || n > 4) v->fail("must be an integer in [1, 4], got " + std::to_string(n));
     out.samples = static_cast<int>(n);
+  }
+  if (const auto v = section.find("slot_occlusion_max_width_m")) {
+    out.slot_occlusion_max_width_m = v->as_double_in(0.0, 0.1);
   }
   return out;
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "localizer_config.hpp"
+#include "fusion_setup.hpp"
 #include "driver_setup.hpp"
 #include "recognition_setup.hpp"
 #include "sim_head_setup.hpp"
@@ -59,6 +61,19 @@ void load_recognition_config(const std::string& path) {
   EXPECT_FALSE(setup.config.model_paths.empty()) << path;
 }
 
+// Everything vsl-localizer loads before it runs: its config, the world, the localizer options.
+void load_localizer_daemon_config(const std::string& path) {
+  const auto setup = vsl::localizer_daemon::load_localizer(vsl::config::Node::load_file(path));
+  EXPECT_FALSE(setup.world.objects.empty()) << path;
+  EXPECT_FALSE(setup.config.core.ego_gaze_targets_m.empty()) << path;
+}
+
+// Everything vsl-fusion loads before it runs: its options and the head's calibration.
+void load_fusion_config(const std::string& path) {
+  const auto setup = vsl::fusion_daemon::load_fusion(vsl::config::Node::load_file(path));
+  EXPECT_FALSE(setup.head_name.empty()) << path;
+}
+
 // Everything a real stereo driver (vsl-v4l2-stereo, vsl-libcamera-stereo) loads before it opens a
 // camera: its config section and the head kinematics with their calibration.
 void load_stereo_driver_config(const std::string& path, const std::string& section) {
@@ -94,6 +109,8 @@ const std::vector<Loader>& loaders() {
        [](const std::string& p) { load_stereo_driver_config(p, "v4l2_stereo"); }},
       {"config/libcamera_stereo.yaml",
        [](const std::string& p) { load_stereo_driver_config(p, "libcamera_stereo"); }},
+      {"config/fusion.yaml", load_fusion_config},
+      {"config/vsl-localizer.yaml", load_localizer_daemon_config},
   };
   return kLoaders;
 }

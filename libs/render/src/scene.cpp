@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "slot_occlusion.hpp"
 #include "triangulate.hpp"
 
 namespace vsl::render {
@@ -64,6 +65,11 @@ Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
       chunks.push_back(chunk);
       max_chunk_vertices = std::max(max_chunk_vertices, chunk.vertex_count);
     }
+  }
+  const std::vector<float> slot_factors = slot_light_factors(
+      world_vertices_m, triangles, world_planes, options.slot_occlusion_max_width_m);
+  for (std::size_t t = 0; t < shaded_bgr.size(); ++t) {
+    for (float& channel : shaded_bgr[t]) channel *= slot_factors[t];
   }
 }
 

@@ -41,6 +41,10 @@ struct RenderOptions {
   // between two doors visible as a blended line up to about 4 m instead of vanishing in most
   // rows. Depth and ids are those of the sample nearest the pixel centre. Costs about samples^2.
   int samples = 1;
+  // Slots narrower than this (m) darken their walls: a facet facing another across a gap of
+  // width w keeps w / (w + depth) of its light (depth: the facet's shorter side), so the 4 mm gap
+  // between two doors reads as the dark line a camera sees, not as more door. 0: off.
+  double slot_occlusion_max_width_m = 0.02;
 };
 
 struct RenderedImage {

@@ -1,0 +1,129 @@
+#include "vsl/fusion/fuse.hpp"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "vsl/fusion/isolation_filter.hpp"
+#include "vsl/fusion/mean_shift.hpp"
+
+namespace vsl::fusion {
+namespace {
+
+struct Member {
+  std::size_t frame;
+  const Percept* percept;
+};
+
+// The fused percept of one cluster (formula in fuse.hpp).
+FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& members,
+                          const std::vector<Frame>& frames, const FieldOfView& field_of_view) {
+  FusedPercept out;
+  out.type = type;
+  out.num_percepts = static_cast<int>(members.size());
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d information_position = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Matrix3d> inverses;
+  inverses.reserve(members.size());
+  std::set<std::size_t> supporting;
+  for (const Member& m : members) {
+    const Eigen::Matrix3d inverse =
+        m.percept->ego_covariance_m2.llt().solve(Eigen::Matrix3d::Identity());
+    inverses.push_back(inverse);
+    information += inverse;
+    information_position += inverse * m.percept->ego_position_m;
+    supporting.insert(m.frame);
+  }
+  Eigen::Matrix3d covariance = information.llt().solve(Eigen::Matrix3d::Identity());
+  out.ego_position_m = covariance * information_position;
+  if (members.size() > 1) {
+    double chi2 = 0.0;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const Eigen::Vector3d r = members[i].percept->ego_position_m - out.ego_position_m;
+      chi2 += r.dot(inverses[i] * r);
+    }
+    const double reduced = chi2 / (3.0 * static_cast<double>(members.size() - 1));
+    covariance *= std::max(1.0, reduced);
+  }
+  out.ego_covariance_m2 = 0.5 * (covariance + covariance.transpose());
+  // C: frames, not percepts, so that C <= T_s (a frame sees an object once).
+  out.support = static_cast<int>(supporting.size());
+  for (const std::size_t f : supporting) {
+    out.ego_camera_position_m += frames[f].ego_T_left_camera.translation();
+  }
+  out.ego_camera_position_m /= static_cast<double>(supporting.size());
+  // T_s: frames whose left camera should have seen the fused location; a frame that did see it
+  // counts even when the location falls just outside the margin, so that C <= T_s.
+  int expected = 0;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (supporting.count(f) != 0 ||
+        field_of_view.sees(frames[f].ego_T_left_camera, out.ego_position_m)) {
+      ++expected;
+    }
+  }
+  out.expected = expected;
+  out.confidence = static_cast<double>(out.support) / static_cast<double>(out.expected);
+  return out;
+}
+
+bool ordered(const FusedPercept& a, const FusedPercept& b) {
+  return std::make_tuple(a.type, -a.support, a.ego_position_m.x(), a.ego_position_m.y(),
+                         a.ego_position_m.z()) <
+         std::make_tuple(b.type, -b.support, b.ego_position_m.x(), b.ego_position_m.y(),
+                         b.ego_position_m.z());
+}
+
+}  // namespace
+
+bool passes_confidence(int support, int expected, const FusionOptions& options) {
+  // Eq. 4, T_s relaxed by iota frames (never below one frame).
+  const int relaxed = std::max(expected - options.iota_frames, 1);
+  return static_cast<double>(support) / static_cast<double>(relaxed) > options.e_min;
+}
+
+FusionResult fuse(const std::vector<Frame>& frames, const FieldOfView& field_of_view,
+                  const FusionOptions& options) {
+  FusionResult result;
+  result.num_frames = frames.size();
+  const std::vector<std::vector<bool>> keep = non_isolated(frames, options.isolation_distance_m);
+  // Kept percepts per type alpha, in frame order (deterministic).
+  std::map<std::string, std::vector<Member>> by_type;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    for (std::size_t i = 0; i < frames[f].percepts.size(); ++i) {
+      ++result.num_percepts;
+      if (!keep[f][i]) {
+        ++result.num_isolated;
+        continue;
+      }
+      by_type[frames[f].percepts[i].type].push_back({f, &frames[f].percepts[i]});
+    }
+  }
+  for (const auto& [type, members] : by_type) {
+    std::vector<Eigen::Vector3d> points;
+    points.reserve(members.size());
+    for (const Member& m : members) points.push_back(m.percept->ego_position_m);
+    const MeanShiftResult modes =
+        mean_shift(points, options.bandwidth_m, options.mode_merge_distance_m,
+                   options.max_mean_shift_iterations);
+    std::vector<std::vector<Member>> clusters(modes.modes.size());
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      clusters[static_cast<std::size_t>(modes.cluster[i])].push_back(members[i]);
+    }
+    for (const std::vector<Member>& cluster : clusters) {
+      FusedPercept fused = fuse_cluster(type, cluster, frames, field_of_view);
+      if (passes_confidence(fused.support, fused.expected, options)) {
+        result.fused.push_back(std::move(fused));
+      } else {
+        result.rejected.push_back(std::move(fused));
+      }
+    }
+  }
+  std::sort(result.fused.begin(), result.fused.end(), ordered);
+  std::sort(result.rejected.begin(), result.rejected.end(), ordered);
+  return result;
+}
+
+}  // namespace vsl::fusion

@@ -1,0 +1,185 @@
+#include "vsl/fusion/fuse.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "synthetic_scan.hpp"
+
+namespace vsl::fusion {
+namespace {
+
+using testing::look_at;
+
+Percept percept(const std::string& type, const Eigen::Vector3d& p, double sigma_m) {
+  return Percept{type, p, Eigen::Matrix3d::Identity() * sigma_m * sigma_m};
+}
+
+double nearest_of_type(const std::vector<testing::SyntheticObject>& objects,
+                       const FusedPercept& fused) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& o : objects) {
+    if (o.type == fused.type)
+      best = std::min(best, (o.ego_position_m - fused.ego_position_m).norm());
+  }
+  return best;
+}
+
+// A scan of 40 frames (10 head stops) over 15 objects with 1 cm noise, 10 % misses and 25
+// isolated false positives: every object seen often enough comes out once, near its truth, and
+// no false positive survives.
+TEST(Fuse, RecoversObjectsAndRejectsIsolatedFalsePositives) {
+  testing::ScanSpec spec;
+  spec.objects = testing::room_objects(15, 3);
+  spec.ego_gaze_targets_m = testing::sweep_targets(10);
+  spec.detection_probability = 0.9;
+  spec.false_positives = 25;
+  spec.seed = 11;
+  const std::vector<Frame> frames = testing::synthetic_scan(spec);
+  const FusionOptions options;
+  const FieldOfView fov(spec.camera, options);
+  const FusionResult result = fuse(frames, fov, options);
+  EXPECT_EQ(result.num_frames, 40u);
+  EXPECT_GE(result.num_isolated, 20u);  // a false positive may land near a real percept
+
+  int seen_objects = 0;
+  for (const auto& object : spec.objects) {
+    int frames_seeing = 0;
+    for (const Frame& f : frames) {
+      frames_seeing += testing::in_image(spec.camera, f.ego_T_left_camera, object.ego_position_m);
+    }
+    if (frames_seeing < 4) continue;  // seen at one head stop at least
+    ++seen_objects;
+    int found = 0;
+    for (const FusedPercept& fused : result.fused) {
+      if (fused.type == object.type &&
+          (fused.ego_position_m - object.ego_position_m).norm() < 0.1) {
+        ++found;
+        // 1 cm per axis and percept: the mean's error is chi(3) * 1 cm / sqrt(n), below 4 of
+        // those but for 1 in 1000.
+        EXPECT_LT((fused.ego_position_m - object.ego_position_m).norm(),
+                  4.0 * 0.01 / std::sqrt(double(fused.num_percepts)));
+        EXPECT_GE(fused.support, 3);
+        EXPECT_LE(fused.support, fused.expected);
+        EXPECT_DOUBLE_EQ(fused.confidence, double(fused.support) / fused.expected);
+        // Covariance of the mean: about sigma^2 / n per axis (scaled up when they scatter).
+        const double per_axis = 1e-4 / fused.num_percepts;
+        EXPECT_GE(fused.ego_covariance_m2.trace(), 3 * per_axis * 0.999);
+        EXPECT_LE(fused.ego_covariance_m2.trace(), 3 * per_axis * 4.0);
+      }
+    }
+    EXPECT_EQ(found, 1) << object.type << " at " << object.ego_position_m.transpose();
+  }
+  EXPECT_GE(seen_objects, 8);
+  for (const FusedPercept& fused : result.fused) {
+    EXPECT_LT(nearest_of_type(spec.objects, fused), 0.05)
+        << "false positive fused: " << fused.type << " at " << fused.ego_position_m.transpose();
+  }
+}
+
+// T_s counts the frames whose camera looked at the fused location (empty frames included), not
+// the frames of the scan.
+TEST(Fuse, ExpectedCountsOnlyFramesThatLookedThere) {
+  const Eigen::Vector3d camera(0.05, 0.045, 1.5);
+  const Eigen::Vector3d door(2.0, 0.0, 1.2);
+  std::vector<Frame> frames(7);
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    frames[f].frame_id = static_cast<std::int64_t>(f);
+    // Frames 0-3 look at the door, 4-6 to the left, away from it.
+    frames[f].ego_T_left_camera =
+        look_at(camera, f < 4 ? Eigen::Vector3d(2.0, 0.0, 1.2) : Eigen::Vector3d(0.0, 2.0, 1.2));
+  }
+  frames[0].percepts = {percept("door", door + Eigen::Vector3d(0.01, 0, 0), 0.01)};
+  frames[2].percepts = {percept("door", door - Eigen::Vector3d(0.01, 0, 0), 0.01)};
+  frames[3].percepts = {percept("door", door, 0.01)};
+  // Frame 1 saw it and is empty: it still counts toward T_s.
+  FusionOptions options;
+  const head::CameraIntrinsics camera_model;
+  const FusionResult result = fuse(frames, FieldOfView(camera_model, options), options);
+  ASSERT_EQ(result.fused.size(), 1u);
+  const FusedPercept& fused = result.fused[0];
+  EXPECT_EQ(fused.support, 3);
+  EXPECT_EQ(fused.expected, 4);
+  EXPECT_DOUBLE_EQ(fused.confidence, 0.75);
+  EXPECT_TRUE(fused.ego_position_m.isApprox(door, 1e-9));
+  EXPECT_TRUE(fused.ego_camera_position_m.isApprox(camera, 1e-9));
+  // Beyond max_range_m a frame is not expected to see it, also when it points there.
+  options.max_range_m = 1.5;
+  const FusionResult far = fuse(frames, FieldOfView(camera_model, options), options);
+  ASSERT_EQ(far.fused.size(), 1u);
+  EXPECT_EQ(far.fused[0].expected, 3);  // only the frames that saw it
+}
+
+// Eq. 4: C / max(T_s - iota, 1) > E_min, strictly.
+TEST(Fuse, ConfidenceCriterionWithIota) {
+  FusionOptions options;
+  options.e_min = 0.5;
+  options.iota_frames = 1;
+  EXPECT_FALSE(passes_confidence(2, 5, options));  // 2/4 = E_min: not above
+  EXPECT_TRUE(passes_confidence(3, 5, options));
+  EXPECT_TRUE(passes_confidence(1, 2, options));   // relaxed to 1/1
+  EXPECT_FALSE(passes_confidence(1, 3, options));  // 1/2
+  EXPECT_TRUE(passes_confidence(1, 1, options));   // never below one frame
+  options.iota_frames = 0;
+  EXPECT_FALSE(passes_confidence(1, 2, options));
+  EXPECT_TRUE(passes_confidence(2, 3, options));
+}
+
+// A place seen in 2 of 8 frames that looked at it is a mode but no fused percept.
+TEST(Fuse, RarelySeenModeFailsEq4AndIsReported) {
+  const Eigen::Vector3d camera(0.05, 0.045, 1.5);
+  const Eigen::Vector3d handle(2.0, 0.3, 1.0);
+  std::vector<Frame> frames(8);
+  for (Frame& frame : frames) frame.ego_T_left_camera = look_at(camera, handle);
+  frames[2].percepts = {percept("handle", handle, 0.01)};
+  frames[5].percepts = {percept("handle", handle + Eigen::Vector3d(0, 0.01, 0), 0.01)};
+  const FusionOptions options;
+  const FusionResult result = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  EXPECT_TRUE(result.fused.empty());
+  ASSERT_EQ(result.rejected.size(), 1u);
+  EXPECT_EQ(result.rejected[0].support, 2);
+  EXPECT_EQ(result.rejected[0].expected, 8);
+  EXPECT_EQ(result.num_isolated, 0u);
+}
+
+// The fused location weighs each percept by its information; the covariance is the combined
+// one, scaled up by the reduced chi-square when the percepts disagree.
+TEST(Fuse, InformationWeightedMeanAndCovariance) {
+  const Eigen::Vector3d camera(0.05, 0.045, 1.5);
+  const Eigen::Vector3d at(2.0, 0.0, 1.0);
+  std::vector<Frame> frames(2);
+  for (Frame& frame : frames) frame.ego_T_left_camera = look_at(camera, at);
+  // Sigma 1 cm and 2 cm along x, 2 cm apart: weights 4:1.
+  frames[0].percepts = {percept("door", at, 0.01)};
+  frames[1].percepts = {percept("door", at + Eigen::Vector3d(0.02, 0, 0), 0.02)};
+  const FusionOptions options;
+  const FusionResult result = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  ASSERT_EQ(result.fused.size(), 1u);
+  const FusedPercept& fused = result.fused[0];
+  EXPECT_NEAR(fused.ego_position_m.x(), 2.0 + 0.02 * 1.0 / 5.0, 1e-9);
+  // Combined variance 1 / (1/1e-4 + 1/4e-4) = 8e-5; chi2 = (0.004^2/1e-4 + 0.016^2/4e-4) = 0.8,
+  // reduced 0.8 / 3 < 1: no scaling.
+  EXPECT_NEAR(fused.ego_covariance_m2(0, 0), 8e-5, 1e-12);
+  EXPECT_NEAR(fused.ego_covariance_m2(1, 1), 8e-5, 1e-12);
+  EXPECT_NEAR(fused.ego_covariance_m2(0, 1), 0.0, 1e-15);
+  EXPECT_EQ(fused.num_percepts, 2);
+  // Disagreeing by 10 cm (still one mode with a wide bandwidth): scaled by chi2 / 3.
+  frames[1].percepts[0].ego_position_m = at + Eigen::Vector3d(0.1, 0, 0);
+  FusionOptions wide = options;
+  wide.bandwidth_m = 0.2;
+  const FusionResult scattered = fuse(frames, FieldOfView(head::CameraIntrinsics{}, wide), wide);
+  ASSERT_EQ(scattered.fused.size(), 1u);
+  const double chi2 = 0.02 * 0.02 / 1e-4 + 0.08 * 0.08 / 4e-4;
+  EXPECT_NEAR(scattered.fused[0].ego_covariance_m2(0, 0), 8e-5 * chi2 / 3.0, 1e-10);
+}
+
+TEST(Fuse, EmptyScan) {
+  const FusionOptions options;
+  const FusionResult result = fuse({}, FieldOfView(head::CameraIntrinsics{}, options), options);
+  EXPECT_TRUE(result.fused.empty());
+  EXPECT_EQ(result.num_frames, 0u);
+}
+
+}  // namespace
+}  // namespace vsl::fusion

@@ -1,0 +1,92 @@
+#include "scan_tracker.hpp"
+
+#include <gtest/gtest.h>
+
+#include "vsl/localizer_status_t.hpp"
+
+namespace vsl::fusion_daemon {
+namespace {
+
+using S = vsl::localizer_status_t;
+
+ScanTracker tracker(std::size_t max_frames = 100) {
+  const fusion::FusionOptions options;
+  return ScanTracker(options, fusion::FieldOfView(head::CameraIntrinsics{}, options), max_frames);
+}
+
+fusion::Frame frame(std::int64_t id, int percepts = 1) {
+  fusion::Frame f;
+  f.frame_id = id;
+  for (int i = 0; i < percepts; ++i) {
+    f.percepts.push_back({"door", Eigen::Vector3d(2, 0, 1.5), Eigen::Matrix3d::Identity() * 1e-4});
+  }
+  return f;
+}
+
+TEST(ScanTracker, PerceptsBeforeAnyRequestAreIgnored) {
+  ScanTracker t = tracker();
+  EXPECT_EQ(t.add(frame(0), 100), ScanTracker::FrameOutcome::kNoRequest);
+  EXPECT_EQ(t.num_frames(), 0u);
+  EXPECT_FALSE(t.on_status(-1, S::IDLE).fuse);
+}
+
+TEST(ScanTracker, RequestStartsAnEmptyScanAndFusingTransitionsPublish) {
+  ScanTracker t = tracker();
+  EXPECT_EQ(t.start(7), ScanTracker::RequestOutcome::kStarted);
+  EXPECT_EQ(t.add(frame(0), 100), ScanTracker::FrameOutcome::kAdded);
+  EXPECT_EQ(t.add(frame(1), 200), ScanTracker::FrameOutcome::kAdded);
+  EXPECT_EQ(t.add(frame(1), 200), ScanTracker::FrameOutcome::kDuplicate);
+  EXPECT_EQ(t.start(7), ScanTracker::RequestOutcome::kRepeated);  // keeps the frames
+  EXPECT_EQ(t.num_frames(), 2u);
+  EXPECT_FALSE(t.on_status(7, S::SCANNING).fuse);
+  EXPECT_TRUE(t.on_status(7, S::FUSING).fuse);
+  EXPECT_FALSE(t.on_status(7, S::FUSING).fuse);  // a repeat, not a transition
+  EXPECT_EQ(t.fuse().num_frames, 2u);
+  EXPECT_FALSE(t.on_status(7, S::ACTIVE_VALIDATION).fuse);
+  EXPECT_TRUE(t.on_status(7, S::FUSING).fuse);  // again after an active validation look
+  EXPECT_EQ(t.start(8), ScanTracker::RequestOutcome::kStarted);
+  EXPECT_EQ(t.num_frames(), 0u);
+  EXPECT_EQ(t.num_percepts(), 0u);
+  EXPECT_EQ(t.request_id(), 8);
+}
+
+TEST(ScanTracker, UnknownRequestInStatusIsAdoptedOldOnesAreNot) {
+  ScanTracker t = tracker();
+  // Fresh after a restart: the localizer is scanning for request 5.
+  ScanTracker::StatusOutcome o = t.on_status(5, S::SCANNING);
+  EXPECT_TRUE(o.adopted);
+  EXPECT_FALSE(o.fuse);
+  EXPECT_EQ(t.request_id(), 5);
+  EXPECT_EQ(t.add(frame(10), 1000), ScanTracker::FrameOutcome::kAdded);
+  o = t.on_status(5, S::FUSING);
+  EXPECT_FALSE(o.adopted);
+  EXPECT_TRUE(o.fuse);
+  // A new request, then a late status of the old one: ignored, the new scan stays.
+  EXPECT_EQ(t.start(6), ScanTracker::RequestOutcome::kStarted);
+  EXPECT_EQ(t.add(frame(11), 1100), ScanTracker::FrameOutcome::kAdded);
+  o = t.on_status(5, S::FUSING);
+  EXPECT_FALSE(o.adopted);
+  EXPECT_FALSE(o.fuse);
+  EXPECT_EQ(t.request_id(), 6);
+  EXPECT_EQ(t.num_frames(), 1u);
+  // Final states of unknown requests adopt nothing.
+  EXPECT_FALSE(t.on_status(9, S::DONE).adopted);
+  EXPECT_FALSE(t.on_status(9, S::FAILED).adopted);
+  // Adopted directly in FUSING: publishes (an empty or partial set) at once.
+  o = t.on_status(9, S::FUSING);
+  EXPECT_TRUE(o.adopted);
+  EXPECT_TRUE(o.fuse);
+  EXPECT_EQ(t.num_frames(), 0u);
+}
+
+TEST(ScanTracker, FramesBeyondTheLimitAreDropped) {
+  ScanTracker t = tracker(2);
+  t.start(1);
+  EXPECT_EQ(t.add(frame(0), 1), ScanTracker::FrameOutcome::kAdded);
+  EXPECT_EQ(t.add(frame(1), 2), ScanTracker::FrameOutcome::kAdded);
+  EXPECT_EQ(t.add(frame(2), 3), ScanTracker::FrameOutcome::kScanFull);
+  EXPECT_EQ(t.num_frames(), 2u);
+}
+
+}  // namespace
+}  // namespace vsl::fusion_daemon

@@ -1,0 +1,152 @@
+#include "localizer_config.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+
+#include "vsl/config/node.hpp"
+#include "vsl/world/world_io.hpp"
+
+namespace vsl::localizer_daemon {
+namespace {
+
+using config::Node;
+
+std::string path_relative_to_file(const Node& node) {
+  const std::filesystem::path path(node.as_string());
+  if (path.is_absolute()) return path.lexically_normal().string();
+  return (std::filesystem::path(node.source()).parent_path() / path).lexically_normal().string();
+}
+
+// The runtime's rule for channel names (libs/runtime/src/config.cpp).
+std::string channel_name(const Node& node) {
+  const std::string name = node.as_string();
+  for (const char c : name) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-' || c == '.' || c == '/';
+    if (!ok) {
+      node.fail("channel names may use only letters, digits and _ - . /, got '" + name + "'");
+    }
+  }
+  return name;
+}
+
+int positive_int(const Node& node, int max) {
+  const std::int64_t value = node.as_int();
+  if (value < 1 || value > max) {
+    node.fail("must be an integer in [1, " + std::to_string(max) + "], got " +
+              std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
+
+// Loads a file named by `node`: a file that cannot be opened is this key's fault.
+template <class T>
+T load_named(const Node& node, const std::string& path,
+             const std::function<T(const std::string&)>& load) {
+  try {
+    return load(path);
+  } catch (const config::Error& e) {
+    if (std::string(e.what()).rfind(path + ": ", 0) == 0) node.fail(e.what());
+    throw;
+  }
+}
+
+}  // namespace
+
+LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive) {
+  root.expect_map();
+  root.expect_keys({"runtime", "localizer"});
+  const Node section = root.at("localizer");
+  section.expect_map();
+  section.expect_keys({"world", "options", "localize_at_startup", "startup_delay_s", "scan",
+                       "fusing_timeout_s", "fusing_attempts", "max_active_looks", "status_period_s",
+                       "passive"});
+  LocalizerDaemonConfig out;
+  out.world_path = path_relative_to_file(section.at("world"));
+  out.options_path = path_relative_to_file(section.at("options"));
+  out.localize_at_startup = section.get("localize_at_startup", false);
+  if (const auto node = section.find("startup_delay_s")) {
+    out.startup_delay_s = node->as_double_in(0.0, 600.0);
+  }
+  CoreOptions& core = out.core;
+
+  const Node scan = section.at("scan");
+  scan.expect_map();
+  scan.expect_keys(
+      {"ego_targets_m", "frames_per_target", "settle_timeout_s", "recognition_timeout_s"});
+  const Node targets = scan.at("ego_targets_m");
+  if (!targets.is_sequence() || targets.size() == 0) {
+    targets.fail("must be a non-empty list of [x, y, z] ego points (m)");
+  }
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const std::array<double, 3> p = targets[i].as_array<3>();
+    const Eigen::Vector3d target(p[0], p[1], p[2]);
+    // The head cannot fixate a point at its own centre.
+    if (Eigen::Vector2d(target.x(), target.y()).norm() < 0.3) {
+      targets[i].fail("must lie at least 0.3 m from the ego z axis");
+    }
+    core.ego_gaze_targets_m.push_back(target);
+  }
+  if (const auto node = scan.find("frames_per_target")) {
+    core.frames_per_target = positive_int(*node, 100);
+  }
+  if (const auto node = scan.find("settle_timeout_s")) {
+    core.settle_timeout_s = node->as_double_in(0.1, 600.0);
+  }
+  if (const auto node = scan.find("recognition_timeout_s")) {
+    core.recognition_timeout_s = node->as_double_in(0.1, 600.0);
+  }
+  if (const auto node = section.find("fusing_timeout_s")) {
+    core.fusing_timeout_s = node->as_double_in(0.1, 600.0);
+  }
+  if (const auto node = section.find("fusing_attempts")) {
+    core.fusing_attempts = positive_int(*node, 100);
+  }
+  if (const auto node = section.find("max_active_looks")) {
+    const std::int64_t value = node->as_int();
+    if (value < 0 || value > 20) node->fail("must be an integer in [0, 20]");
+    core.max_active_looks = static_cast<int>(value);
+  }
+  if (const auto node = section.find("status_period_s")) {
+    core.status_period_s = node->as_double_in(0.01, 60.0);
+  }
+
+  if (const auto passive = section.find("passive")) {
+    passive->expect_map();
+    passive->expect_keys({"enabled", "follow_status_channel", "status_channel", "pose_channel"});
+    core.passive = passive->get("enabled", false);
+    if (const auto n = passive->find("follow_status_channel")) {
+      out.passive_channels.follow_status = channel_name(*n);
+    }
+    if (const auto n = passive->find("status_channel")) {
+      out.passive_channels.status = channel_name(*n);
+    }
+    if (const auto n = passive->find("pose_channel")) out.passive_channels.pose = channel_name(*n);
+    // Fusion follows the recorded status: this localizer must not talk on it.
+    if (out.passive_channels.status == out.passive_channels.follow_status) {
+      passive->at("status_channel").fail("must differ from follow_status_channel");
+    }
+  }
+  if (force_passive) core.passive = true;
+  if (core.passive && out.localize_at_startup) {
+    section.at("localize_at_startup").fail("a passive localizer starts on the recorded request");
+  }
+  return out;
+}
+
+LocalizerSetup load_localizer(const Node& root, bool force_passive) {
+  LocalizerSetup setup;
+  setup.config = read_localizer_config(root, force_passive);
+  const Node section = root.at("localizer");
+  setup.world =
+      load_named<world::WorldModel>(section.at("world"), setup.config.world_path,
+                                    [](const std::string& p) { return world::load_world(p); });
+  setup.options = load_named<localization::LocalizerOptions>(
+      section.at("options"), setup.config.options_path, [](const std::string& p) {
+        return localization::localizer_options_from(Node::load_file(p));
+      });
+  return setup;
+}
+
+}  // namespace vsl::localizer_daemon

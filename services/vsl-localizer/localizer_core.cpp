@@ -1,0 +1,336 @@
+#include "localizer_core.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace vsl::localizer_daemon {
+namespace {
+
+std::int64_t after(std::int64_t now_us, double seconds) {
+  return now_us + static_cast<std::int64_t>(seconds * 1e6);
+}
+
+std::string point_text(const Eigen::Vector3d& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f) m", p.x(), p.y(), p.z());
+  return text;
+}
+
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", seconds);
+  return text;
+}
+
+bool terminal(State state) {
+  return state == State::kIdle || state == State::kDone || state == State::kFailed;
+}
+
+}  // namespace
+
+const char* to_string(State state) {
+  switch (state) {
+    case State::kIdle:
+      return "IDLE";
+    case State::kScanning:
+      return "SCANNING";
+    case State::kFusing:
+      return "FUSING";
+    case State::kPruning:
+      return "PRUNING";
+    case State::kGenerating:
+      return "GENERATING";
+    case State::kValidating:
+      return "VALIDATING";
+    case State::kActiveValidation:
+      return "ACTIVE_VALIDATION";
+    case State::kRefining:
+      return "REFINING";
+    case State::kDone:
+      return "DONE";
+    case State::kFailed:
+      return "FAILED";
+  }
+  return "?";
+}
+
+localization::LocalizationResult LocalizerEngine::localize(
+    const std::vector<localization::FusedPercept>& percepts) const {
+  return localizer_.localize(percepts);
+}
+
+std::optional<Eigen::Vector3d> LocalizerEngine::discriminator_target(
+    const localization::LocalizationResult& result) const {
+  const auto target = localizer_.choose_discriminator(result);
+  if (!target) return std::nullopt;
+  return target->ego_target_m;
+}
+
+LocalizerCore::LocalizerCore(CoreOptions options, const LocalizationEngine& engine,
+                             LocalizerOutputs& outputs)
+    : options_(std::move(options)),
+      engine_(engine),
+      outputs_(outputs),
+      next_gaze_id_(options_.first_gaze_id) {}
+
+void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
+  if (request_id <= 0) return;
+  if (request_id == request_id_ && !terminal(state_)) return;  // a duplicate (or our own echo)
+  if (!terminal(state_)) {
+    // A new request aborts the one in progress; that one still gets its one POSE_ESTIMATE.
+    fail("aborted by request " + std::to_string(request_id), now_us);
+  }
+  request_id_ = request_id;
+  request_start_us_ = now_us;
+  scan_index_ = 0;
+  active_looks_ = 0;
+  step_ = 0;
+  num_fused_percepts_ = 0;
+  num_hypotheses_ = 0;
+  pending_result_.reset();
+  gaze_id_ = -1;
+  if (options_.passive) {
+    step_ = 1;
+    detail_ = "following the recorded scan";
+    set_state(State::kScanning, now_us);
+  } else if (options_.ego_gaze_targets_m.empty()) {
+    enter_fusing(now_us);
+  } else {
+    scan_index_ = 1;
+    start_look(options_.ego_gaze_targets_m[0], now_us);
+  }
+}
+
+void LocalizerCore::start_look(const Eigen::Vector3d& ego_target_m, std::int64_t now_us) {
+  ++step_;
+  gaze_id_ = next_gaze_id_++;
+  at_rest_frames_.clear();
+  recognized_ = 0;
+  look_deadline_us_ = after(now_us, options_.settle_timeout_s);
+  look_target_ = ego_target_m;
+  outputs_.gaze(GazeCommand{gaze_id_, ego_target_m});
+  const bool active = active_looks_ > 0;
+  detail_ = (active ? "active look " + std::to_string(active_looks_) + " of at most " +
+                          std::to_string(options_.max_active_looks)
+                    : "gaze target " + std::to_string(scan_index_) + " of " +
+                          std::to_string(options_.ego_gaze_targets_m.size())) +
+            " at " + point_text(ego_target_m) + ": head moving";
+  set_state(active ? State::kActiveValidation : State::kScanning, now_us);
+}
+
+void LocalizerCore::frame(const FrameHeader& frame, std::int64_t now_us) {
+  if (options_.passive || gaze_id_ < 0) return;
+  if (state_ != State::kScanning && state_ != State::kActiveValidation) return;
+  if (frame.gaze_request_id != gaze_id_ || !frame.gaze_reached) return;
+  if (at_rest_frames_.empty()) {
+    // Settled: the recognition deadline now runs from the first frame at rest.
+    look_deadline_us_ = after(now_us, options_.recognition_timeout_s);
+  }
+  at_rest_frames_.insert(frame.frame_id);
+}
+
+void LocalizerCore::percepts(std::int64_t frame_id, std::int64_t now_us) {
+  if (options_.passive) return;
+  if (state_ != State::kScanning && state_ != State::kActiveValidation) return;
+  if (at_rest_frames_.erase(frame_id) == 0) return;
+  ++recognized_;
+  if (recognized_ < options_.frames_per_target) {
+    const auto colon = detail_.rfind(": ");
+    detail_ = detail_.substr(0, colon) + ": " + std::to_string(recognized_) + " of " +
+              std::to_string(options_.frames_per_target) + " frames recognized";
+    publish_status(now_us);
+    return;
+  }
+  gaze_id_ = -1;
+  at_rest_frames_.clear();
+  if (state_ == State::kScanning &&
+      scan_index_ < static_cast<int>(options_.ego_gaze_targets_m.size())) {
+    ++scan_index_;
+    start_look(options_.ego_gaze_targets_m[static_cast<std::size_t>(scan_index_ - 1)], now_us);
+  } else {
+    enter_fusing(now_us);
+  }
+}
+
+void LocalizerCore::enter_fusing(std::int64_t now_us) {
+  ++step_;
+  fusing_attempt_ = 1;
+  fusing_deadline_us_ = after(now_us, options_.fusing_timeout_s);
+  detail_ = "waiting for fused percepts";
+  set_state(State::kFusing, now_us);
+}
+
+void LocalizerCore::fused(std::int64_t request_id,
+                          const std::vector<localization::FusedPercept>& percepts,
+                          std::int64_t now_us) {
+  if (state_ != State::kFusing || request_id != request_id_) return;
+  localize(percepts, now_us);
+}
+
+void LocalizerCore::localize(const std::vector<localization::FusedPercept>& percepts,
+                             std::int64_t now_us) {
+  num_fused_percepts_ = static_cast<int>(percepts.size());
+  detail_ = "localizing from " + std::to_string(percepts.size()) + " fused percepts";
+  set_state(State::kValidating, now_us);
+  localization::LocalizationResult result = engine_.localize(percepts);
+  num_hypotheses_ = static_cast<int>(result.hypotheses.size());
+  switch (result.status) {
+    case localization::Status::kLocalized:
+      finish(State::kDone, result, "localized", now_us);
+      return;
+    case localization::Status::kFailed:
+      finish(State::kFailed, result, result.message, now_us);
+      return;
+    case localization::Status::kAmbiguous:
+      break;
+  }
+  if (active_looks_ >= options_.max_active_looks) {
+    finish(State::kDone, result,
+           "ambiguous after " + std::to_string(active_looks_) + " active looks: " + result.message,
+           now_us);
+    return;
+  }
+  if (options_.passive) {
+    // The recorded run decides whether another look follows: its next FUSING entry, or its end.
+    pending_result_ = result;
+    ++active_looks_;
+    ++step_;
+    detail_ = "ambiguous (" + std::to_string(num_hypotheses_) +
+              " hypotheses): following the recorded active look";
+    set_state(State::kActiveValidation, now_us);
+    return;
+  }
+  const std::optional<Eigen::Vector3d> target = engine_.discriminator_target(result);
+  if (!target) {
+    finish(State::kDone, result, "ambiguous, nothing discriminates: " + result.message, now_us);
+    return;
+  }
+  ++active_looks_;
+  start_look(*target, now_us);
+}
+
+void LocalizerCore::followed_status(std::int64_t request_id, State state, std::int64_t now_us) {
+  if (!options_.passive || request_id <= 0) return;
+  const bool entered = state != followed_state_ || request_id != followed_request_;
+  followed_state_ = state;
+  followed_request_ = request_id;
+  if (request_id != request_id_) {
+    if (terminal(state)) return;  // the end of a run we never followed
+    request(request_id, now_us);  // the recorded request itself was not in the log
+  }
+  if (!entered) return;
+  if (state == State::kFusing &&
+      (state_ == State::kScanning || state_ == State::kActiveValidation)) {
+    enter_fusing(now_us);
+  } else if (state == State::kDone || state == State::kFailed) {
+    if (state_ == State::kActiveValidation && pending_result_) {
+      finish(State::kDone, *pending_result_,
+             "ambiguous after " + std::to_string(active_looks_ - 1) +
+                 " active looks (the recorded run ended): " + pending_result_->message,
+             now_us);
+    } else if (state_ == State::kScanning) {
+      fail("the recorded run ended before its scan was fused", now_us);
+    }
+  }
+}
+
+void LocalizerCore::tick(std::int64_t now_us) {
+  if (state_ == State::kScanning || state_ == State::kActiveValidation) {
+    if (!options_.passive && gaze_id_ >= 0 && now_us >= look_deadline_us_) {
+      const std::string what = state_ == State::kScanning
+                                   ? "gaze target " + std::to_string(scan_index_)
+                                   : "active look " + std::to_string(active_looks_);
+      if (at_rest_frames_.empty() && recognized_ == 0) {
+        fail("timeout: the head did not settle on " + what + " " + point_text(look_target_) +
+                 " within " + seconds_text(options_.settle_timeout_s),
+             now_us);
+      } else {
+        fail("timeout: " + std::to_string(recognized_) + " of " +
+                 std::to_string(options_.frames_per_target) + " frames at " + what +
+                 " recognized within " + seconds_text(options_.recognition_timeout_s),
+             now_us);
+      }
+      return;
+    }
+  } else if (state_ == State::kFusing && now_us >= fusing_deadline_us_) {
+    if (options_.passive || fusing_attempt_ >= options_.fusing_attempts) {
+      fail("timeout: no FUSED_PERCEPTS for request " + std::to_string(request_id_) + " after " +
+               std::to_string(fusing_attempt_) + " x " + seconds_text(options_.fusing_timeout_s),
+           now_us);
+      return;
+    }
+    // Fusion answers each ENTRY into FUSING (it may have restarted and missed ours): leave the
+    // state for one status and enter it again.
+    ++fusing_attempt_;
+    fusing_deadline_us_ = after(now_us, options_.fusing_timeout_s);
+    detail_ = "re-requesting fused percepts (attempt " + std::to_string(fusing_attempt_) + " of " +
+              std::to_string(options_.fusing_attempts) + ")";
+    set_state(State::kScanning, now_us);
+    detail_ = "waiting for fused percepts (attempt " + std::to_string(fusing_attempt_) + " of " +
+              std::to_string(options_.fusing_attempts) + ")";
+    set_state(State::kFusing, now_us);
+    return;
+  }
+  if (now_us >= next_status_us_) publish_status(now_us);
+}
+
+void LocalizerCore::finish(State state, const localization::LocalizationResult& result,
+                           const std::string& message, std::int64_t now_us) {
+  PoseReport report;
+  report.request_id = request_id_;
+  report.result = result;
+  report.message = message;
+  if (result.status == localization::Status::kFailed) {
+    // Never a pose it cannot support: FAILED carries the identity and a zero covariance.
+    report.result.world_T_ego = Eigen::Isometry3d::Identity();
+    report.result.covariance.setZero();
+  }
+  outputs_.pose(report);
+  gaze_id_ = -1;
+  pending_result_.reset();
+  detail_ = message;
+  set_state(state, now_us);
+}
+
+void LocalizerCore::fail(const std::string& reason, std::int64_t now_us) {
+  localization::LocalizationResult result;
+  result.status = localization::Status::kFailed;
+  result.message = reason;
+  finish(State::kFailed, result, reason, now_us);
+}
+
+void LocalizerCore::set_state(State state, std::int64_t now_us) {
+  state_ = state;
+  publish_status(now_us);
+}
+
+int LocalizerCore::total_steps() const {
+  const int scan = options_.passive ? 1 : static_cast<int>(options_.ego_gaze_targets_m.size());
+  return std::max(step_, scan + 1 + 2 * active_looks_);
+}
+
+std::string LocalizerCore::step_text() const {
+  return "step " + std::to_string(step_) + " of " + std::to_string(total_steps()) + ": ";
+}
+
+void LocalizerCore::publish_status(std::int64_t now_us) {
+  next_status_us_ = after(now_us, options_.status_period_s);
+  StatusReport report;
+  report.request_id = request_id_;
+  report.state = state_;
+  const int total = total_steps();
+  report.progress =
+      terminal(state_) ? 1.0 : std::clamp(static_cast<double>(step_ - 1) / total, 0.0, 1.0);
+  if (state_ == State::kIdle) {
+    report.message = "idle";
+  } else {
+    const double elapsed_s = static_cast<double>(now_us - request_start_us_) * 1e-6;
+    report.message = (terminal(state_) ? std::string() : step_text()) + detail_ + " (" +
+                     seconds_text(elapsed_s) + " since the request)";
+  }
+  report.num_fused_percepts = num_fused_percepts_;
+  report.num_hypotheses = num_hypotheses_;
+  outputs_.status(report);
+}
+
+}  // namespace vsl::localizer_daemon

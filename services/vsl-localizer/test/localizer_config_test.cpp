@@ -1,0 +1,79 @@
+// config/vsl-localizer.yaml: every key validated, one line per error.
+#include <gtest/gtest.h>
+
+#include "localizer_config.hpp"
+#include "vsl/config/node.hpp"
+
+namespace vsl::localizer_daemon {
+namespace {
+
+const char* kMinimal =
+    "localizer:\n"
+    "  world: worlds/kitchen.yaml\n"
+    "  options: localizer.yaml\n"
+    "  scan:\n"
+    "    ego_targets_m: [[2, 0, 1]]\n";
+
+std::string error_of(const std::string& text) {
+  try {
+    read_localizer_config(config::Node::load_string(text, "/cfg/l.yaml"));
+  } catch (const config::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LocalizerConfig, MinimalAndDefaults) {
+  const auto c = read_localizer_config(config::Node::load_string(kMinimal, "/cfg/l.yaml"));
+  EXPECT_EQ(c.world_path, "/cfg/worlds/kitchen.yaml");
+  EXPECT_EQ(c.options_path, "/cfg/localizer.yaml");
+  ASSERT_EQ(c.core.ego_gaze_targets_m.size(), 1u);
+  EXPECT_EQ(c.core.ego_gaze_targets_m[0], Eigen::Vector3d(2, 0, 1));
+  EXPECT_FALSE(c.core.passive);
+  EXPECT_EQ(c.core.frames_per_target, 2);
+  const auto p = read_localizer_config(config::Node::load_string(kMinimal, "/cfg/l.yaml"), true);
+  EXPECT_TRUE(p.core.passive);
+  EXPECT_EQ(p.passive_channels.status, "PASSIVE_LOCALIZER_STATUS");
+}
+
+TEST(LocalizerConfig, BadValuesAreOneLineWithFileLineAndKey) {
+  const std::string base(kMinimal);
+  EXPECT_EQ(error_of(base + "  max_active_looks: -1\n"),
+            "/cfg/l.yaml:6: localizer.max_active_looks: must be an integer in [0, 20]");
+  EXPECT_NE(error_of(base + "  bogus: 1\n").find("/cfg/l.yaml:6"), std::string::npos);
+  EXPECT_NE(error_of(base + "  fusing_timeout_s: 0\n").find("localizer.fusing_timeout_s"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(kMinimal).replace(base.find("[[2, 0, 1]]"), 11, "[[0, 0, 1]]"))
+                .find("ego_targets_m[0]: must lie"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of(std::string(kMinimal).replace(base.find("[[2, 0, 1]]"), 11, "[]")).find("non-empty"),
+      std::string::npos);
+  EXPECT_NE(error_of(base + "  passive: {status_channel: LOCALIZER_STATUS}\n")
+                .find("must differ from follow_status_channel"),
+            std::string::npos);
+  EXPECT_NE(error_of(base + "  localize_at_startup: true\n  passive: {enabled: true}\n")
+                .find("localize_at_startup"),
+            std::string::npos);
+}
+
+TEST(LocalizerConfig, ShippedFileLoads) {
+  const auto setup = load_localizer(config::Node::load_file("config/vsl-localizer.yaml"));
+  EXPECT_EQ(setup.config.core.ego_gaze_targets_m.size(), 5u);
+  EXPECT_FALSE(setup.world.objects.empty());
+}
+
+TEST(LocalizerConfig, MissingWorldIsTheKeysFault) {
+  try {
+    load_localizer(config::Node::load_string(
+        std::string(kMinimal).replace(std::string(kMinimal).find("worlds/kitchen.yaml"), 19,
+                                      "/nonexistent.yaml"),
+        "/cfg/l.yaml"));
+    FAIL();
+  } catch (const config::Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("/cfg/l.yaml:2: localizer.world: ", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace vsl::localizer_daemon

@@ -1,0 +1,316 @@
+// The request state machine driven with fake time, fake messages and a fake localization engine.
+#include <gtest/gtest.h>
+
+#include <deque>
+
+#include "localizer_core.hpp"
+
+namespace vsl::localizer_daemon {
+namespace {
+
+using localization::FusedPercept;
+using localization::LocalizationResult;
+using localization::Status;
+
+constexpr std::int64_t kSecond = 1'000'000;
+
+struct Recorder : LocalizerOutputs {
+  void gaze(const GazeCommand& c) override { gazes.push_back(c); }
+  void status(const StatusReport& r) override { statuses.push_back(r); }
+  void pose(const PoseReport& r) override { poses.push_back(r); }
+  // The states in order, repeats (periodic statuses) folded.
+  std::vector<State> states() const {
+    std::vector<State> out;
+    for (const auto& s : statuses) {
+      if (out.empty() || out.back() != s.state) out.push_back(s.state);
+    }
+    return out;
+  }
+  std::vector<GazeCommand> gazes;
+  std::vector<StatusReport> statuses;
+  std::vector<PoseReport> poses;
+};
+
+// Answers from a script: one result per localize() call.
+struct FakeEngine : LocalizationEngine {
+  LocalizationResult localize(const std::vector<FusedPercept>& percepts) const override {
+    seen.push_back(percepts.size());
+    LocalizationResult r = results.empty() ? LocalizationResult{} : results.front();
+    if (!results.empty()) results.pop_front();
+    return r;
+  }
+  std::optional<Eigen::Vector3d> discriminator_target(const LocalizationResult&) const override {
+    return discriminator;
+  }
+  mutable std::deque<LocalizationResult> results;
+  mutable std::vector<std::size_t> seen;
+  std::optional<Eigen::Vector3d> discriminator = Eigen::Vector3d(1.0, 2.0, 0.5);
+};
+
+LocalizationResult result(Status status, double x = 1.0) {
+  LocalizationResult r;
+  r.status = status;
+  r.world_T_ego.translation() = Eigen::Vector3d(x, 2.0, 0.0);
+  r.covariance = localization::PoseCovariance::Identity() * 1e-4;
+  r.hypotheses.resize(status == Status::kAmbiguous ? 2 : 1);
+  r.message = localization::to_string(status);
+  return r;
+}
+
+CoreOptions options() {
+  CoreOptions o;
+  o.ego_gaze_targets_m = {Eigen::Vector3d(2, -1, 1), Eigen::Vector3d(2, 0, 1),
+                          Eigen::Vector3d(2, 1, 1)};
+  o.frames_per_target = 2;
+  o.settle_timeout_s = 5;
+  o.recognition_timeout_s = 5;
+  o.fusing_timeout_s = 2;
+  o.fusing_attempts = 2;
+  o.max_active_looks = 2;
+  o.status_period_s = 0.5;
+  o.first_gaze_id = 100;
+  return o;
+}
+
+struct Harness {
+  explicit Harness(CoreOptions o = options()) : core(std::move(o), engine, out) {}
+  // The head reaches the last gaze target and frames there are recognized.
+  void settle_and_recognize(int frames = 2) {
+    const std::int64_t gaze_id = out.gazes.back().gaze_id;
+    // A moving frame for the same command does not count.
+    core.frame({next_frame, gaze_id, false}, now += 100'000);
+    core.percepts(next_frame++, now += 10'000);
+    for (int i = 0; i < frames; ++i) {
+      core.frame({next_frame, gaze_id, true}, now += 100'000);
+      core.percepts(next_frame++, now += 10'000);
+    }
+  }
+  void fused(std::size_t n = 6) {
+    core.fused(core.request_id(), std::vector<FusedPercept>(n, FusedPercept{}), now += 10'000);
+  }
+  FakeEngine engine;
+  Recorder out;
+  LocalizerCore core;
+  std::int64_t now = 1000 * kSecond;
+  std::int64_t next_frame = 0;
+};
+
+TEST(LocalizerCore, ScanFuseLocalize) {
+  Harness h;
+  h.engine.results.push_back(result(Status::kLocalized));
+  h.core.request(7, h.now);
+  ASSERT_EQ(h.out.gazes.size(), 1u);
+  EXPECT_EQ(h.out.gazes[0].gaze_id, 100);
+  EXPECT_EQ(h.out.gazes[0].ego_target_m, Eigen::Vector3d(2, -1, 1));
+  h.settle_and_recognize();
+  ASSERT_EQ(h.out.gazes.size(), 2u);
+  EXPECT_EQ(h.out.gazes[1].gaze_id, 101);
+  h.settle_and_recognize();
+  h.settle_and_recognize();
+  EXPECT_EQ(h.out.gazes.size(), 3u);
+  EXPECT_EQ(h.core.state(), State::kFusing);
+  h.fused(6);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].request_id, 7);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_EQ(h.engine.seen, std::vector<std::size_t>{6});
+  EXPECT_EQ(h.out.states(), (std::vector<State>{State::kScanning, State::kFusing,
+                                                State::kValidating, State::kDone}));
+  EXPECT_DOUBLE_EQ(h.out.statuses.back().progress, 1.0);
+  EXPECT_EQ(h.out.statuses.back().num_fused_percepts, 6);
+  // "step k of N" while in progress.
+  bool saw_step = false;
+  for (const auto& s : h.out.statuses) {
+    if (s.message.find("step 2 of 4: gaze target 2 of 3") == 0) saw_step = true;
+  }
+  EXPECT_TRUE(saw_step);
+}
+
+TEST(LocalizerCore, FramesOfOtherCommandsOrInMotionDoNotCount) {
+  Harness h;
+  h.core.request(7, h.now);
+  h.core.frame({1, 99, true}, h.now += 1000);  // an older command's frame at rest
+  h.core.percepts(1, h.now += 1000);
+  h.core.frame({2, 100, false}, h.now += 1000);  // ours, still moving
+  h.core.percepts(2, h.now += 1000);
+  h.core.percepts(3, h.now += 1000);  // a frame never seen at rest
+  EXPECT_EQ(h.out.gazes.size(), 1u);
+  h.core.frame({4, 100, true}, h.now += 1000);
+  h.core.percepts(4, h.now += 1000);
+  h.core.percepts(4, h.now += 1000);  // a duplicate counts once
+  EXPECT_EQ(h.out.gazes.size(), 1u);
+  h.core.frame({5, 100, true}, h.now += 1000);
+  h.core.percepts(5, h.now += 1000);
+  EXPECT_EQ(h.out.gazes.size(), 2u);
+}
+
+TEST(LocalizerCore, AmbiguousRunsActiveValidationUntilLocalized) {
+  Harness h;
+  h.engine.results = {result(Status::kAmbiguous), result(Status::kLocalized, 3.0)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused(5);
+  EXPECT_EQ(h.core.state(), State::kActiveValidation);
+  ASSERT_EQ(h.out.gazes.size(), 4u);
+  EXPECT_EQ(h.out.gazes[3].ego_target_m, Eigen::Vector3d(1.0, 2.0, 0.5));
+  EXPECT_TRUE(h.out.poses.empty());
+  h.settle_and_recognize();
+  EXPECT_EQ(h.core.state(), State::kFusing);
+  h.fused(7);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 3.0);
+  EXPECT_EQ(h.out.states(), (std::vector<State>{State::kScanning, State::kFusing,
+                                                State::kValidating, State::kActiveValidation,
+                                                State::kFusing, State::kValidating, State::kDone}));
+}
+
+TEST(LocalizerCore, AmbiguousAfterTheLookLimit) {
+  Harness h;
+  h.engine.results = {result(Status::kAmbiguous), result(Status::kAmbiguous),
+                      result(Status::kAmbiguous)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  h.settle_and_recognize();
+  h.fused();
+  h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.gazes.size(), 5u);  // 3 scan + 2 active looks
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kAmbiguous);
+  EXPECT_NE(h.out.poses[0].message.find("after 2 active looks"), std::string::npos);
+  EXPECT_EQ(h.core.state(), State::kDone);
+}
+
+TEST(LocalizerCore, FailedResultCarriesNoPose) {
+  Harness h;
+  h.engine.results = {result(Status::kFailed)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_TRUE(h.out.poses[0].result.world_T_ego.isApprox(Eigen::Isometry3d::Identity()));
+  EXPECT_TRUE(h.out.poses[0].result.covariance.isZero());
+  EXPECT_EQ(h.core.state(), State::kFailed);
+}
+
+TEST(LocalizerCore, HeadThatNeverSettlesFails) {
+  Harness h;
+  h.core.request(7, h.now);
+  h.core.tick(h.now += 4 * kSecond);
+  EXPECT_TRUE(h.out.poses.empty());
+  h.core.tick(h.now += 2 * kSecond);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("did not settle on gaze target 1"), std::string::npos);
+  EXPECT_EQ(h.out.statuses.back().state, State::kFailed);
+  EXPECT_NE(h.out.statuses.back().message.find("timeout"), std::string::npos);
+}
+
+TEST(LocalizerCore, RecognitionThatNeverAnswersFails) {
+  Harness h;
+  h.core.request(7, h.now);
+  h.core.frame({1, 100, true}, h.now += kSecond);
+  h.core.tick(h.now += 4 * kSecond);  // 4 s after settling: still waiting
+  EXPECT_TRUE(h.out.poses.empty());
+  h.core.tick(h.now += 2 * kSecond);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_NE(h.out.poses[0].message.find("0 of 2 frames"), std::string::npos);
+}
+
+TEST(LocalizerCore, FusingTimesOutReEntersFusingThenFails) {
+  Harness h;
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  ASSERT_EQ(h.core.state(), State::kFusing);
+  h.out.statuses.clear();
+  h.core.tick(h.now += 2 * kSecond + 1);
+  // A new ENTRY into FUSING: one SCANNING status in between.
+  EXPECT_EQ(h.out.states(), (std::vector<State>{State::kScanning, State::kFusing}));
+  EXPECT_EQ(h.core.state(), State::kFusing);
+  h.core.tick(h.now += 2 * kSecond + 1);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_NE(h.out.poses[0].message.find("no FUSED_PERCEPTS"), std::string::npos);
+}
+
+TEST(LocalizerCore, FusedPerceptsOfAnotherRequestAreIgnored) {
+  Harness h;
+  h.engine.results = {result(Status::kLocalized)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.core.fused(6, {FusedPercept{}}, h.now);
+  EXPECT_TRUE(h.out.poses.empty());
+  h.fused();
+  EXPECT_EQ(h.out.poses.size(), 1u);
+}
+
+TEST(LocalizerCore, NewRequestAbortsTheOneInProgress) {
+  Harness h;
+  h.core.request(7, h.now);
+  h.settle_and_recognize();
+  h.core.request(7, h.now += 1000);  // the same request again: a duplicate
+  EXPECT_TRUE(h.out.poses.empty());
+  h.core.request(8, h.now += 1000);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].request_id, 7);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("aborted by request 8"), std::string::npos);
+  EXPECT_EQ(h.core.request_id(), 8);
+  EXPECT_EQ(h.core.state(), State::kScanning);
+  EXPECT_EQ(h.out.gazes.back().ego_target_m, Eigen::Vector3d(2, -1, 1));  // the scan restarts
+}
+
+TEST(LocalizerCore, PeriodicStatus) {
+  Harness h;
+  h.core.tick(h.now);
+  ASSERT_EQ(h.out.statuses.size(), 1u);
+  EXPECT_EQ(h.out.statuses[0].state, State::kIdle);
+  EXPECT_EQ(h.out.statuses[0].request_id, -1);
+  h.core.tick(h.now += 100'000);
+  EXPECT_EQ(h.out.statuses.size(), 1u);
+  h.core.tick(h.now += 500'000);
+  EXPECT_EQ(h.out.statuses.size(), 2u);
+}
+
+TEST(LocalizerCore, PassiveFollowsTheRecordedRun) {
+  CoreOptions o = options();
+  o.passive = true;
+  Harness h(o);
+  h.engine.results = {result(Status::kAmbiguous), result(Status::kLocalized, 4.0)};
+  h.core.request(7, h.now);
+  h.core.followed_status(7, State::kScanning, h.now += 1000);
+  h.core.frame({1, 5, true}, h.now += 1000);  // ignored in passive mode
+  EXPECT_EQ(h.core.state(), State::kScanning);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  EXPECT_EQ(h.core.state(), State::kFusing);
+  h.fused();
+  EXPECT_EQ(h.core.state(), State::kActiveValidation);
+  h.core.followed_status(7, State::kValidating, h.now += 1000);
+  h.core.followed_status(7, State::kActiveValidation, h.now += 1000);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  EXPECT_EQ(h.core.state(), State::kFusing);
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_TRUE(h.out.gazes.empty());
+}
+
+TEST(LocalizerCore, PassiveReportsAmbiguousWhenTheRecordedRunEnds) {
+  CoreOptions o = options();
+  o.passive = true;
+  Harness h(o);
+  h.engine.results = {result(Status::kAmbiguous)};
+  // No request in the log: the recorded status starts the run.
+  h.core.followed_status(9, State::kScanning, h.now);
+  EXPECT_EQ(h.core.request_id(), 9);
+  h.core.followed_status(9, State::kFusing, h.now += 1000);
+  h.fused();
+  h.core.followed_status(9, State::kDone, h.now += 1000);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kAmbiguous);
+  EXPECT_EQ(h.out.poses[0].request_id, 9);
+}
+
+}  // namespace
+}  // namespace vsl::localizer_daemon
