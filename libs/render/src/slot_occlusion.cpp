@@ -1,7 +1,7 @@
 #include "slot_occlusion.hpp"
 
-#include <algorithm>
 #include <Eigen/Geometry>
+#include <algorithm>
 
 #include <cmath>
 #include <map>
