@@ -5,12 +5,20 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <sys/wait.h>
+
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
 #include "chessboard_scene.hpp"
+#include "child_process.hpp"
+#include "messages.hpp"
 #include "run_command.hpp"
 #include "vsl/head/stereo_calibration.hpp"
+#include "vsl/runtime/lcm_bus.hpp"
+#include "vsl/runtime/typed.hpp"
+#include "vsl/stereo_frame_t.hpp"
 
 namespace vsl::calibration {
 namespace {
@@ -100,6 +108,37 @@ stereo:
   EXPECT_EQ(result.exit_code, 1) << result.out;
   EXPECT_EQ(line_count(result.err), 1) << result.err;
   EXPECT_NE(result.err.find("exceeds 0.500 px"), std::string::npos) << result.err;
+}
+
+// The live path: `check --live` reads STEREO_FRAME (here published by the test over loopback
+// multicast, ttl 0, a port of its own) until it has its views, then reports.
+TEST(VslCalibrateCli, ChecksALiveStereoFrameStream) {
+  const std::string url = "udpm://239.255.76.67:17651?ttl=0&recv_buf_size=4194304";
+  const auto truth = head::load_stereo_calibration("calib/armar3_sim.yaml");
+  const auto pairs = testing::render_chessboard_views(BoardSpec{9, 6, 0.03}, truth, 4, 31);
+  runtime::LcmBus bus(url,
+                      runtime::Logger("test", runtime::Level::kError, [](std::string_view) {}));
+  vsl::testing::ChildProcess child({kTool, "check", "--calibration", "calib/armar3_sim.yaml",
+                                    "--board", "9x6", "--square-mm", "30", "--live", "--lcm-url",
+                                    url, "--views", "3", "--timeout-s", "60"});
+  std::optional<int> status;
+  // One frame every 100 ms until the tool is done; bounded at 60 s.
+  for (int k = 0; k < 600 && !status; ++k) {
+    const auto& pair = pairs[static_cast<std::size_t>(k) % pairs.size()];
+    vsl::stereo_frame_t frame;
+    frame.utime = 1000000 + k;
+    frame.frame_id = k;
+    frame.head_name = "armar3";
+    frame.gaze_request_id = -1;
+    frame.left = stereo_capture::image_message(pair.left, frame.utime);
+    frame.right = stereo_capture::image_message(pair.right, frame.utime);
+    runtime::publish(bus, "STEREO_FRAME", frame);
+    status = child.wait(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(status.has_value()) << child.out() << child.err();
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << child.out() << child.err();
+  EXPECT_NE(child.out().find("view 3 of 3"), std::string::npos) << child.out();
+  EXPECT_NE(child.out().find("epipolar error RMS 0.0"), std::string::npos) << child.out();
 }
 
 TEST(VslCalibrateCli, HelpAndBadCommandLines) {
