@@ -109,6 +109,7 @@ void LocalizerCore::start_look(const Eigen::Vector3d& ego_target_m, std::int64_t
   look_deadline_us_ = after(now_us, options_.settle_timeout_s);
   look_target_ = ego_target_m;
   outputs_.gaze(GazeCommand{gaze_id_, ego_target_m});
+  next_gaze_repeat_us_ = after(now_us, options_.gaze_repeat_period_s);
   const bool active = active_looks_ > 0;
   detail_ = (active ? "active look " + std::to_string(active_looks_) + " of at most " +
                           std::to_string(options_.max_active_looks)
@@ -251,6 +252,11 @@ void LocalizerCore::tick(std::int64_t now_us) {
              now_us);
       }
       return;
+    }
+    if (!options_.passive && gaze_id_ >= 0 && at_rest_frames_.empty() && recognized_ == 0 &&
+        now_us >= next_gaze_repeat_us_) {
+      outputs_.gaze(GazeCommand{gaze_id_, look_target_});  // same id: a repeat, not a new look
+      next_gaze_repeat_us_ = after(now_us, options_.gaze_repeat_period_s);
     }
   } else if (state_ == State::kFusing && now_us >= fusing_deadline_us_) {
     if (options_.passive || fusing_attempt_ >= options_.fusing_attempts) {

@@ -50,6 +50,9 @@ struct CoreOptions {
   std::vector<Eigen::Vector3d> ego_gaze_targets_m;  // the scan, ego frame (m)
   int frames_per_target = 2;                        // recognized frames at rest per gaze target
   double settle_timeout_s = 15.0;                   // gaze command -> first frame at rest on it
+  // The gaze command goes out again this often until the head is at rest on it: a driver that
+  // started or restarted after the command (or a lost datagram) still gets it (s).
+  double gaze_repeat_period_s = 1.0;
   double recognition_timeout_s = 10.0;  // first frame at rest -> frames_per_target recognized
   double fusing_timeout_s = 5.0;        // FUSING -> FUSED_PERCEPTS, per attempt
   int fusing_attempts = 3;              // FUSING entries before FAILED
@@ -168,6 +171,7 @@ class LocalizerCore {
   Eigen::Vector3d look_target_ = Eigen::Vector3d::Zero();
   std::int64_t gaze_id_ = -1;
   std::int64_t look_deadline_us_ = 0;  // settle, then recognition deadline
+  std::int64_t next_gaze_repeat_us_ = 0;
   std::set<std::int64_t> at_rest_frames_;
   int recognized_ = 0;
 

@@ -179,6 +179,7 @@ void print_text(const Report& r, bool details, std::ostream& out) {
                     o.error->position_m * 100, o.error->heading_rad * kRadToDeg,
                     o.error->rotation_rad * kRadToDeg);
     }
+    if (r.cases[k].active_looks > 0) out << format("  %d active look(s)", r.cases[k].active_looks);
     if (!r.cases[k].message.empty()) out << "  (" << r.cases[k].message << ")";
     if (r.peer) {
       const scenario::Outcome& p = r.peer->cases[k].outcome;
@@ -268,6 +269,7 @@ void print_json(const Report& r, bool details, std::ostream& out) {
         json.key("heading_error_deg").number(o.error->heading_rad * kRadToDeg);
         json.key("rotation_error_deg").number(o.error->rotation_rad * kRadToDeg);
       }
+      json.key("active_looks").number(r.cases[k].active_looks);
       json.key("message").string(r.cases[k].message);
       if (r.peer) {
         const CaseResult& p = r.peer->cases[k];

@@ -39,6 +39,11 @@ options:
   --request-id N       request id (default: wall time in microseconds)
   --reason TEXT        free text carried by the request
   -q, --quiet          no progress lines, only the result
+  --follow             send no request: report the first POSE_ESTIMATE of any request (for
+                       replays, e.g. with a passive localizer); waits for no heartbeat
+  --pose-channel CH    channel of the pose estimates (default POSE_ESTIMATE; a passive
+                       localizer publishes PASSIVE_POSE_ESTIMATE)
+  --status-channel CH  channel of the localizer's status (default LOCALIZER_STATUS)
 exit codes: 0 localized, 1 ambiguous, failed or timed out, 2 bad usage
 Besides the table it prints one line for scripts:
   result: status=LOCALIZED x_m=.. y_m=.. z_m=.. yaw_deg=.. [position_error_m=.. rotation_error_deg=..]
@@ -85,10 +90,14 @@ struct Options {
   std::int64_t request_id = 0;
   std::string reason;
   bool quiet = false;
+  bool follow = false;
+  std::string pose_channel = "POSE_ESTIMATE";
+  std::string status_channel = "LOCALIZER_STATUS";
 };
 
 Options parse(int argc, char** argv) {
   Options options;
+  bool explicit_wait_for = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -102,6 +111,7 @@ Options parse(int argc, char** argv) {
       options.lcm_url = value();
     } else if (arg == "--wait-for") {
       options.wait_for.clear();
+      explicit_wait_for = true;
       std::stringstream names(value());
       for (std::string name; std::getline(names, name, ',');) {
         if (!name.empty()) options.wait_for.insert(name);
@@ -124,10 +134,17 @@ Options parse(int argc, char** argv) {
       options.reason = value();
     } else if (arg == "-q" || arg == "--quiet") {
       options.quiet = true;
+    } else if (arg == "--follow") {
+      options.follow = true;
+    } else if (arg == "--pose-channel") {
+      options.pose_channel = value();
+    } else if (arg == "--status-channel") {
+      options.status_channel = value();
     } else {
       usage_error("unknown argument '" + arg + "'");
     }
   }
+  if (options.follow && !explicit_wait_for) options.wait_for.clear();
   return options;
 }
 
@@ -153,8 +170,10 @@ int main(int argc, char** argv) {
   }
   vsl::runtime::Bus& bus = *bus_storage;
 
-  const std::int64_t request_id =
-      options.request_id > 0 ? options.request_id : vsl::runtime::wall_utime();
+  // In follow mode the request is whichever the first status or pose names.
+  std::int64_t request_id = options.follow           ? -1
+                            : options.request_id > 0 ? options.request_id
+                                                     : vsl::runtime::wall_utime();
   std::set<std::string> alive;
   std::optional<vsl::request::Pose> truth;
   std::optional<vsl::pose_estimate_t> estimate;
@@ -169,7 +188,8 @@ int main(int argc, char** argv) {
       bus, "GROUND_TRUTH_POSE",
       [&](const vsl::ground_truth_pose_t& m, std::int64_t) { truth = pose_of(m.world_T_ego); });
   vsl::runtime::subscribe<vsl::localizer_status_t>(
-      bus, "LOCALIZER_STATUS", [&](const vsl::localizer_status_t& m, std::int64_t) {
+      bus, options.status_channel, [&](const vsl::localizer_status_t& m, std::int64_t) {
+        if (options.follow && request_id < 0 && m.request_id > 0) request_id = m.request_id;
         if (m.request_id != request_id) return;
         request_seen = true;
         if (options.quiet ||
@@ -181,8 +201,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "[%6.1f s] %-17s %3.0f%%  %s\n", seconds_since_start(),
                      state_name(m.state), 100.0 * m.progress, m.message.c_str());
       });
-  vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, "POSE_ESTIMATE",
+  vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, options.pose_channel,
                                                 [&](const vsl::pose_estimate_t& m, std::int64_t) {
+                                                  if (options.follow && !estimate)
+                                                    request_id = m.request_id;
                                                   if (m.request_id == request_id) estimate = m;
                                                 });
 
@@ -225,7 +247,8 @@ int main(int argc, char** argv) {
   request.request_id = request_id;
   request.source = "vsl-request";
   request.reason = options.reason;
-  for (int attempt = 0; !request_seen && !estimate && Clock::now() < deadline; ++attempt) {
+  for (int attempt = 0; !options.follow && !request_seen && !estimate && Clock::now() < deadline;
+       ++attempt) {
     request.utime = vsl::runtime::wall_utime();
     vsl::runtime::publish(bus, "LOCALIZE_REQUEST", request);
     if (!options.quiet) {

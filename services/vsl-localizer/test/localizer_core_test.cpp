@@ -144,6 +144,21 @@ TEST(LocalizerCore, FramesOfOtherCommandsOrInMotionDoNotCount) {
   EXPECT_EQ(h.out.gazes.size(), 2u);
 }
 
+TEST(LocalizerCore, GazeCommandRepeatsUntilTheHeadIsAtRest) {
+  Harness h;
+  h.core.request(7, h.now);
+  ASSERT_EQ(h.out.gazes.size(), 1u);
+  h.core.tick(h.now += kSecond / 2);
+  EXPECT_EQ(h.out.gazes.size(), 1u);  // not yet due
+  h.core.tick(h.now += kSecond / 2);
+  ASSERT_EQ(h.out.gazes.size(), 2u);  // the driver may have missed it: same id, same target
+  EXPECT_EQ(h.out.gazes[1].gaze_id, h.out.gazes[0].gaze_id);
+  EXPECT_EQ(h.out.gazes[1].ego_target_m, h.out.gazes[0].ego_target_m);
+  h.core.frame({1, h.out.gazes[0].gaze_id, true}, h.now += 1000);  // at rest now
+  h.core.tick(h.now += 2 * kSecond);
+  EXPECT_EQ(h.out.gazes.size(), 2u);  // no more repeats once the head is at rest
+}
+
 TEST(LocalizerCore, AmbiguousRunsActiveValidationUntilLocalized) {
   Harness h;
   h.engine.results = {result(Status::kAmbiguous), result(Status::kLocalized, 3.0)};
