@@ -122,7 +122,12 @@ void HandleRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blo
     Detection detection;
     detection.type = model_.type();
     detection.blob_index = static_cast<int>(i);
-    detection.reference_px = blob.centroid_px;
+    // Along the bar, the middle of its two ends rather than the centroid: the standoffs (seen
+    // from the side, differently by each camera) pull the centroid along a horizontal bar, where
+    // every pixel of that shift is disparity error; the bar's ends are the same object points in
+    // both images. Across the bar, the centroid.
+    detection.reference_px =
+        blob.centroid_px + 0.5 * (axes.a_min_px + axes.a_max_px) * blob.major_axis;
     detection.area_px = blob.area_px;
     detection.major_axis_angle_rad = major_axis_angle_rad(blob);
     detection.major_extent_px = axes.major_extent_px;

@@ -80,25 +80,29 @@ inline bool admitted_step(const std::uint8_t* p, const std::uint8_t* q, int max_
 // 2 px brass handle bar on a blue door is a colour edge that criterion (1) of region growing
 // handles, and must stay a region of its own, not become barrier). Tested across rows (vertical
 // lines) and across columns (horizontal lines).
-constexpr int kHueNoiseGrey = 6;  // about 3 sigma of the renderer's and a webcam's sensor noise
-constexpr int kFlatGrey = 9;      // about 3 sigma of the difference of two noisy pixels
+constexpr int kHueNoiseGrey = 6;     // about 3 sigma of the renderer's and a webcam's sensor noise
+constexpr int kMinLinePx = 9;        // see line_barrier
+constexpr int kLineExtensionPx = 4;  // see line_barrier
+constexpr int kFlatGrey = 9;         // about 3 sigma of the difference of two noisy pixels
 
 struct LineTest {
   int threshold;  // on the brightness difference to each side, grey levels summed over R, G, B
   // `step` is the distance in bytes from one pixel to the next across the line: the surface two
-  // pixels beyond the line's neighbours, on both sides, must be flat (within kFlatGrey of them per
-  // channel). A reveal runs through a flat front; the highlight along a handle bar (a bright line
-  // of the bar's own hue) has the bar's shaded facets and then the door beside it, and must not
-  // become barrier that cuts the bar apart.
+  // pixels beyond the line's neighbours must be flat (within kFlatGrey of them per channel) on
+  // both sides. A reveal runs through a flat front; the highlight along a handle bar (a bright
+  // line of the bar's own hue) has the bar's shaded facets and then the door beside it, and must
+  // not become barrier that cuts the bar apart. (Where a handle stands within 3 px of a reveal
+  // the line breaks; line_bridge_px closes short breaks.)
   std::ptrdiff_t step;
   bool operator()(const std::uint8_t* before, const std::uint8_t* line_a,
                   const std::uint8_t* line_b, const std::uint8_t* after) const {
+    bool flat_before = true, flat_after = true;
     for (int c = 0; c < 3; ++c) {
-      if (std::abs(int{before[c]} - int{before[c - 2 * step]}) > kFlatGrey ||
-          std::abs(int{after[c]} - int{after[c + 2 * step]}) > kFlatGrey) {
-        return false;
-      }
+      flat_before =
+          flat_before && std::abs(int{before[c]} - int{before[c - 2 * step]}) <= kFlatGrey;
+      flat_after = flat_after && std::abs(int{after[c]} - int{after[c + 2 * step]}) <= kFlatGrey;
     }
+    if (!flat_before || !flat_after) return false;
     // line_a == line_b: a 1 px line; otherwise the pair straddled by a thinner one (weights 1/2).
     int side_1 = 0, side_2 = 0;
     int deviation[3];
@@ -130,6 +134,38 @@ struct LineTest {
     return true;
   }
 };
+
+// Clears the barrier pixels whose chromaticity RGB / (R + G + B) differs from that of the mean of
+// the pixels 3 px away on both sides across the line (`step` bytes per pixel across) by more
+// than kMaxBarrierChromaticity (max over channels).
+constexpr double kMaxBarrierChromaticity = 0.06;
+void keep_same_hue(const cv::Mat& bgr, std::ptrdiff_t step, cv::Mat& map) {
+  const int margin = 3;
+  for (int v = 0; v < map.rows; ++v) {
+    std::uint8_t* row = map.ptr<std::uint8_t>(v);
+    const std::uint8_t* pixels = bgr.ptr<std::uint8_t>(v);
+    for (int u = 0; u < map.cols; ++u) {
+      if (row[u] == 0) continue;
+      const bool across_columns = step == 3;
+      if (across_columns ? (u < margin || u + margin >= map.cols)
+                         : (v < margin || v + margin >= map.rows)) {
+        continue;
+      }
+      const std::uint8_t* p = pixels + 3 * u;
+      const std::uint8_t* a = p - margin * step;
+      const std::uint8_t* b = p + margin * step;
+      const double own = int{p[0]} + int{p[1]} + int{p[2]};
+      const double around = int{a[0]} + int{a[1]} + int{a[2]} + int{b[0]} + int{b[1]} + int{b[2]};
+      if (own <= 0.0 || around <= 0.0) continue;
+      for (int c = 0; c < 3; ++c) {
+        if (std::abs(p[c] / own - (int{a[c]} + int{b[c]}) / around) > kMaxBarrierChromaticity) {
+          row[u] = 0;
+          break;
+        }
+      }
+    }
+  }
+}
 
 // The barrier map (CV_8U, 1 on line pixels). Lines found across rows are bridged along the columns
 // (and those found across columns along the rows) over breaks of up to 2 bridge_px pixels: where
@@ -167,12 +203,28 @@ cv::Mat line_barrier(const cv::Mat& bgr, const SegmentationOptions& options) {
       }
     }
   }
+  // Along each line direction: a closing bridges breaks of up to 2 bridge pixels; an opening of
+  // kMinLinePx drops what is still shorter (noise, a corner's blend), which is no reveal; then the
+  // lines grow by kLineExtensionPx at their ends, where the reveal meets the front's outline and
+  // the flatness test (which reads 3 px across) loses its last pixels: without the extension the
+  // two fronts join around the line's end.
   const int bridge = options.line_bridge_px;
   if (bridge > 0) {
-    cv::morphologyEx(across_rows, across_rows, cv::MORPH_CLOSE,
-                     cv::getStructuringElement(cv::MORPH_RECT, {1, 2 * bridge + 1}));
-    cv::morphologyEx(across_columns, across_columns, cv::MORPH_CLOSE,
-                     cv::getStructuringElement(cv::MORPH_RECT, {2 * bridge + 1, 1}));
+    for (cv::Mat* map : {&across_rows, &across_columns}) {
+      const bool vertical = map == &across_rows;
+      const auto along = [vertical](int half_length) {
+        return cv::getStructuringElement(cv::MORPH_RECT, vertical
+                                                             ? cv::Size(1, 2 * half_length + 1)
+                                                             : cv::Size(2 * half_length + 1, 1));
+      };
+      cv::morphologyEx(*map, *map, cv::MORPH_CLOSE, along(bridge));
+      cv::morphologyEx(*map, *map, cv::MORPH_OPEN, along(kMinLinePx / 2));
+      cv::dilate(*map, *map, along(kLineExtensionPx));
+      // Bridging and extension paint over whatever the line passes; only pixels of the hue
+      // around them (reveal, front) stay barrier. A handle bar beside a reveal (often within a
+      // pixel or two of it) stays the handle's: it is a colour edge that the step criterion cuts.
+      keep_same_hue(bgr, vertical ? 3 : static_cast<std::ptrdiff_t>(bgr.step[0]), *map);
+    }
   }
   across_rows |= across_columns;
   return across_rows;

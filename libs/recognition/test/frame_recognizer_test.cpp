@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <string>
@@ -265,13 +266,18 @@ TEST(FrameRecognizerTest, ShippedModelsEndToEnd) {
     near_errors_m.insert(near_errors_m.end(), e.near_error_m.begin(), e.near_error_m.end());
   }
   std::sort(near_errors_m.begin(), near_errors_m.end());
-  SCOPED_TRACE(std::to_string(percepts) + " percepts, " + std::to_string(wrong) +
-               " of a wrong object; within 2.5 m: " + std::to_string(near_errors_m.size()) +
-               ", median error " + std::to_string(median(near_errors_m)) + " m");
-  EXPECT_GE(percepts, 20);
-  EXPECT_LE(wrong, percepts / 10);  // measured 2 of 31
-  EXPECT_GE(near_errors_m.size(), 5u);
-  EXPECT_LT(median(near_errors_m), 0.03);
+  const std::string summary =
+      std::to_string(percepts) + " percepts, " + std::to_string(wrong) +
+      " of a wrong object; within 2.5 m: " + std::to_string(near_errors_m.size()) +
+      ", median error " + std::to_string(median(near_errors_m)) + " m";
+  std::printf("shipped models end to end: %s\n", summary.c_str());
+  SCOPED_TRACE(summary);
+  // Measured with the thin-line barrier: 62 percepts, 4 of a wrong object, 24 within 2.5 m,
+  // median error 1.1 cm (before it: 31 percepts, 2 wrong).
+  EXPECT_GE(percepts, 50);
+  EXPECT_LE(wrong, percepts / 10);
+  EXPECT_GE(near_errors_m.size(), 18u);
+  EXPECT_LT(median(near_errors_m), 0.02);
 }
 
 }  // namespace

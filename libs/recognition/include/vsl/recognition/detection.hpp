@@ -10,7 +10,8 @@ namespace vsl::recognition {
 struct Detection {
   std::string type;     // object type as in the world model: "door", "handle", ...
   int blob_index = -1;  // index into the blobs of the image it was found in
-  // The object's reference point in the raw image, pixels (u, v): the blob centroid X_c.
+  // The object's reference point in the raw image, pixels (u, v): the blob centroid X_c (doors);
+  // for handles the middle of the bar's two ends along the major axis (handle_recognizer.cpp).
   Eigen::Vector2d reference_px = Eigen::Vector2d::Zero();
   // Blob geometry the stereo cross match compares (size, orientation), pixels and radians.
   double area_px = 0.0;

@@ -48,7 +48,7 @@ struct SegmentationOptions {
   // colours have the same chromaticity (RGB / (R + G + B)) within this,
   // whatever their brightness: the Lambert-shaded facets of a handle bar. 0
   // turns this off.
-  double max_chromaticity_difference = 0.03;
+  double max_chromaticity_difference = 0.06;
   // ... the latter only between regions of at most max_facet_px pixels each:
   // the shaded gap line between two doors has their chromaticity too, and must
   // not join them.
