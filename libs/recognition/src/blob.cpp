@@ -83,13 +83,14 @@ Blob make_blob(std::vector<PixelRun> runs, const cv::Mat& bgr_image) {
   blob.runs = std::move(runs);
   if (blob.runs.empty()) return blob;
 
-  // One pass: sums of positions, their squares and the colours; the bounding box.
+  // One pass: sums of positions, their squares and the colours; the bounding box. Positions in
+  // closed form per run (a run is an arithmetic series of columns in one row), colours per pixel
+  // in integer grey levels.
   double count = 0.0;
-  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-  Eigen::Matrix2d sum_squares = Eigen::Matrix2d::Zero();
-  Eigen::Vector3d colour_sum = Eigen::Vector3d::Zero();
-  Eigen::Vector3d colour_min = Eigen::Vector3d::Constant(1.0);
-  Eigen::Vector3d colour_max = Eigen::Vector3d::Zero();
+  double su = 0.0, sv = 0.0, suu = 0.0, suv = 0.0, svv = 0.0;
+  std::int64_t colour_sum_grey[3] = {0, 0, 0};  // R, G, B
+  int colour_min_grey[3] = {255, 255, 255};
+  int colour_max_grey[3] = {0, 0, 0};
   blob.u_min = blob.runs.front().u_begin;
   blob.u_max = blob.runs.front().u_end - 1;
   blob.v_min = blob.runs.front().v;
@@ -97,19 +98,40 @@ Blob make_blob(std::vector<PixelRun> runs, const cv::Mat& bgr_image) {
   for (const PixelRun& run : blob.runs) {
     blob.u_min = std::min(blob.u_min, run.u_begin);
     blob.u_max = std::max(blob.u_max, run.u_end - 1);
-    const cv::Vec3b* row = bgr_image.ptr<cv::Vec3b>(run.v);
+    const double n = run.u_end - run.u_begin;
+    const double first = run.u_begin;
+    const double last = run.u_end - 1;
+    const double sum_u = n * (first + last) / 2.0;
+    // Sum of u^2 over first..last: S(last) - S(first - 1), S(k) = k (k + 1) (2k + 1) / 6.
+    const auto squares = [](double k) { return k * (k + 1.0) * (2.0 * k + 1.0) / 6.0; };
+    const double v = run.v;
+    su += sum_u;
+    sv += n * v;
+    suu += squares(last) - squares(first - 1.0);
+    suv += sum_u * v;
+    svv += n * v * v;
+    const std::uint8_t* row = bgr_image.ptr<std::uint8_t>(run.v);
     for (int u = run.u_begin; u < run.u_end; ++u) {
-      const Eigen::Vector2d x(u, run.v);
-      sum += x;
-      sum_squares += x * x.transpose();
-      const cv::Vec3b& bgr = row[u];
-      const Eigen::Vector3d rgb(bgr[2] / 255.0, bgr[1] / 255.0, bgr[0] / 255.0);
-      colour_sum += rgb;
-      colour_min = colour_min.cwiseMin(rgb);
-      colour_max = colour_max.cwiseMax(rgb);
+      const std::uint8_t* bgr = row + 3 * u;
+      for (int c = 0; c < 3; ++c) {
+        const int value = bgr[2 - c];
+        colour_sum_grey[c] += value;
+        colour_min_grey[c] = std::min(colour_min_grey[c], value);
+        colour_max_grey[c] = std::max(colour_max_grey[c], value);
+      }
     }
-    count += run.u_end - run.u_begin;
+    count += n;
   }
+  const Eigen::Vector2d sum(su, sv);
+  Eigen::Matrix2d sum_squares;
+  sum_squares << suu, suv, suv, svv;
+  const Eigen::Vector3d colour_sum(static_cast<double>(colour_sum_grey[0]) / 255.0,
+                                   static_cast<double>(colour_sum_grey[1]) / 255.0,
+                                   static_cast<double>(colour_sum_grey[2]) / 255.0);
+  const Eigen::Vector3d colour_min(colour_min_grey[0] / 255.0, colour_min_grey[1] / 255.0,
+                                   colour_min_grey[2] / 255.0);
+  const Eigen::Vector3d colour_max(colour_max_grey[0] / 255.0, colour_max_grey[1] / 255.0,
+                                   colour_max_grey[2] / 255.0);
   blob.area_px = count;
   blob.centroid_px = sum / count;
   blob.covariance_px2 = sum_squares / count - blob.centroid_px * blob.centroid_px.transpose();

@@ -184,21 +184,48 @@ cv::Mat line_barrier(const cv::Mat& bgr, const SegmentationOptions& options) {
   const LineTest across_row{threshold, 3};
   const LineTest across_column{threshold, step};
   // Three pixels of margin: the test reads the line's neighbours and two pixels beyond them.
+  // Brightness R + G + B once: the cheap part of the test (the line stands out from both sides)
+  // rejects almost every pixel before the per-channel hue and flatness checks run.
+  std::vector<std::int16_t> brightness(static_cast<std::size_t>(width) * height);
   for (int v = 0; v < height; ++v) {
     const std::uint8_t* row = bgr.ptr<std::uint8_t>(v);
+    std::int16_t* out = brightness.data() + static_cast<std::size_t>(v) * width;
+    for (int u = 0; u < width; ++u)
+      out[u] = std::int16_t(row[3 * u] + row[3 * u + 1] + row[3 * u + 2]);
+  }
+  // Both sides of a line of brightness `line2` (twice the line's mean) beyond the threshold.
+  const auto stands_out = [threshold](int before, int line2, int after) {
+    const int side_1 = line2 - 2 * before;
+    const int side_2 = line2 - 2 * after;
+    const int t2 = 2 * threshold;
+    return (side_1 >= t2 && side_2 >= t2) || (side_1 <= -t2 && side_2 <= -t2);
+  };
+  for (int v = 0; v < height; ++v) {
+    const std::uint8_t* row = bgr.ptr<std::uint8_t>(v);
+    const std::int16_t* b = brightness.data() + static_cast<std::size_t>(v) * width;
     std::uint8_t* vertical = across_rows.ptr<std::uint8_t>(v);
     for (int u = 3; u + 4 < width; ++u) {
       const std::uint8_t* p = row + 3 * u;
-      if (across_row(p - 3, p, p, p + 3)) vertical[u] = 1;
-      if (across_row(p - 3, p, p + 3, p + 6)) vertical[u] = vertical[u + 1] = 1;
+      if (stands_out(b[u - 1], 2 * b[u], b[u + 1]) && across_row(p - 3, p, p, p + 3)) {
+        vertical[u] = 1;
+      }
+      if (stands_out(b[u - 1], b[u] + b[u + 1], b[u + 2]) && across_row(p - 3, p, p + 3, p + 6)) {
+        vertical[u] = vertical[u + 1] = 1;
+      }
     }
     if (v < 3 || v + 4 >= height) continue;
     std::uint8_t* horizontal = across_columns.ptr<std::uint8_t>(v);
     std::uint8_t* horizontal_below = across_columns.ptr<std::uint8_t>(v + 1);
+    const std::int16_t* up = b - width;
+    const std::int16_t* down = b + width;
+    const std::int16_t* down2 = b + 2 * width;
     for (int u = 0; u < width; ++u) {
       const std::uint8_t* p = row + 3 * u;
-      if (across_column(p - step, p, p, p + step)) horizontal[u] = 1;
-      if (across_column(p - step, p, p + step, p + 2 * step)) {
+      if (stands_out(up[u], 2 * b[u], down[u]) && across_column(p - step, p, p, p + step)) {
+        horizontal[u] = 1;
+      }
+      if (stands_out(up[u], b[u] + down[u], down2[u]) &&
+          across_column(p - step, p, p + step, p + 2 * step)) {
         horizontal[u] = horizontal_below[u] = 1;
       }
     }
