@@ -87,11 +87,20 @@ cv::Mat draw_captioned(const cv::Mat& bgr, const std::string& caption) {
 
 cv::Mat side_by_side(const cv::Mat& left, const cv::Mat& right) {
   constexpr int kGap = 12;
-  const int rows = std::max(left.rows, right.rows) + 2 * kGap;
-  const int cols = left.cols + right.cols + 3 * kGap;
+  // The right picture (the camera) scaled to the left one's height, so that neither has a margin
+  // of empty background.
+  cv::Mat scaled = right;
+  if (!right.empty() && !left.empty() && right.rows != left.rows) {
+    const double scale = double(left.rows) / right.rows;
+    cv::resize(right, scaled,
+               cv::Size(std::max(1, int(std::lround(right.cols * scale))), left.rows), 0, 0,
+               scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
+  }
+  const int rows = std::max(left.rows, scaled.rows) + 2 * kGap;
+  const int cols = left.cols + scaled.cols + 3 * kGap;
   cv::Mat out(rows, cols, CV_8UC3, cv::Scalar(225, 222, 218));
   left.copyTo(out(cv::Rect(kGap, kGap, left.cols, left.rows)));
-  right.copyTo(out(cv::Rect(2 * kGap + left.cols, kGap, right.cols, right.rows)));
+  scaled.copyTo(out(cv::Rect(2 * kGap + left.cols, kGap, scaled.cols, scaled.rows)));
   return out;
 }
 

@@ -43,7 +43,8 @@ cv::Mat draw_camera(const CameraView& view, const head::CameraIntrinsics& intrin
 // An image (e.g. recognition's RECOGNITION_DEBUG picture, already annotated) with a caption.
 cv::Mat draw_captioned(const cv::Mat& bgr, const std::string& caption);
 
-// Map and camera picture side by side, top-aligned on a common background (the final picture).
+// Map and camera picture side by side on a common background (the final picture), the right one
+// scaled to the left one's height.
 cv::Mat side_by_side(const cv::Mat& left, const cv::Mat& right);
 
 }  // namespace vsl::view

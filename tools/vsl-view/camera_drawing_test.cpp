@@ -73,14 +73,15 @@ TEST(CameraDrawing, WithoutAnImageAGreyPictureOfTheCalibratedSize) {
   EXPECT_EQ(image.type(), CV_8UC3);
 }
 
-TEST(SideBySide, BothPicturesWithGaps) {
+TEST(SideBySide, BothPicturesWithGapsTheRightScaledToTheLeftsHeight) {
   const cv::Mat a(300, 200, CV_8UC3, cv::Scalar(0, 0, 255));
   const cv::Mat b(100, 150, CV_8UC3, cv::Scalar(255, 0, 0));
   const cv::Mat both = side_by_side(a, b);
   EXPECT_EQ(both.rows, 300 + 24);
-  EXPECT_EQ(both.cols, 200 + 150 + 36);
+  EXPECT_EQ(both.cols, 200 + 450 + 36);
   EXPECT_TRUE(same_colour(both.at<cv::Vec3b>(12, 12), cv::Scalar(0, 0, 255)));
   EXPECT_TRUE(same_colour(both.at<cv::Vec3b>(12, 224), cv::Scalar(255, 0, 0)));
+  EXPECT_TRUE(same_colour(both.at<cv::Vec3b>(311, 673), cv::Scalar(255, 0, 0)));
 }
 
 }  // namespace

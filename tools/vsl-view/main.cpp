@@ -196,13 +196,17 @@ int main(int argc, char** argv) {
   std::optional<vsl::pose_estimate_t> estimate;
   std::optional<Eigen::Isometry3d> truth;
   std::vector<vsl::view::FusedPercept> fused;
+  std::int64_t fused_request_id = -1;
   std::optional<Eigen::Vector3d> gaze_target;
   std::deque<Frame> frames;
   vsl::view::CameraView camera;  // newest frame, with its percepts once they arrived
   std::optional<std::int64_t> camera_percepts_frame;  // frame_id whose percepts `camera` shows
   cv::Mat debug_image;
   bool dirty = true;
-  bool final_due = false;
+  // A POSE_ESTIMATE asks for final.png a moment later: the localizer's closing status follows
+  // it, and the simulator's ground truth comes with its next frame.
+  using Clock = std::chrono::steady_clock;
+  std::optional<Clock::time_point> final_at;
 
   vsl::runtime::subscribe<vsl::localizer_status_t>(
       bus, "LOCALIZER_STATUS", [&](const vsl::localizer_status_t& m, std::int64_t) {
@@ -215,12 +219,13 @@ int main(int argc, char** argv) {
         status = m;
         dirty = true;
       });
-  vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, "POSE_ESTIMATE",
-                                                [&](const vsl::pose_estimate_t& m, std::int64_t) {
-                                                  estimate = m;
-                                                  dirty = true;
-                                                  final_due = true;
-                                                });
+  vsl::runtime::subscribe<vsl::pose_estimate_t>(
+      bus, "POSE_ESTIMATE", [&](const vsl::pose_estimate_t& m, std::int64_t) {
+        estimate = m;
+        dirty = true;
+        // Not postponed by further estimates, so that a stream of them still gets pictures.
+        if (!final_at) final_at = Clock::now() + std::chrono::milliseconds(300);
+      });
   vsl::runtime::subscribe<vsl::ground_truth_pose_t>(
       bus, "GROUND_TRUTH_POSE", [&](const vsl::ground_truth_pose_t& m, std::int64_t) {
         truth = vsl::view::isometry_of(m.world_T_ego);
@@ -229,6 +234,7 @@ int main(int argc, char** argv) {
   vsl::runtime::subscribe<vsl::fused_percept_list_t>(
       bus, "FUSED_PERCEPTS", [&](const vsl::fused_percept_list_t& m, std::int64_t) {
         fused = vsl::view::fused_percepts_of(m);
+        fused_request_id = m.request_id;
         dirty = true;
       });
   vsl::runtime::subscribe<vsl::gaze_command_t>(
@@ -276,7 +282,7 @@ int main(int argc, char** argv) {
         for (const Frame& frame : frames) {
           if (frame.frame_id != m.frame_id) continue;
           camera = {frame.left_bgr, *pose, vsl::view::camera_percepts_of(m),
-                    "frame " + std::to_string(m.frame_id) + ": " +
+                    "left camera, frame " + std::to_string(m.frame_id) + ": " +
                         std::to_string(m.percepts.size()) + " percepts"};
           camera_percepts_frame = m.frame_id;
           dirty = true;
@@ -300,6 +306,9 @@ int main(int argc, char** argv) {
     overlay.ego_gaze_target_m = gaze_target;
     if (estimate) {
       overlay.hypotheses = vsl::view::hypotheses_of(*estimate);
+      if (estimate->request_id == fused_request_id) {
+        vsl::view::mark_matches(*estimate, overlay.fused_percepts);
+      }
       if (estimate->status != vsl::pose_estimate_t::FAILED) {
         overlay.world_T_ego_estimate = vsl::view::isometry_of(estimate->world_T_ego);
         overlay.estimate_covariance = vsl::view::covariance_of(*estimate);
@@ -313,7 +322,6 @@ int main(int argc, char** argv) {
     return std::pair{map, camera_picture};
   };
 
-  using Clock = std::chrono::steady_clock;
   const auto period =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.period_s));
   Clock::time_point next_write = Clock::now();
@@ -330,6 +338,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     const bool end_of_log = result == vsl::runtime::HandleResult::kEndOfLog;
+    const bool final_due = final_at && (Clock::now() >= *final_at || end_of_log);
     const bool due = final_due || end_of_log || (dirty && Clock::now() >= next_write);
     if (due) {
       const auto [map, camera_picture] = render();
@@ -346,7 +355,7 @@ int main(int argc, char** argv) {
       dirty = false;
       next_write = Clock::now() + period;
       if (final_due && options.once) return 0;
-      final_due = false;
+      if (final_due) final_at.reset();
     }
     if (end_of_log) return 0;
     if (windows) {

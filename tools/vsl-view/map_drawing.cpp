@@ -92,14 +92,14 @@ double yaw_of(const Eigen::Isometry3d& world_T_ego) {
 
 // The robot as seen from above: its base circle and a heading arrow along ego x.
 void draw_robot(cv::Mat& image, const MapFrame& frame, const Eigen::Isometry3d& world_T_ego,
-                const cv::Scalar& colour, int thickness) {
+                const cv::Scalar& colour, int thickness, double radius_m = kRobotRadiusM) {
   const Eigen::Vector2d centre = world_T_ego.translation().head<2>();
   const double yaw = yaw_of(world_T_ego);
   const Eigen::Vector2d ahead =
-      centre + 1.5 * kRobotRadiusM * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+      centre + 1.5 * radius_m * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
   const cv::Point c = rounded(frame.to_pixel(centre));
-  cv::circle(image, c, static_cast<int>(std::lround(kRobotRadiusM * frame.px_per_m)), colour,
-             thickness, cv::LINE_AA);
+  cv::circle(image, c, static_cast<int>(std::lround(radius_m * frame.px_per_m)), colour, thickness,
+             cv::LINE_AA);
   cv::arrowedLine(image, c, rounded(frame.to_pixel(ahead)), colour, thickness, cv::LINE_AA, 0,
                   0.25);
   cv::circle(image, c, 3 + thickness, colour, cv::FILLED, cv::LINE_AA);
@@ -151,9 +151,9 @@ void draw_legend(cv::Mat& image, int baseline_v) {
   int u = 12;
   auto item = [&](const std::string& text, auto&& symbol) {
     symbol(cv::Point(u + 8, baseline_v - 5));
-    put_text(image, text, {u + 20, baseline_v}, 0.45, colour::kText);
+    put_text(image, text, {u + 18, baseline_v}, 0.42, colour::kText);
     int base = 0;
-    u += 30 + cv::getTextSize(text, kFont, 0.45, 1, &base).width;
+    u += 26 + cv::getTextSize(text, kFont, 0.42, 1, &base).width;
   };
   item("estimate (3 sigma)",
        [&](cv::Point p) { cv::circle(image, p, 6, colour::kEstimate, 2, cv::LINE_AA); });
@@ -165,11 +165,15 @@ void draw_legend(cv::Mat& image, int baseline_v) {
     cv::drawMarker(image, p, colour::kGaze, cv::MARKER_CROSS, 12, 2, cv::LINE_AA);
   });
   for (const char* type : {"door", "handle"}) {
-    item(std::string(type) + " percept", [&](cv::Point p) {
+    item(std::string(type), [&](cv::Point p) {
       cv::circle(image, p, 5, type_colour(type), cv::FILLED, cv::LINE_AA);
       cv::circle(image, p, 5, colour::kText, 1, cv::LINE_AA);
     });
   }
+  item("unmatched", [&](cv::Point p) {
+    cv::circle(image, p, 5, cv::Scalar(255, 255, 255), cv::FILLED, cv::LINE_AA);
+    cv::circle(image, p, 5, colour::kText, 2, cv::LINE_AA);
+  });
 }
 
 }  // namespace
@@ -319,20 +323,33 @@ cv::Mat draw_map(const cv::Mat& world_picture, const MapFrame& frame, const MapO
   }
 
   if (overlay.world_T_ego_truth) {
-    draw_robot(image, frame, *overlay.world_T_ego_truth, colour::kTruth, 2);
+    // A little larger than the estimate, so that both show when they agree.
+    draw_robot(image, frame, *overlay.world_T_ego_truth, colour::kTruth, 2, 1.2 * kRobotRadiusM);
   }
 
   if (const std::optional<Eigen::Isometry3d> pose = drawing_pose(overlay)) {
     const Eigen::Matrix3d world_R_ego = pose->linear();
+    // Percept uncertainty at 1 sigma, translucent: Eq. 7's noise grows along the viewing ray,
+    // and 3-sigma needles across the room would hide the map.
+    cv::Mat layer = image.clone();
     for (const FusedPercept& p : overlay.fused_percepts) {
       const Eigen::Vector3d world_p = *pose * p.ego_position_m;
       const Eigen::Matrix2d cov =
           (world_R_ego * p.ego_covariance_m2 * world_R_ego.transpose()).topLeftCorner<2, 2>();
-      const cv::Scalar c = type_colour(p.type);
-      draw_ellipse(image, frame, world_p.head<2>(), sigma_ellipse(cov, 3.0), shade(c, -0.3), 1);
+      draw_ellipse(layer, frame, world_p.head<2>(), sigma_ellipse(cov, 1.0), type_colour(p.type),
+                   cv::FILLED);
+    }
+    cv::addWeighted(layer, 0.4, image, 0.6, 0.0, image);
+    for (const FusedPercept& p : overlay.fused_percepts) {
+      const Eigen::Vector3d world_p = *pose * p.ego_position_m;
       const cv::Point px = rounded(frame.to_pixel(world_p.head<2>()));
-      cv::circle(image, px, 5, c, cv::FILLED, cv::LINE_AA);
-      cv::circle(image, px, 5, colour::kText, 1, cv::LINE_AA);
+      if (p.match == FusedPercept::Match::kUnmatched) {
+        cv::circle(image, px, 5, cv::Scalar(255, 255, 255), cv::FILLED, cv::LINE_AA);
+        cv::circle(image, px, 5, type_colour(p.type), 2, cv::LINE_AA);
+      } else {
+        cv::circle(image, px, 5, type_colour(p.type), cv::FILLED, cv::LINE_AA);
+        cv::circle(image, px, 5, colour::kText, 1, cv::LINE_AA);
+      }
     }
     if (overlay.ego_gaze_target_m) {
       // From the head (about 1.5 m above the ego origin) to the target.

@@ -51,6 +51,9 @@ struct FusedPercept {
   std::string type;
   Eigen::Vector3d ego_position_m = Eigen::Vector3d::Zero();
   Eigen::Matrix3d ego_covariance_m2 = Eigen::Matrix3d::Zero();
+  // Whether the pose estimate associated it with a world object; unknown before an estimate.
+  // Unmatched percepts (false positives, objects missing from the model) are drawn hollow.
+  enum class Match { kUnknown, kMatched, kUnmatched } match = Match::kUnknown;
 };
 
 struct Hypothesis {

@@ -190,8 +190,10 @@ TEST(VslViewProcess, WritesDecodablePngsOfTheExpectedSize) {
   EXPECT_EQ(map.type(), CV_8UC3);
   EXPECT_EQ(camera.cols, 640);
   EXPECT_EQ(camera.rows, 480);
-  EXPECT_EQ(final_picture.cols, frame.width_px + 640 + 36);
-  EXPECT_EQ(final_picture.rows, std::max(frame.height_px, 480) + 24);
+  // The camera picture scaled to the map's height beside it.
+  EXPECT_EQ(final_picture.rows, frame.height_px + 24);
+  EXPECT_EQ(final_picture.cols,
+            frame.width_px + static_cast<int>(std::lround(640.0 * frame.height_px / 480)) + 36);
   EXPECT_FALSE(std::filesystem::exists(dir / "map.png.partial.png"));
   // The camera picture is the published grey frame with the door percept marked on it.
   cv::Scalar mean = cv::mean(camera);

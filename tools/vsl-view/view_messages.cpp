@@ -68,6 +68,15 @@ std::vector<FusedPercept> fused_percepts_of(const vsl::fused_percept_list_t& lis
   return out;
 }
 
+void mark_matches(const vsl::pose_estimate_t& estimate, std::vector<FusedPercept>& percepts) {
+  for (FusedPercept& p : percepts) p.match = FusedPercept::Match::kUnmatched;
+  for (const vsl::association_t& a : estimate.associations) {
+    if (a.percept_index >= 0 && static_cast<std::size_t>(a.percept_index) < percepts.size()) {
+      percepts[static_cast<std::size_t>(a.percept_index)].match = FusedPercept::Match::kMatched;
+    }
+  }
+}
+
 std::vector<CameraPercept> camera_percepts_of(const vsl::percept_list_t& list) {
   std::vector<CameraPercept> out;
   for (const vsl::percept_t& p : list.percepts) {
@@ -102,41 +111,46 @@ const char* pose_status_name(int status) {
 std::vector<std::string> map_caption(const std::optional<vsl::localizer_status_t>& status,
                                      const std::optional<vsl::pose_estimate_t>& estimate,
                                      const MapOverlay& overlay) {
-  std::vector<std::string> lines;
-  if (estimate) {
-    lines.push_back(
-        format("%s: %s", pose_status_name(estimate->status), estimate->message.c_str()));
-  } else if (status) {
-    lines.push_back(format("localizer %s %.0f%%: %s", localizer_state_name(status->state),
-                           100.0 * status->progress, status->message.c_str()));
-  } else {
-    lines.push_back("waiting for the localizer (LOCALIZER_STATUS)");
-  }
-  std::string detail;
+  // Line 1: the answer (the estimate beside the truth) or, before one, the localizer's progress.
+  // Line 2: the localizer's state and the counts.
+  std::string progress = "waiting for the localizer (LOCALIZER_STATUS)";
   if (status) {
-    detail = format("%d hypotheses, %d fused percepts", status->num_hypotheses,
-                    status->num_fused_percepts);
-  } else {
-    detail = format("%zu fused percepts", overlay.fused_percepts.size());
+    progress = format("localizer %s %.0f%%: %s", localizer_state_name(status->state),
+                      100.0 * status->progress, status->message.c_str());
   }
+  const int hypotheses = estimate ? estimate->num_hypotheses : status ? status->num_hypotheses : 0;
+  const std::string counts = format("%d hypothes%s, %zu fused percepts", hypotheses,
+                                    hypotheses == 1 ? "is" : "es", overlay.fused_percepts.size());
+  std::string pose_text;
   if (overlay.world_T_ego_estimate) {
     const Eigen::Isometry3d& e = *overlay.world_T_ego_estimate;
-    detail += format("   pose (%.3f, %.3f) m %.1f deg", e.translation().x(), e.translation().y(),
-                     yaw_deg(e));
+    pose_text =
+        format("(%.3f, %.3f) m %.1f deg", e.translation().x(), e.translation().y(), yaw_deg(e));
     if (overlay.world_T_ego_truth) {
       const Eigen::Isometry3d& t = *overlay.world_T_ego_truth;
       const double position_error_m = (e.translation() - t.translation()).norm();
       const double rotation_error_deg =
           Eigen::AngleAxisd(t.linear().transpose() * e.linear()).angle() * 180.0 / std::numbers::pi;
-      detail += format("   error %.1f cm %.2f deg", 100.0 * position_error_m, rotation_error_deg);
+      pose_text +=
+          format("   error %.2f cm %.2f deg", 100.0 * position_error_m, rotation_error_deg);
     }
   } else if (overlay.world_T_ego_truth) {
     const Eigen::Isometry3d& t = *overlay.world_T_ego_truth;
-    detail += format("   truth (%.3f, %.3f) m %.1f deg", t.translation().x(), t.translation().y(),
-                     yaw_deg(t));
+    pose_text = format("truth (%.3f, %.3f) m %.1f deg", t.translation().x(), t.translation().y(),
+                       yaw_deg(t));
   }
-  lines.push_back(detail);
-  return lines;
+  if (estimate) {
+    int matched = 0;
+    for (const FusedPercept& p : overlay.fused_percepts) {
+      matched += p.match == FusedPercept::Match::kMatched;
+    }
+    const std::string answer = pose_status_name(estimate->status);
+    const std::string state =
+        status ? format("localizer %s | ", localizer_state_name(status->state)) : "";
+    return {answer + "  " + (pose_text.empty() ? estimate->message : pose_text),
+            state + counts + format(" (%d matched)", matched)};
+  }
+  return {progress, counts + (pose_text.empty() ? "" : " | " + pose_text)};
 }
 
 }  // namespace vsl::view

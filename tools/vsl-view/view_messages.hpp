@@ -29,6 +29,9 @@ std::vector<Hypothesis> hypotheses_of(const vsl::pose_estimate_t& estimate);
 std::optional<Eigen::Matrix<double, 6, 6>> covariance_of(const vsl::pose_estimate_t& estimate);
 
 std::vector<FusedPercept> fused_percepts_of(const vsl::fused_percept_list_t& list);
+// Marks `percepts` (the fused list of the estimate's request) matched or unmatched by the
+// estimate's associations; out-of-range indexes are ignored.
+void mark_matches(const vsl::pose_estimate_t& estimate, std::vector<FusedPercept>& percepts);
 std::vector<CameraPercept> camera_percepts_of(const vsl::percept_list_t& list);
 
 const char* localizer_state_name(int state);
