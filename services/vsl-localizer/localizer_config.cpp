@@ -60,8 +60,8 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
   const Node section = root.at("localizer");
   section.expect_map();
   section.expect_keys({"world", "options", "localize_at_startup", "startup_delay_s", "scan",
-                       "fusing_timeout_s", "fusing_attempts", "max_active_looks", "status_period_s",
-                       "passive"});
+                       "fusing_timeout_s", "fusing_attempts", "max_active_looks",
+                       "max_look_azimuth_deg", "status_period_s", "passive"});
   LocalizerDaemonConfig out;
   out.world_path = path_relative_to_file(section.at("world"));
   out.options_path = path_relative_to_file(section.at("options"));
@@ -107,6 +107,9 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
     const std::int64_t value = node->as_int();
     if (value < 0 || value > 20) node->fail("must be an integer in [0, 20]");
     core.max_active_looks = static_cast<int>(value);
+  }
+  if (const auto node = section.find("max_look_azimuth_deg")) {
+    core.max_look_azimuth_rad = node->as_double_in(10.0, 180.0) * 3.141592653589793 / 180.0;
   }
   if (const auto node = section.find("status_period_s")) {
     core.status_period_s = node->as_double_in(0.01, 60.0);

@@ -61,7 +61,7 @@ localization::LocalizationResult LocalizerEngine::localize(
 
 std::optional<Eigen::Vector3d> LocalizerEngine::discriminator_target(
     const localization::LocalizationResult& result) const {
-  const auto target = localizer_.choose_discriminator(result);
+  const auto target = localizer_.choose_discriminator(result, max_look_azimuth_rad_);
   if (!target) return std::nullopt;
   return target->ego_target_m;
 }
@@ -88,6 +88,7 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
   num_fused_percepts_ = 0;
   num_hypotheses_ = 0;
   pending_result_.reset();
+  looking_to_resolve_.reset();
   gaze_id_ = -1;
   if (options_.passive) {
     step_ = 1;
@@ -206,6 +207,7 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
     finish(State::kDone, result, "ambiguous, nothing discriminates: " + result.message, now_us);
     return;
   }
+  looking_to_resolve_ = result;
   ++active_looks_;
   start_look(*target, now_us);
 }
@@ -241,6 +243,16 @@ void LocalizerCore::tick(std::int64_t now_us) {
       const std::string what = state_ == State::kScanning
                                    ? "gaze target " + std::to_string(scan_index_)
                                    : "active look " + std::to_string(active_looks_);
+      if (state_ == State::kActiveValidation && looking_to_resolve_) {
+        // The look could not be completed (a target the head cannot fixate, frames that do not
+        // come): what was known before it still stands, and it is ambiguous, not a failure.
+        const localization::LocalizationResult before = *looking_to_resolve_;
+        finish(State::kDone, before,
+               "ambiguous: " + what + " at " + point_text(look_target_) +
+                   " did not complete in time: " + before.message,
+               now_us);
+        return;
+      }
       if (at_rest_frames_.empty() && recognized_ == 0) {
         fail("timeout: the head did not settle on " + what + " " + point_text(look_target_) +
                  " within " + seconds_text(options_.settle_timeout_s),
@@ -294,6 +306,7 @@ void LocalizerCore::finish(State state, const localization::LocalizationResult& 
   outputs_.pose(report);
   gaze_id_ = -1;
   pending_result_.reset();
+  looking_to_resolve_.reset();
   detail_ = message;
   set_state(state, now_us);
 }

@@ -57,9 +57,11 @@ struct CoreOptions {
   double fusing_timeout_s = 5.0;        // FUSING -> FUSED_PERCEPTS, per attempt
   int fusing_attempts = 3;              // FUSING entries before FAILED
   int max_active_looks = 3;             // active validation looks per request
-  double status_period_s = 0.5;         // periodic LOCALIZER_STATUS
-  bool passive = false;                 // replay: no gaze commands, follow the log's status
-  std::int64_t first_gaze_id = 1;       // gaze request ids count up from here (unique per run)
+  // Active looks only at ego targets within this azimuth of ego +x (rad): the head's reach.
+  double max_look_azimuth_rad = 2.268928;  // 130 deg: ARMAR-III's neck yaw 100 + eye pan 34
+  double status_period_s = 0.5;            // periodic LOCALIZER_STATUS
+  bool passive = false;                    // replay: no gaze commands, follow the log's status
+  std::int64_t first_gaze_id = 1;          // gaze request ids count up from here (unique per run)
 };
 
 struct GazeCommand {
@@ -103,7 +105,8 @@ class LocalizationEngine {
 // The real engine over vsl::localization::Localizer.
 class LocalizerEngine : public LocalizationEngine {
  public:
-  explicit LocalizerEngine(const localization::Localizer& localizer) : localizer_(localizer) {}
+  LocalizerEngine(const localization::Localizer& localizer, double max_look_azimuth_rad)
+      : localizer_(localizer), max_look_azimuth_rad_(max_look_azimuth_rad) {}
   localization::LocalizationResult localize(
       const std::vector<localization::FusedPercept>& percepts) const override;
   std::optional<Eigen::Vector3d> discriminator_target(
@@ -111,6 +114,7 @@ class LocalizerEngine : public LocalizationEngine {
 
  private:
   const localization::Localizer& localizer_;
+  double max_look_azimuth_rad_;
 };
 
 // What the core needs of a stereo frame (the rest, the images, it never decodes).
@@ -180,6 +184,9 @@ class LocalizerCore {
   std::int64_t fusing_deadline_us_ = 0;
   int num_fused_percepts_ = 0;
   int num_hypotheses_ = 0;
+  // Live: the ambiguous result an active look is trying to resolve; reported (AMBIGUOUS, not
+  // FAILED) when the look itself times out.
+  std::optional<localization::LocalizationResult> looking_to_resolve_;
   // Passive: the last ambiguous result, reported when the log's run ends.
   std::optional<localization::LocalizationResult> pending_result_;
   State followed_state_ = State::kIdle;

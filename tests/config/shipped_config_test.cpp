@@ -111,6 +111,7 @@ const std::vector<Loader>& loaders() {
        [](const std::string& p) { load_stereo_driver_config(p, "libcamera_stereo"); }},
       {"config/fusion.yaml", load_fusion_config},
       {"config/vsl-localizer.yaml", load_localizer_daemon_config},
+      {"config/vsl-localizer-ambiguous.yaml", load_localizer_daemon_config},
   };
   return kLoaders;
 }

@@ -196,6 +196,19 @@ INSTANTIATE_TEST_SUITE_P(
                       PoseCase{"south_east_facing_north_west", "3.645,0.602,0,132.4", 17844}),
     [](const ::testing::TestParamInfo<PoseCase>& info) { return std::string(info.param.name); });
 
+// An ambiguous start: the one-gaze scan of config/vsl-localizer-ambiguous.yaml leaves several
+// hypotheses from this pose; only active validation (paper §2.4.2) resolves it.
+TEST(FullPipelineAmbiguousStart, ResolvedByActiveValidation) {
+  Pipeline::Options options = Pipeline::live(17845, "2.504,2.967,0,-43.8");
+  options.localizer_config = "config/vsl-localizer-ambiguous.yaml";
+  Pipeline pipeline(options);
+  const auto request = pipeline.request();
+  const std::optional<RequestResult> result = Pipeline::finish(*request);
+  EXPECT_NE(request->err().find("ACTIVE_VALIDATION"), std::string::npos) << "no active look\n"
+                                                                         << describe(*request);
+  expect_localized_near_truth(result, "ambiguous start");
+}
+
 // --- Fusion killed during a scan and restarted. -------------------------------------------------
 
 TEST(PipelineRecovery, FusionKilledDuringTheScanAndRestartedStillLocalizes) {
@@ -217,33 +230,38 @@ TEST(PipelineRecovery, FusionKilledDuringTheScanAndRestartedStillLocalizes) {
 
 // --- Record, replay into a passive localizer, decode every channel with lcm-spy. ----------------
 
+// A live localization at the default pose recorded with lcm-logger on `port`. Each test records
+// its own session on its own port (ctest runs them in parallel, each in a process of its own).
 class RecordedSession : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
+  void record(int port) {
     dir_ = std::filesystem::temp_directory_path() /
            ("vsl_pipeline_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir_);
     log_ = (dir_ / "session.lcmlog").string();
-    ChildProcess logger({"/usr/bin/lcm-logger", "--lcm-url=" + udpm_url(17852), "--force", log_});
+    ChildProcess logger({"/usr/bin/lcm-logger", "--lcm-url=" + udpm_url(port), "--force", log_});
     {
-      Pipeline pipeline(Pipeline::live(17852));
+      Pipeline pipeline(Pipeline::live(port));
       const auto request = pipeline.request();
       live_ = Pipeline::finish(*request);
     }
     std::this_thread::sleep_for(500ms);  // the last messages reach the log
     ::kill(logger.pid(), SIGINT);
     logger.wait(10s);
+    ASSERT_TRUE(std::filesystem::exists(log_));
   }
-  static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
+  void TearDown() override {
+    if (!dir_.empty()) std::filesystem::remove_all(dir_);
+  }
 
-  static inline std::filesystem::path dir_;
-  static inline std::string log_;
-  static inline std::optional<RequestResult> live_;
+  std::filesystem::path dir_;
+  std::string log_;
+  std::optional<RequestResult> live_;
 };
 
 TEST_F(RecordedSession, ReplayIntoAPassiveLocalizerReproducesThePose) {
+  ASSERT_NO_FATAL_FAILURE(record(17852));
   expect_localized_near_truth(live_, "the recorded live run");
-  ASSERT_TRUE(std::filesystem::exists(log_));
   // Only the inputs are replayed: what recognition, fusion and the localizer made live is in the
   // log too and must not reach the replayed ones. Half speed leaves recognition time to spare
   // on a loaded machine (sanitizer builds), as the live run had.
@@ -269,7 +287,7 @@ TEST_F(RecordedSession, ReplayIntoAPassiveLocalizerReproducesThePose) {
 }
 
 TEST_F(RecordedSession, LcmSpyDecodesEveryChannelUnderXvfb) {
-  ASSERT_TRUE(std::filesystem::exists(log_));
+  ASSERT_NO_FATAL_FAILURE(record(17854));
   const vsl::testing::CommandResult result = vsl::testing::run_command(
       {"/bin/bash", "tests/pipeline/spy_decodes_log.sh", VSL_TYPES_JAR, log_}, 180.0);
   const std::string output = result.out + result.err;

@@ -198,8 +198,11 @@ int main(int argc, char** argv) {
         }
         last_state = m.state;
         last_progress = m.progress;
-        std::fprintf(stderr, "[%6.1f s] %-17s %3.0f%%  %s\n", seconds_since_start(),
-                     state_name(m.state), 100.0 * m.progress, m.message.c_str());
+        const std::string hypotheses =
+            m.num_hypotheses > 1 ? " [" + std::to_string(m.num_hypotheses) + " hypotheses]" : "";
+        std::fprintf(stderr, "[%6.1f s] %-17s %3.0f%%  %s%s\n", seconds_since_start(),
+                     state_name(m.state), 100.0 * m.progress, m.message.c_str(),
+                     hypotheses.c_str());
       });
   vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, options.pose_channel,
                                                 [&](const vsl::pose_estimate_t& m, std::int64_t) {

@@ -186,7 +186,7 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
 std::optional<ActiveValidationTarget> choose_discriminator(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
-    double range_m, double cap_m) {
+    double range_m, double cap_m, double min_range_m, double max_azimuth_rad) {
   if (hypotheses.size() < 2) return std::nullopt;
   const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
   std::optional<ActiveValidationTarget> best;
@@ -197,6 +197,9 @@ std::optional<ActiveValidationTarget> choose_discriminator(
       const auto type = static_cast<world::TypeId>(t);
       grid.for_each_within(type, hypotheses[h] * camera, range_m, [&](NodeIndex node, double) {
         const Eigen::Vector3d ego_target = ego_T_world * graph.world_position_m(node);
+        const double range = (ego_target - camera).norm();
+        if (range < min_range_m) return;
+        if (std::abs(std::atan2(ego_target.y(), ego_target.x())) > max_azimuth_rad) return;
         // What another hypothesis expects at that ego point: the nearest object of the type.
         double discrimination = cap_m;
         for (std::size_t other = 0; other < hypotheses.size() && discrimination > 0.0; ++other) {
@@ -208,7 +211,6 @@ std::optional<ActiveValidationTarget> choose_discriminator(
         const double gate_m = options.validation.gate_sigmas *
                               eq7_sigma_m(ego_target, options.noise) * std::sqrt(3.0);
         if (discrimination <= gate_m) return;
-        const double range = (ego_target - camera).norm();
         if (!best || discrimination > best->discrimination_m ||
             (discrimination == best->discrimination_m && range < best_range)) {
           best = ActiveValidationTarget{world.objects[graph.object_index(node)].id, h, ego_target,

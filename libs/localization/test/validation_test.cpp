@@ -109,6 +109,27 @@ TEST(ChooseDiscriminator, PicksTheObjectOnlyOneHypothesisPredicts) {
   EXPECT_GE(target->discrimination_m, 0.9);
 }
 
+// The marker is the only discriminator: out of reach (azimuth) or too near, nothing is chosen.
+TEST(ChooseDiscriminator, OnlyTargetsTheHeadCanFixate) {
+  const World w(testing::identical_rooms(2, 10.0, true));
+  const Eigen::Isometry3d room0 = testing::upright_pose(2.5, 1.5, 1.5708);
+  const Eigen::Isometry3d room1 = testing::upright_pose(12.5, 1.5, 1.5708);
+  const auto target = choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options);
+  ASSERT_TRUE(target.has_value());
+  const Eigen::Vector3d ego = target->ego_target_m;
+  const double azimuth = std::abs(std::atan2(ego.y(), ego.x()));
+  const double range = (ego - w.options.noise.ego_camera_position_m).norm();
+  EXPECT_TRUE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
+                                   1.0, azimuth + 0.01)
+                  .has_value());
+  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
+                                    1.0, azimuth - 0.01)
+                   .has_value());
+  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
+                                    range + 0.01)
+                   .has_value());
+}
+
 TEST(ChooseDiscriminator, NothingDiscriminatesIdenticalRoomsOrASingleHypothesis) {
   const World w(testing::identical_rooms(2, 10.0, false));
   const Eigen::Isometry3d room0 = testing::upright_pose(2.5, 1.5, 1.5708);

@@ -198,6 +198,21 @@ TEST(LocalizerCore, AmbiguousAfterTheLookLimit) {
   EXPECT_EQ(h.core.state(), State::kDone);
 }
 
+TEST(LocalizerCore, ActiveLookThatNeverSettlesEndsAmbiguousNotFailed) {
+  Harness h;
+  h.engine.results = {result(Status::kAmbiguous)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.core.state(), State::kActiveValidation);
+  h.core.tick(h.now += 6 * kSecond);  // settle_timeout_s is 5 s
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kAmbiguous);
+  EXPECT_NE(h.out.poses[0].message.find("did not complete"), std::string::npos)
+      << h.out.poses[0].message;
+  EXPECT_EQ(h.core.state(), State::kDone);
+}
+
 TEST(LocalizerCore, FailedResultCarriesNoPose) {
   Harness h;
   h.engine.results = {result(Status::kFailed)};

@@ -143,8 +143,9 @@ class Localizer {
 
   // For an ambiguous result: the model object that best discriminates its hypotheses and the
   // ego-frame point to look at; nullopt when fewer than two hypotheses or nothing discriminates.
+  // Only targets within `max_azimuth_rad` of ego +x (the head's reach) are chosen.
   std::optional<ActiveValidationTarget> choose_discriminator(
-      const LocalizationResult& result) const;
+      const LocalizationResult& result, double max_azimuth_rad = 3.141592653589793) const;
 
  private:
   struct State;

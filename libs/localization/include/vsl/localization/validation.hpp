@@ -100,10 +100,15 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
 // it is d(h') away. The discrimination of (o, h) is min over h' != h of d(h') (capped at
 // `cap_m`): large means that whatever is (or is not) seen at e confirms h or refutes it against
 // every other hypothesis. Pairs whose discrimination is below the gate of a percept at e (it
-// would be explained under h' too) do not discriminate. Returns the best, or nullopt.
+// would be explained under h' too) do not discriminate. Only objects between `min_range_m` and
+// `range_m` from the camera are candidates: nearer ones (under some hypothesis an object may lie
+// at the robot's own head) cannot be fixated by the stereo head nor triangulated; nor can objects
+// whose ego azimuth (from ego +x about z) exceeds `max_azimuth_rad`, beyond the head's reach.
+// Returns the best, or nullopt.
 std::optional<ActiveValidationTarget> choose_discriminator(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
-    double range_m = 4.0, double cap_m = 1.0);
+    double range_m = 4.0, double cap_m = 1.0, double min_range_m = 1.0,
+    double max_azimuth_rad = 3.141592653589793);
 
 }  // namespace vsl::localization
