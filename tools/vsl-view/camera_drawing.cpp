@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "view_style.hpp"
 
@@ -21,20 +22,53 @@ cv::Point rounded(const cv::Point2d& p) {
           static_cast<int>(std::lround(std::clamp(p.y, -kFar, kFar)))};
 }
 
+// The box a label drawn with its baseline starting at `at` covers.
+cv::Rect label_box(const std::string& text, cv::Point at, double scale) {
+  int base = 0;
+  const cv::Size size = cv::getTextSize(text, kFont, scale, 1, &base);
+  return {at.x - 3, at.y - size.height - 4, size.width + 6, size.height + base + 6};
+}
+
 // Text on a translucent dark box, readable over any image.
 void label(cv::Mat& image, const std::string& text, cv::Point at, double scale,
            const cv::Scalar& colour) {
-  int base = 0;
-  const cv::Size size = cv::getTextSize(text, kFont, scale, 1, &base);
-  const cv::Rect box =
-      cv::Rect(at.x - 3, at.y - size.height - 4, size.width + 6, size.height + base + 6) &
-      cv::Rect(0, 0, image.cols, image.rows);
+  const cv::Rect box = label_box(text, at, scale) & cv::Rect(0, 0, image.cols, image.rows);
   if (box.area() > 0) {
     cv::Mat roi = image(box);
     cv::Mat dark(roi.size(), roi.type(), cv::Scalar(0, 0, 0));
     cv::addWeighted(roi, 0.45, dark, 0.55, 0.0, roi);
   }
   cv::putText(image, text, at, kFont, scale, colour, 1, cv::LINE_AA);
+}
+
+// Where a marker's label goes: up-right of it, else below-right, up-left or below-left, the first
+// that overlaps no label placed before (neighbouring handles would otherwise print over each
+// other).
+cv::Point label_position(const std::string& text, cv::Point marker, double scale,
+                         const cv::Rect& image_rect, std::vector<cv::Rect>& taken) {
+  const int width = label_box(text, {0, 0}, scale).width;
+  const cv::Point candidates[] = {marker + cv::Point(12, -8), marker + cv::Point(12, 24),
+                                  marker + cv::Point(-12 - width, -8),
+                                  marker + cv::Point(-12 - width, 24)};
+  for (const cv::Point& at : candidates) {
+    const cv::Rect box = label_box(text, at, scale);
+    bool free = (box & image_rect) == box;  // whole, not cut by the image border
+    for (const cv::Rect& other : taken) free = free && (box & other).area() == 0;
+    if (free) {
+      taken.push_back(box);
+      return at;
+    }
+  }
+  // Crowded: overlapping is better than being cut by the border.
+  for (const cv::Point& at : candidates) {
+    const cv::Rect box = label_box(text, at, scale);
+    if ((box & image_rect) == box) {
+      taken.push_back(box);
+      return at;
+    }
+  }
+  taken.push_back(label_box(text, candidates[0], scale));
+  return candidates[0];
 }
 
 }  // namespace
@@ -62,6 +96,7 @@ cv::Mat draw_camera(const CameraView& view, const head::CameraIntrinsics& intrin
   cv::Mat image = view.left_bgr.clone();
   const Eigen::Isometry3d left_camera_T_ego = view.ego_T_left_camera.inverse();
   const cv::Rect inside(0, 0, image.cols, image.rows);
+  std::vector<cv::Rect> taken;  // label boxes placed so far
   for (const CameraPercept& p : view.percepts) {
     const Eigen::Vector3d camera_point = left_camera_T_ego * p.ego_position_m;
     const std::optional<cv::Point2d> uv = project_camera_point(intrinsics, camera_point);
@@ -74,7 +109,8 @@ cv::Mat draw_camera(const CameraView& view, const head::CameraIntrinsics& intrin
     cv::circle(image, at, 2, c, cv::FILLED, cv::LINE_AA);
     char text[64];
     std::snprintf(text, sizeof text, "%s %.1fm", type_label(p.type).c_str(), camera_point.norm());
-    label(image, text, at + cv::Point(12, -8), 0.42, cv::Scalar(255, 255, 255));
+    label(image, text, label_position(text, at, 0.42, inside, taken), 0.42,
+          cv::Scalar(255, 255, 255));
   }
   return draw_captioned(image, view.caption);
 }
