@@ -60,8 +60,10 @@ localization::LocalizationResult LocalizerEngine::localize(
 }
 
 std::optional<Eigen::Vector3d> LocalizerEngine::discriminator_target(
-    const localization::LocalizationResult& result) const {
-  const auto target = localizer_.choose_discriminator(result, max_look_azimuth_rad_);
+    const localization::LocalizationResult& result,
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m) const {
+  const auto target =
+      localizer_.choose_discriminator(result, max_look_azimuth_rad_, looked_at_ego_m);
   if (!target) return std::nullopt;
   return target->ego_target_m;
 }
@@ -89,6 +91,7 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
   num_hypotheses_ = 0;
   pending_result_.reset();
   looking_to_resolve_.reset();
+  active_look_targets_m_.clear();
   gaze_id_ = -1;
   if (options_.passive) {
     step_ = 1;
@@ -202,12 +205,14 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
     set_state(State::kActiveValidation, now_us);
     return;
   }
-  const std::optional<Eigen::Vector3d> target = engine_.discriminator_target(result);
+  const std::optional<Eigen::Vector3d> target =
+      engine_.discriminator_target(result, active_look_targets_m_);
   if (!target) {
     finish(State::kDone, result, "ambiguous, nothing discriminates: " + result.message, now_us);
     return;
   }
   looking_to_resolve_ = result;
+  active_look_targets_m_.push_back(*target);
   ++active_looks_;
   start_look(*target, now_us);
 }

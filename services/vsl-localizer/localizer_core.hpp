@@ -98,8 +98,10 @@ class LocalizationEngine {
   virtual ~LocalizationEngine() = default;
   virtual localization::LocalizationResult localize(
       const std::vector<localization::FusedPercept>& percepts) const = 0;
+  // The ego point to look at next; `looked_at_ego_m`: the looks of this request so far.
   virtual std::optional<Eigen::Vector3d> discriminator_target(
-      const localization::LocalizationResult& result) const = 0;
+      const localization::LocalizationResult& result,
+      const std::vector<Eigen::Vector3d>& looked_at_ego_m) const = 0;
 };
 
 // The real engine over vsl::localization::Localizer.
@@ -110,7 +112,8 @@ class LocalizerEngine : public LocalizationEngine {
   localization::LocalizationResult localize(
       const std::vector<localization::FusedPercept>& percepts) const override;
   std::optional<Eigen::Vector3d> discriminator_target(
-      const localization::LocalizationResult& result) const override;
+      const localization::LocalizationResult& result,
+      const std::vector<Eigen::Vector3d>& looked_at_ego_m) const override;
 
  private:
   const localization::Localizer& localizer_;
@@ -187,6 +190,7 @@ class LocalizerCore {
   // Live: the ambiguous result an active look is trying to resolve; reported (AMBIGUOUS, not
   // FAILED) when the look itself times out.
   std::optional<localization::LocalizationResult> looking_to_resolve_;
+  std::vector<Eigen::Vector3d> active_look_targets_m_;  // this request's active looks (ego, m)
   // Passive: the last ambiguous result, reported when the log's run ends.
   std::optional<localization::LocalizationResult> pending_result_;
   State followed_state_ = State::kIdle;

@@ -17,6 +17,7 @@
 #include "vsl/ground_truth_pose_t.hpp"
 #include "vsl/localize_request_t.hpp"
 #include "vsl/localizer_status_t.hpp"
+#include "vsl/percept_list_t.hpp"
 #include "vsl/pose_estimate_t.hpp"
 #include "vsl/runtime/clock.hpp"
 #include "vsl/runtime/config.hpp"
@@ -177,7 +178,11 @@ int main(int argc, char** argv) {
   std::set<std::string> alive;
   std::optional<vsl::request::Pose> truth;
   std::optional<vsl::pose_estimate_t> estimate;
-  bool request_seen = false;  // a status of our request arrived: the localizer has it
+  bool request_seen = false;
+  // Capture time of the newest frame recognized so far, and of the last one before FUSING (us).
+  std::int64_t newest_percepts_frame_utime = 0;
+  std::int64_t last_scan_frame_utime = 0;
+  int last_seen_state = -1;  // a status of our request arrived: the localizer has it
   int last_state = -1;
   double last_progress = -1.0;
 
@@ -192,6 +197,11 @@ int main(int argc, char** argv) {
         if (options.follow && request_id < 0 && m.request_id > 0) request_id = m.request_id;
         if (m.request_id != request_id) return;
         request_seen = true;
+        // The last scan frame (or active look frame) is the newest recognized before FUSING.
+        if (m.state == vsl::localizer_status_t::FUSING && m.state != last_seen_state) {
+          last_scan_frame_utime = newest_percepts_frame_utime;
+        }
+        last_seen_state = m.state;
         if (options.quiet ||
             (m.state == last_state && std::abs(m.progress - last_progress) < 1e-9)) {
           return;
@@ -203,6 +213,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "[%6.1f s] %-17s %3.0f%%  %s%s\n", seconds_since_start(),
                      state_name(m.state), 100.0 * m.progress, m.message.c_str(),
                      hypotheses.c_str());
+      });
+  vsl::runtime::subscribe<vsl::percept_list_t>(
+      bus, "PERCEPTS", [&](const vsl::percept_list_t& m, std::int64_t) {
+        newest_percepts_frame_utime = std::max(newest_percepts_frame_utime, m.frame_utime);
       });
   vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, options.pose_channel,
                                                 [&](const vsl::pose_estimate_t& m, std::int64_t) {
@@ -290,6 +304,12 @@ int main(int argc, char** argv) {
                   vsl::request::yaw_rad(other) * 180.0 / 3.141592653589793,
                   estimate->hypotheses[h].score);
     }
+  }
+  if (last_scan_frame_utime > 0 && estimate->utime > last_scan_frame_utime) {
+    // Issue 6's compute figure: capture of the last frame of the scan (or of the last active
+    // look) to the published pose: recognition of that frame, fusion and localization.
+    std::printf("  from the last scan frame's capture to the pose: %.1f ms\n",
+                1e-3 * static_cast<double>(estimate->utime - last_scan_frame_utime));
   }
   std::fputs(vsl::request::result_line(status, pose, truth).c_str(), stdout);
   return estimate->status == vsl::pose_estimate_t::LOCALIZED ? 0 : 1;

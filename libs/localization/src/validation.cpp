@@ -186,7 +186,8 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
 std::optional<ActiveValidationTarget> choose_discriminator(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
-    double range_m, double cap_m, double min_range_m, double max_azimuth_rad) {
+    double range_m, double cap_m, double min_range_m, double max_azimuth_rad,
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m) {
   if (hypotheses.size() < 2) return std::nullopt;
   const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
   std::optional<ActiveValidationTarget> best;
@@ -200,6 +201,9 @@ std::optional<ActiveValidationTarget> choose_discriminator(
         const double range = (ego_target - camera).norm();
         if (range < min_range_m) return;
         if (std::abs(std::atan2(ego_target.y(), ego_target.x())) > max_azimuth_rad) return;
+        for (const Eigen::Vector3d& looked : looked_at_ego_m) {
+          if ((looked - ego_target).norm() < 0.3) return;
+        }
         // What another hypothesis expects at that ego point: the nearest object of the type.
         double discrimination = cap_m;
         for (std::size_t other = 0; other < hypotheses.size() && discrimination > 0.0; ++other) {

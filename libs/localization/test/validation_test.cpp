@@ -127,6 +127,9 @@ TEST(ChooseDiscriminator, OnlyTargetsTheHeadCanFixate) {
                    .has_value());
   EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
                                     range + 0.01)
+                   .has_value());  // Looked at already: not again.
+  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
+                                    1.0, 3.2, {ego + Eigen::Vector3d(0.1, 0.0, 0.0)})
                    .has_value());
 }
 

@@ -39,7 +39,8 @@ struct FakeEngine : LocalizationEngine {
     if (!results.empty()) results.pop_front();
     return r;
   }
-  std::optional<Eigen::Vector3d> discriminator_target(const LocalizationResult&) const override {
+  std::optional<Eigen::Vector3d> discriminator_target(
+      const LocalizationResult&, const std::vector<Eigen::Vector3d>&) const override {
     return discriminator;
   }
   mutable std::deque<LocalizationResult> results;

@@ -143,9 +143,11 @@ class Localizer {
 
   // For an ambiguous result: the model object that best discriminates its hypotheses and the
   // ego-frame point to look at; nullopt when fewer than two hypotheses or nothing discriminates.
-  // Only targets within `max_azimuth_rad` of ego +x (the head's reach) are chosen.
+  // Only targets within `max_azimuth_rad` of ego +x (the head's reach), and not near an ego point
+  // already looked at, are chosen.
   std::optional<ActiveValidationTarget> choose_discriminator(
-      const LocalizationResult& result, double max_azimuth_rad = 3.141592653589793) const;
+      const LocalizationResult& result, double max_azimuth_rad = 3.141592653589793,
+      const std::vector<Eigen::Vector3d>& looked_at_ego_m = {}) const;
 
  private:
   struct State;

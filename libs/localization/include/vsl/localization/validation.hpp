@@ -104,11 +104,14 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
 // `range_m` from the camera are candidates: nearer ones (under some hypothesis an object may lie
 // at the robot's own head) cannot be fixated by the stereo head nor triangulated; nor can objects
 // whose ego azimuth (from ego +x about z) exceeds `max_azimuth_rad`, beyond the head's reach.
+// Ego points already looked at (`looked_at_ego_m`, within 0.3 m) are not chosen again: validation
+// counts what is seen, not what is missing, so a look that found nothing there would only repeat.
 // Returns the best, or nullopt.
 std::optional<ActiveValidationTarget> choose_discriminator(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
     double range_m = 4.0, double cap_m = 1.0, double min_range_m = 1.0,
-    double max_azimuth_rad = 3.141592653589793);
+    double max_azimuth_rad = 3.141592653589793,
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
 
 }  // namespace vsl::localization
