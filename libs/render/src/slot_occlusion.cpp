@@ -36,6 +36,9 @@ bool inside(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vec
 
 }  // namespace
 
+// Slot walls deeper than this (m) are not darkened; see the use below.
+constexpr double kMaxSlotDepth_m = 0.1;
+
 std::vector<float> slot_light_factors(const std::vector<Eigen::Vector3d>& world_vertices_m,
                                       const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                       const std::vector<Eigen::Vector4d>& world_planes,
@@ -84,6 +87,10 @@ std::vector<float> slot_light_factors(const std::vector<Eigen::Vector3d>& world_
     }
     if (width_m < 0.0) continue;
     const double depth_m = std::min({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    // Only narrow facets are walls of a slot (the edges of doors, panels and carcasses). A large
+    // facet that happens to face another across a small gap (a wall behind a carcass) is mostly
+    // open to the room: darkening it whole would paint the wall black.
+    if (depth_m > kMaxSlotDepth_m) continue;
     // A facet flush against another (w = 0) is never seen; keep a trace of light so that a
     // sub-pixel glimpse of it is dark, not an artefact of exactly zero.
     factors[t] = static_cast<float>(std::max(width_m / (width_m + depth_m), 0.02));
