@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "loopback.hpp"
 #include "run_command.hpp"
 #include "synthetic_scan.hpp"
 #include "vsl/daemon_heartbeat_t.hpp"
@@ -34,15 +35,8 @@ using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 using vsl::testing::ChildProcess;
 
-std::string udpm_url(int port) {
-  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
-}
-
-std::string describe(int status) {
-  if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
-  return "status " + std::to_string(status);
-}
+using vsl::testing::describe;
+using vsl::testing::udpm_url;
 
 struct Listener {
   explicit Listener(int port) : bus(udpm_url(port), runtime::Logger("test")) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "loopback.hpp"
 #include "vsl/daemon_heartbeat_t.hpp"
 #include "vsl/fused_percept_list_t.hpp"
 #include "vsl/gaze_command_t.hpp"
@@ -41,15 +42,8 @@ using Clock = std::chrono::steady_clock;
 using vsl::testing::ChildProcess;
 using Status = vsl::localizer_status_t;
 
-std::string udpm_url(int port) {
-  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
-}
-
-std::string describe(int status) {
-  if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
-  return "status " + std::to_string(status);
-}
+using vsl::testing::describe;
+using vsl::testing::udpm_url;
 
 Eigen::Isometry3d isometry(const vsl::pose_t& pose) {
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();

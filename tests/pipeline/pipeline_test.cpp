@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "loopback.hpp"
 #include "run_command.hpp"
 
 namespace {
@@ -28,9 +29,7 @@ namespace {
 using namespace std::chrono_literals;
 using vsl::testing::ChildProcess;
 
-std::string udpm_url(int port) {
-  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
-}
+using vsl::testing::udpm_url;
 
 // The numbers of vsl-request's "result: status=... key=value ..." line.
 struct RequestResult {

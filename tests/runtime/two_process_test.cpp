@@ -13,6 +13,7 @@
 #include <string>
 
 #include "child_process.hpp"
+#include "loopback.hpp"
 #include "peer_protocol.hpp"
 #include "vsl/daemon_heartbeat_t.hpp"
 #include "vsl/runtime/lcm_bus.hpp"
@@ -26,15 +27,8 @@ using vsl::testing::ChildProcess;
 
 // recv_buf_size: with the kernel's default socket buffer (rmem_default, 208 KiB) liblcm 1.3.1
 // loses a message of about 200 kB (several UDP fragments) on this box; stereo frames are larger.
-std::string udpm_url(int port) {
-  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
-}
-
-std::string describe(int status) {
-  if (WIFEXITED(status)) return "exit code " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
-  return "status " + std::to_string(status);
-}
+using vsl::testing::describe;
+using vsl::testing::udpm_url;
 
 class runtime_two_process : public ::testing::Test {
  protected:

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "loopback.hpp"
 #include "map_drawing.hpp"
 #include "run_command.hpp"
 #include "vsl/fused_percept_list_t.hpp"
@@ -33,9 +34,7 @@ using namespace std::chrono_literals;
 using vsl::testing::ChildProcess;
 using vsl::testing::run_command;
 
-std::string udpm_url(int port) {
-  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
-}
+using vsl::testing::udpm_url;
 
 std::filesystem::path scratch_dir(const std::string& name) {
   const auto dir = std::filesystem::path(VSL_BINARY_DIR) / "test-output" / "vsl-view" / name;
