@@ -242,7 +242,7 @@ TEST_F(fusion_process, FusesTheScanOfTheRequestWhenTheLocalizerEntersFusing) {
   ASSERT_TRUE(runtime::publish(listener.bus, "LOCALIZER_STATUS",
                                status_message(42, vsl::localizer_status_t::FUSING, 2'500'000)));
   ASSERT_TRUE(listener.until([&] { return !listener.fused.empty(); }, 30s)) << fusion.err();
-  const vsl::fused_percept_list_t& first = listener.fused[0];
+  const vsl::fused_percept_list_t first = listener.fused[0];  // a copy: fused grows below
   EXPECT_EQ(first.request_id, 42);
   EXPECT_EQ(first.utime, 2'500'000);
   EXPECT_EQ(first.num_frames, 12);
