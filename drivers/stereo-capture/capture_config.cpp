@@ -5,17 +5,13 @@
 #include <filesystem>
 
 #include "vsl/config/node.hpp"
+#include "vsl/config/paths.hpp"
 
 namespace vsl::stereo_capture {
 namespace {
 
 using config::Node;
-
-std::string path_relative_to_file(const Node& node) {
-  const std::filesystem::path path(node.as_string());
-  if (path.is_absolute()) return path.lexically_normal().string();
-  return (std::filesystem::path(node.source()).parent_path() / path).lexically_normal().string();
-}
+using config::path_relative_to_file;
 
 int int_in(const Node& node, int min, int max) {
   const std::int64_t value = node.as_int();

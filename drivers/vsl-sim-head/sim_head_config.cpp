@@ -8,17 +8,13 @@
 #include "render_config.hpp"
 #include "vsl/config/eigen.hpp"
 #include "vsl/config/node.hpp"
+#include "vsl/config/paths.hpp"
 
 namespace vsl::sim_head {
 namespace {
 
 using config::Node;
-
-std::string path_relative_to_file(const Node& node) {
-  const std::filesystem::path path(node.as_string());
-  if (path.is_absolute()) return path.lexically_normal().string();
-  return (std::filesystem::path(node.source()).parent_path() / path).lexically_normal().string();
-}
+using config::path_relative_to_file;
 
 // position_m plus exactly one of yaw_deg, yaw_rad, orientation_wxyz (upright when only yaw).
 Eigen::Isometry3d robot_pose(const Node& node) {

@@ -4,17 +4,13 @@
 #include <filesystem>
 
 #include "vsl/config/node.hpp"
+#include "vsl/config/paths.hpp"
 
 namespace vsl::fusion_daemon {
 namespace {
 
 using config::Node;
-
-std::string path_relative_to_file(const Node& node) {
-  const std::filesystem::path path(node.as_string());
-  if (path.is_absolute()) return path.lexically_normal().string();
-  return (std::filesystem::path(node.source()).parent_path() / path).lexically_normal().string();
-}
+using config::path_relative_to_file;
 
 }  // namespace
 

@@ -5,18 +5,14 @@
 #include <functional>
 
 #include "vsl/config/node.hpp"
+#include "vsl/config/paths.hpp"
 #include "vsl/world/world_io.hpp"
 
 namespace vsl::localizer_daemon {
 namespace {
 
 using config::Node;
-
-std::string path_relative_to_file(const Node& node) {
-  const std::filesystem::path path(node.as_string());
-  if (path.is_absolute()) return path.lexically_normal().string();
-  return (std::filesystem::path(node.source()).parent_path() / path).lexically_normal().string();
-}
+using config::path_relative_to_file;
 
 // The runtime's rule for channel names (libs/runtime/src/config.cpp).
 std::string channel_name(const Node& node) {

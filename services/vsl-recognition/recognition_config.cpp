@@ -6,17 +6,13 @@
 #include <string_view>
 
 #include "vsl/config/node.hpp"
+#include "vsl/config/paths.hpp"
 
 namespace vsl::recognition_daemon {
 namespace {
 
 using config::Node;
-
-std::string path_relative_to_file(const Node& node) {
-  const std::filesystem::path path(node.as_string());
-  if (path.is_absolute()) return path.lexically_normal().string();
-  return (std::filesystem::path(node.source()).parent_path() / path).lexically_normal().string();
-}
+using config::path_relative_to_file;
 
 // The runtime's rule for channel names (libs/runtime/src/config.cpp).
 std::string channel_name(const Node& node) {
