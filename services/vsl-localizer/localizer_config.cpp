@@ -6,6 +6,7 @@
 
 #include "vsl/config/node.hpp"
 #include "vsl/config/paths.hpp"
+#include "vsl/runtime/config.hpp"
 #include "vsl/world/world_io.hpp"
 
 namespace vsl::localizer_daemon {
@@ -13,19 +14,6 @@ namespace {
 
 using config::Node;
 using config::path_relative_to_file;
-
-// The runtime's rule for channel names (libs/runtime/src/config.cpp).
-std::string channel_name(const Node& node) {
-  const std::string name = node.as_string();
-  for (const char c : name) {
-    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                    c == '_' || c == '-' || c == '.' || c == '/';
-    if (!ok) {
-      node.fail("channel names may use only letters, digits and _ - . /, got '" + name + "'");
-    }
-  }
-  return name;
-}
 
 int positive_int(const Node& node, int max) {
   const std::int64_t value = node.as_int();
@@ -116,12 +104,13 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
     passive->expect_keys({"enabled", "follow_status_channel", "status_channel", "pose_channel"});
     core.passive = passive->get("enabled", false);
     if (const auto n = passive->find("follow_status_channel")) {
-      out.passive_channels.follow_status = channel_name(*n);
+      out.passive_channels.follow_status = runtime::channel_name(*n);
     }
     if (const auto n = passive->find("status_channel")) {
-      out.passive_channels.status = channel_name(*n);
+      out.passive_channels.status = runtime::channel_name(*n);
     }
-    if (const auto n = passive->find("pose_channel")) out.passive_channels.pose = channel_name(*n);
+    if (const auto n = passive->find("pose_channel"))
+      out.passive_channels.pose = runtime::channel_name(*n);
     // Fusion follows the recorded status: this localizer must not talk on it.
     if (out.passive_channels.status == out.passive_channels.follow_status) {
       passive->at("status_channel").fail("must differ from follow_status_channel");

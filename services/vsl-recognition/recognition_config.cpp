@@ -7,25 +7,13 @@
 
 #include "vsl/config/node.hpp"
 #include "vsl/config/paths.hpp"
+#include "vsl/runtime/config.hpp"
 
 namespace vsl::recognition_daemon {
 namespace {
 
 using config::Node;
 using config::path_relative_to_file;
-
-// The runtime's rule for channel names (libs/runtime/src/config.cpp).
-std::string channel_name(const Node& node) {
-  const std::string name = node.as_string();
-  for (const char c : name) {
-    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                    c == '_' || c == '-' || c == '.' || c == '/';
-    if (!ok) {
-      node.fail("channel names may use only letters, digits and _ - . /, got '" + name + "'");
-    }
-  }
-  return name;
-}
 
 // The runtime channel key that already uses `name` ("" if none): the debug image must never land
 // on the input of another daemon.
@@ -67,7 +55,7 @@ RecognitionConfig read_recognition_config(const Node& root, const runtime::Chann
     debug->expect_keys({"enabled", "channel"});
     out.debug_image = debug->get("enabled", false);
     const std::optional<Node> channel = debug->find("channel");
-    if (channel) out.debug_channel = channel_name(*channel);
+    if (channel) out.debug_channel = runtime::channel_name(*channel);
     if (const std::string_view key = runtime_channel_using(out.debug_channel, channels);
         !key.empty()) {
       (channel ? *channel : *debug)

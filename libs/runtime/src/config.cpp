@@ -48,6 +48,20 @@ bool is_channel_char(char c) {
   throw config::Error(config::format_error(section.source(), section.line(), path, what));
 }
 
+}  // namespace
+
+std::string channel_name(const config::Node& node) {
+  const std::string text = node.as_string();
+  for (const char c : text) {
+    if (!is_channel_char(c)) {
+      node.fail("channel names may use only letters, digits and _ - . /, got '" + text + "'");
+    }
+  }
+  return text;
+}
+
+namespace {
+
 void read_channels(const config::Node& section, Channels& channels) {
   section.expect_map();
   for (const std::string& key : section.keys()) {
@@ -56,13 +70,7 @@ void read_channels(const config::Node& section, Channels& channels) {
       fail_key(section, key, "unknown channel (known: " + known_channel_list() + ")");
     const std::optional<config::Node> value = section.find(key);
     if (!value) fail_key(section, key, "expected a channel name, got nothing");
-    const std::string text = value->as_string();
-    for (const char c : text) {
-      if (!is_channel_char(c)) {
-        value->fail("channel names may use only letters, digits and _ - . /, got '" + text + "'");
-      }
-    }
-    *name = text;
+    *name = channel_name(*value);
   }
   // Two roles on one channel would feed one daemon's output into an unrelated input.
   for (std::size_t i = 0; i < kChannelKeys.size(); ++i) {

@@ -51,6 +51,10 @@ struct RuntimeConfig {
 };
 
 // Reads the optional `runtime:` key of a daemon's configuration root (absent: all defaults).
+// A channel name from config (letters, digits and _ - . /); a bad one throws config::Error.
+// The rule of the runtime: channel overrides and daemons' own extra channels use it alike.
+std::string channel_name(const config::Node& node);
+
 RuntimeConfig read_runtime_config(const config::Node& root);
 // Reads a `runtime:` section itself.
 RuntimeConfig read_runtime_section(const config::Node& section);
