@@ -12,6 +12,8 @@
 namespace vsl::localizer_daemon {
 namespace {
 
+constexpr double kRadPerDeg = 3.141592653589793 / 180.0;
+
 using config::Node;
 using config::path_relative_to_file;
 
@@ -45,7 +47,8 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
   section.expect_map();
   section.expect_keys({"world", "options", "localize_at_startup", "startup_delay_s", "scan",
                        "fusing_timeout_s", "fusing_attempts", "max_active_looks",
-                       "max_look_azimuth_deg", "status_period_s", "passive"});
+                       "max_look_azimuth_deg", "max_look_elevation_deg", "status_period_s",
+                       "passive"});
   LocalizerDaemonConfig out;
   out.world_path = path_relative_to_file(section.at("world"));
   out.options_path = path_relative_to_file(section.at("options"));
@@ -93,7 +96,10 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
     core.max_active_looks = static_cast<int>(value);
   }
   if (const auto node = section.find("max_look_azimuth_deg")) {
-    core.max_look_azimuth_rad = node->as_double_in(10.0, 180.0) * 3.141592653589793 / 180.0;
+    core.look_limits.max_azimuth_rad = node->as_double_in(10.0, 180.0) * kRadPerDeg;
+  }
+  if (const auto node = section.find("max_look_elevation_deg")) {
+    core.look_limits.max_elevation_rad = node->as_double_in(5.0, 90.0) * kRadPerDeg;
   }
   if (const auto node = section.find("status_period_s")) {
     core.status_period_s = node->as_double_in(0.01, 60.0);

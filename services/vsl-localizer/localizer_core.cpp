@@ -62,8 +62,7 @@ localization::LocalizationResult LocalizerEngine::localize(
 std::optional<Eigen::Vector3d> LocalizerEngine::discriminator_target(
     const localization::LocalizationResult& result,
     const std::vector<Eigen::Vector3d>& looked_at_ego_m) const {
-  const auto target =
-      localizer_.choose_discriminator(result, max_look_azimuth_rad_, looked_at_ego_m);
+  const auto target = localizer_.choose_discriminator(result, look_limits_, looked_at_ego_m);
   if (!target) return std::nullopt;
   return target->ego_target_m;
 }

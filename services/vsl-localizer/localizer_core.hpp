@@ -57,11 +57,19 @@ struct CoreOptions {
   double fusing_timeout_s = 5.0;        // FUSING -> FUSED_PERCEPTS, per attempt
   int fusing_attempts = 3;              // FUSING entries before FAILED
   int max_active_looks = 3;             // active validation looks per request
-  // Active looks only at ego targets within this azimuth of ego +x (rad): the head's reach.
-  double max_look_azimuth_rad = 2.268928;  // 130 deg: ARMAR-III's neck yaw 100 + eye pan 34
-  double status_period_s = 0.5;            // periodic LOCALIZER_STATUS
-  bool passive = false;                    // replay: no gaze commands, follow the log's status
-  std::int64_t first_gaze_id = 1;          // gaze request ids count up from here (unique per run)
+  // Where active looks may point the head: ARMAR-III's reach (neck yaw 100 deg + eye pan 34 deg
+  // = 130 deg of azimuth) and 35 deg of elevation (fronts seen steeper are not recognized).
+  localization::LookLimits look_limits = default_look_limits();
+  double status_period_s = 0.5;    // periodic LOCALIZER_STATUS
+  bool passive = false;            // replay: no gaze commands, follow the log's status
+  std::int64_t first_gaze_id = 1;  // gaze request ids count up from here (unique per run)
+
+  static localization::LookLimits default_look_limits() {
+    localization::LookLimits limits;
+    limits.max_azimuth_rad = 2.268928;    // 130 deg
+    limits.max_elevation_rad = 0.610865;  // 35 deg
+    return limits;
+  }
 };
 
 struct GazeCommand {
@@ -107,8 +115,8 @@ class LocalizationEngine {
 // The real engine over vsl::localization::Localizer.
 class LocalizerEngine : public LocalizationEngine {
  public:
-  LocalizerEngine(const localization::Localizer& localizer, double max_look_azimuth_rad)
-      : localizer_(localizer), max_look_azimuth_rad_(max_look_azimuth_rad) {}
+  LocalizerEngine(const localization::Localizer& localizer, localization::LookLimits look_limits)
+      : localizer_(localizer), look_limits_(look_limits) {}
   localization::LocalizationResult localize(
       const std::vector<localization::FusedPercept>& percepts) const override;
   std::optional<Eigen::Vector3d> discriminator_target(
@@ -117,7 +125,7 @@ class LocalizerEngine : public LocalizationEngine {
 
  private:
   const localization::Localizer& localizer_;
-  double max_look_azimuth_rad_;
+  localization::LookLimits look_limits_;
 };
 
 // What the core needs of a stereo frame (the rest, the images, it never decodes).

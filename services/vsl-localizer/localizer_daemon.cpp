@@ -26,7 +26,7 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
                                          : daemon.channels().pose_estimate),
       world_(std::move(setup.world)),
       localizer_(world_, setup.options),
-      engine_(localizer_, config_.core.max_look_azimuth_rad) {
+      engine_(localizer_, config_.core.look_limits) {
   CoreOptions core = config_.core;
   // Gaze ids unique across restarts: a stale frame's echo of an old id never counts as ours.
   core.first_gaze_id = runtime::wall_utime();

@@ -421,13 +421,12 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
 }
 
 std::optional<ActiveValidationTarget> Localizer::choose_discriminator(
-    const LocalizationResult& result, double max_azimuth_rad,
+    const LocalizationResult& result, const LookLimits& limits,
     const std::vector<Eigen::Vector3d>& looked_at_ego_m) const {
   std::vector<Eigen::Isometry3d> poses;
   for (const Hypothesis& h : result.hypotheses) poses.push_back(h.world_T_ego);
   return localization::choose_discriminator(*state_->world, state_->graph, state_->grid, poses,
-                                            state_->options, 4.0, 1.0, 1.0, max_azimuth_rad,
-                                            looked_at_ego_m);
+                                            state_->options, limits, looked_at_ego_m);
 }
 
 }  // namespace vsl::localization

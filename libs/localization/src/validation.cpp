@@ -183,45 +183,83 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
   return out;
 }
 
+namespace {
+
+// One discriminating object under one hypothesis (see choose_discriminator).
+struct LookCandidate {
+  NodeIndex node;
+  std::size_t hypothesis;
+  Eigen::Vector3d ego_target_m;
+  Eigen::Vector3d camera_ray;  // unit vector, camera -> target, ego frame
+  double range_m;
+  double discrimination_m;
+};
+
+// Whether the head can usefully look at `ego_target` (validation.hpp: choose_discriminator).
+bool within_limits(const Eigen::Vector3d& ego_target, const Eigen::Vector3d& camera,
+                   const LookLimits& limits, const std::vector<Eigen::Vector3d>& looked_at_ego_m) {
+  const Eigen::Vector3d ray = ego_target - camera;
+  const double range = ray.norm();
+  if (range < limits.min_range_m || range > limits.max_range_m) return false;
+  if (std::abs(std::atan2(ego_target.y(), ego_target.x())) > limits.max_azimuth_rad) return false;
+  if (std::abs(std::atan2(ray.z(), ray.head<2>().norm())) > limits.max_elevation_rad) return false;
+  return std::none_of(
+      looked_at_ego_m.begin(), looked_at_ego_m.end(),
+      [&](const Eigen::Vector3d& looked) { return (looked - ego_target).norm() < 0.3; });
+}
+
+}  // namespace
+
 std::optional<ActiveValidationTarget> choose_discriminator(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
-    double range_m, double cap_m, double min_range_m, double max_azimuth_rad,
-    const std::vector<Eigen::Vector3d>& looked_at_ego_m) {
+    const LookLimits& limits, const std::vector<Eigen::Vector3d>& looked_at_ego_m) {
   if (hypotheses.size() < 2) return std::nullopt;
   const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
-  std::optional<ActiveValidationTarget> best;
-  double best_range = 0.0;
+  std::vector<LookCandidate> candidates;
   for (std::size_t h = 0; h < hypotheses.size(); ++h) {
     const Eigen::Isometry3d ego_T_world = hypotheses[h].inverse();
     for (std::size_t t = 0; t < graph.type_count(); ++t) {
       const auto type = static_cast<world::TypeId>(t);
-      grid.for_each_within(type, hypotheses[h] * camera, range_m, [&](NodeIndex node, double) {
-        const Eigen::Vector3d ego_target = ego_T_world * graph.world_position_m(node);
-        const double range = (ego_target - camera).norm();
-        if (range < min_range_m) return;
-        if (std::abs(std::atan2(ego_target.y(), ego_target.x())) > max_azimuth_rad) return;
-        for (const Eigen::Vector3d& looked : looked_at_ego_m) {
-          if ((looked - ego_target).norm() < 0.3) return;
-        }
-        // What another hypothesis expects at that ego point: the nearest object of the type.
-        double discrimination = cap_m;
-        for (std::size_t other = 0; other < hypotheses.size() && discrimination > 0.0; ++other) {
-          if (other == h) continue;
-          const auto nearest = grid.nearest(type, hypotheses[other] * ego_target, cap_m);
-          if (nearest) discrimination = std::min(discrimination, nearest->distance_m);
-        }
-        // A percept at the target would be explained under the others too within its gate.
-        const double gate_m = options.validation.gate_sigmas *
-                              eq7_sigma_m(ego_target, options.noise) * std::sqrt(3.0);
-        if (discrimination <= gate_m) return;
-        if (!best || discrimination > best->discrimination_m ||
-            (discrimination == best->discrimination_m && range < best_range)) {
-          best = ActiveValidationTarget{world.objects[graph.object_index(node)].id, h, ego_target,
-                                        discrimination};
-          best_range = range;
-        }
-      });
+      grid.for_each_within(
+          type, hypotheses[h] * camera, limits.max_range_m, [&](NodeIndex node, double) {
+            const Eigen::Vector3d ego_target = ego_T_world * graph.world_position_m(node);
+            if (!within_limits(ego_target, camera, limits, looked_at_ego_m)) return;
+            // What another hypothesis expects at that ego point: the nearest object of the type.
+            double discrimination = limits.cap_m;
+            for (std::size_t other = 0; other < hypotheses.size() && discrimination > 0.0;
+                 ++other) {
+              if (other == h) continue;
+              const auto nearest = grid.nearest(type, hypotheses[other] * ego_target, limits.cap_m);
+              if (nearest) discrimination = std::min(discrimination, nearest->distance_m);
+            }
+            // A percept at the target would be explained under the others too within its gate.
+            const double gate_m = options.validation.gate_sigmas *
+                                  eq7_sigma_m(ego_target, options.noise) * std::sqrt(3.0);
+            if (discrimination <= gate_m) return;
+            const Eigen::Vector3d ray = ego_target - camera;
+            candidates.push_back(
+                {node, h, ego_target, ray.normalized(), ray.norm(), discrimination});
+          });
+    }
+  }
+  // Rate each look by everything discriminating in view around its target (same hypothesis).
+  const double cos_view = std::cos(limits.view_half_angle_rad);
+  std::optional<ActiveValidationTarget> best;
+  double best_range_cost = 0.0;
+  for (const LookCandidate& c : candidates) {
+    double in_view = 0.0;
+    for (const LookCandidate& o : candidates) {
+      if (o.hypothesis == c.hypothesis && o.camera_ray.dot(c.camera_ray) >= cos_view) {
+        in_view += o.discrimination_m;
+      }
+    }
+    const double range_cost = std::abs(c.range_m - limits.preferred_range_m);
+    if (!best || in_view > best->view_discrimination_m + 1e-9 ||
+        (in_view > best->view_discrimination_m - 1e-9 && range_cost < best_range_cost)) {
+      best = ActiveValidationTarget{world.objects[graph.object_index(c.node)].id, c.hypothesis,
+                                    c.ego_target_m, c.discrimination_m, in_view};
+      best_range_cost = range_cost;
     }
   }
   return best;

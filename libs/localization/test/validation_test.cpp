@@ -119,18 +119,59 @@ TEST(ChooseDiscriminator, OnlyTargetsTheHeadCanFixate) {
   const Eigen::Vector3d ego = target->ego_target_m;
   const double azimuth = std::abs(std::atan2(ego.y(), ego.x()));
   const double range = (ego - w.options.noise.ego_camera_position_m).norm();
-  EXPECT_TRUE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
-                                   1.0, azimuth + 0.01)
-                  .has_value());
-  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
-                                    1.0, azimuth - 0.01)
-                   .has_value());
-  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
-                                    range + 0.01)
-                   .has_value());  // Looked at already: not again.
-  EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, 4.0, 1.0,
-                                    1.0, 3.2, {ego + Eigen::Vector3d(0.1, 0.0, 0.0)})
-                   .has_value());
+  const double elevation =
+      std::atan2(ego.z() - w.options.noise.ego_camera_position_m.z(), ego.head<2>().norm());
+  const auto choose = [&](const LookLimits& limits, std::vector<Eigen::Vector3d> looked = {}) {
+    return choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, limits, looked)
+        .has_value();
+  };
+  LookLimits limits;
+  limits.max_azimuth_rad = azimuth + 0.01;
+  EXPECT_TRUE(choose(limits));
+  limits.max_azimuth_rad = azimuth - 0.01;
+  EXPECT_FALSE(choose(limits));
+  limits = LookLimits{};
+  limits.min_range_m = range + 0.01;
+  EXPECT_FALSE(choose(limits));
+  limits = LookLimits{};
+  limits.max_range_m = range - 0.01;
+  EXPECT_FALSE(choose(limits));
+  limits = LookLimits{};
+  limits.max_elevation_rad = std::abs(elevation) + 0.01;
+  EXPECT_TRUE(choose(limits));
+  limits.max_elevation_rad = std::abs(elevation) - 0.01;
+  EXPECT_FALSE(choose(limits));
+  // Looked at already: not again.
+  EXPECT_FALSE(choose(LookLimits{}, {ego + Eigen::Vector3d(0.1, 0.0, 0.0)}));
+}
+
+// Room 1 has a lone extra window and, elsewhere, a cluster of three: one look at the cluster
+// sees three telling objects, so it is preferred over the lone one.
+TEST(ChooseDiscriminator, PrefersTheLookThatSeesTheMostDiscriminatingObjects) {
+  world::WorldModel model = testing::identical_rooms(2, 10.0, false);
+  testing::add_object(model, "room1.lone", "window", Eigen::Vector3d(10.0, 2.0, 1.5));
+  testing::add_object(model, "room1.cluster1", "window", Eigen::Vector3d(11.0, 3.5, 1.5));
+  testing::add_object(model, "room1.cluster2", "window", Eigen::Vector3d(11.0, 3.2, 1.6));
+  testing::add_object(model, "room1.cluster3", "window", Eigen::Vector3d(11.3, 3.5, 1.4));
+  model.index_ids();
+  const World w(std::move(model));
+  const Eigen::Isometry3d room0 = testing::upright_pose(2.5, 1.5, 1.5708);
+  const Eigen::Isometry3d room1 = testing::upright_pose(12.5, 1.5, 1.5708);
+  const auto target = choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options);
+  ASSERT_TRUE(target.has_value());
+  EXPECT_EQ(target->object_id.rfind("room1.cluster", 0), 0u) << target->object_id;
+  EXPECT_GE(target->view_discrimination_m, 2.5);
+  // Without the cluster in reach, the lone window.
+  LookLimits limits;
+  limits.max_azimuth_rad = 3.0;
+  std::vector<Eigen::Vector3d> looked;
+  for (const char* id : {"room1.cluster1", "room1.cluster2", "room1.cluster3"}) {
+    looked.push_back(room1.inverse() * w.world.objects[*w.world.find(id)].world_position_m);
+  }
+  const auto second =
+      choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options, limits, looked);
+  ASSERT_TRUE(second.has_value());
+  EXPECT_EQ(second->object_id, "room1.lone");
 }
 
 TEST(ChooseDiscriminator, NothingDiscriminatesIdenticalRoomsOrASingleHypothesis) {

@@ -75,7 +75,7 @@ void BM_FusedPerceptsToPoseEstimate_Kitchen(benchmark::State& state) {
     messages.push_back(encoded_fused(scenarios.generate(6, i).percepts));
   }
   const loc::Localizer localizer(world, options);
-  const LocalizerEngine engine(localizer, CoreOptions{}.max_look_azimuth_rad);
+  const LocalizerEngine engine(localizer, CoreOptions::default_look_limits());
   EncodingOutputs outputs;
   CoreOptions core_options;  // no gaze targets: a request goes straight to FUSING
   core_options.max_active_looks = 0;

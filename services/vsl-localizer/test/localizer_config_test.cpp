@@ -31,6 +31,10 @@ TEST(LocalizerConfig, MinimalAndDefaults) {
   EXPECT_EQ(c.core.ego_gaze_targets_m[0], Eigen::Vector3d(2, 0, 1));
   EXPECT_FALSE(c.core.passive);
   EXPECT_EQ(c.core.frames_per_target, 2);
+  EXPECT_NEAR(c.core.look_limits.max_elevation_rad, 35.0 * 3.141592653589793 / 180.0, 1e-6);
+  const auto e = read_localizer_config(config::Node::load_string(
+      std::string(kMinimal) + "  max_look_elevation_deg: 20\n", "/c.yaml"));
+  EXPECT_NEAR(e.core.look_limits.max_elevation_rad, 20.0 * 3.141592653589793 / 180.0, 1e-9);
   const auto p = read_localizer_config(config::Node::load_string(kMinimal, "/cfg/l.yaml"), true);
   EXPECT_TRUE(p.core.passive);
   EXPECT_EQ(p.passive_channels.status, "PASSIVE_LOCALIZER_STATUS");
@@ -41,6 +45,9 @@ TEST(LocalizerConfig, BadValuesAreOneLineWithFileLineAndKey) {
   EXPECT_EQ(error_of(base + "  max_active_looks: -1\n"),
             "/cfg/l.yaml:6: localizer.max_active_looks: must be an integer in [0, 20]");
   EXPECT_NE(error_of(base + "  bogus: 1\n").find("/cfg/l.yaml:6"), std::string::npos);
+  EXPECT_NE(
+      error_of(base + "  max_look_elevation_deg: 95\n").find("localizer.max_look_elevation_deg"),
+      std::string::npos);
   EXPECT_NE(error_of(base + "  fusing_timeout_s: 0\n").find("localizer.fusing_timeout_s"),
             std::string::npos);
   EXPECT_NE(error_of(std::string(kMinimal).replace(base.find("[[2, 0, 1]]"), 11, "[[0, 0, 1]]"))

@@ -125,6 +125,25 @@ struct ActiveValidationTarget {
   std::size_t hypothesis_index = 0;  // the hypothesis under which it is predicted there
   Eigen::Vector3d ego_target_m;      // where to point the head, ego frame
   double discrimination_m = 0.0;     // how far apart the hypotheses predict it (larger: better)
+  // The discrimination of every candidate in view around the target under the same hypothesis
+  // (m, summed): what one look there can settle.
+  double view_discrimination_m = 0.0;
+};
+
+// Where active validation may point the head (paper §2.4.2 leaves the choice to the robot). The
+// defaults are ARMAR-III's head and what recognition does well (docs/recognition.md: handles to
+// 1 cm at 1-2 m).
+struct LookLimits {
+  double min_range_m = 1.0;  // nearer: the stereo head cannot fixate nor triangulate it
+  double max_range_m = 4.0;  // farther: Eq. 7 error grows with range^2; recognition is poor
+  // Among looks that settle as much, the one whose target is nearest this range from the camera.
+  double preferred_range_m = 2.0;
+  double max_azimuth_rad = 3.141592653589793;  // |azimuth| from ego +x about ego z
+  // |elevation| of the target above or below the camera's horizontal plane: steeper views of
+  // fronts and handles (from below a wall cupboard, say) are foreshortened and not recognized.
+  double max_elevation_rad = 1.5707963267948966;
+  double view_half_angle_rad = 0.35;  // 20 deg: objects this near the gaze ray are seen too
+  double cap_m = 1.0;                 // discrimination beyond this counts as this
 };
 
 class Localizer {
@@ -143,10 +162,10 @@ class Localizer {
 
   // For an ambiguous result: the model object that best discriminates its hypotheses and the
   // ego-frame point to look at; nullopt when fewer than two hypotheses or nothing discriminates.
-  // Only targets within `max_azimuth_rad` of ego +x (the head's reach), and not near an ego point
-  // already looked at, are chosen.
+  // Only targets within `limits` (the head's reach), and not near an ego point already looked
+  // at, are chosen (validation.hpp: choose_discriminator).
   std::optional<ActiveValidationTarget> choose_discriminator(
-      const LocalizationResult& result, double max_azimuth_rad = 3.141592653589793,
+      const LocalizationResult& result, const LookLimits& limits = {},
       const std::vector<Eigen::Vector3d>& looked_at_ego_m = {}) const;
 
  private:

@@ -94,24 +94,30 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
 
 // Active validation (§2.4.2): "the criterion to select the discriminator percept is the maximal
 // pose difference between pairs of hypotheses". For each hypothesis h and each model object o of a
-// recognizable type within `range_m` of the camera under h, o is predicted at the ego point
-// e = h^-1 X_o. Looking at e settles the question when the other hypotheses expect nothing of o's
-// type there: under h' the point e is the world point h' e, and the nearest object of o's type to
-// it is d(h') away. The discrimination of (o, h) is min over h' != h of d(h') (capped at
-// `cap_m`): large means that whatever is (or is not) seen at e confirms h or refutes it against
-// every other hypothesis. Pairs whose discrimination is below the gate of a percept at e (it
-// would be explained under h' too) do not discriminate. Only objects between `min_range_m` and
-// `range_m` from the camera are candidates: nearer ones (under some hypothesis an object may lie
-// at the robot's own head) cannot be fixated by the stereo head nor triangulated; nor can objects
-// whose ego azimuth (from ego +x about z) exceeds `max_azimuth_rad`, beyond the head's reach.
-// Ego points already looked at (`looked_at_ego_m`, within 0.3 m) are not chosen again: validation
-// counts what is seen, not what is missing, so a look that found nothing there would only repeat.
+// recognizable type within `limits.max_range_m` of the camera under h, o is predicted at the ego
+// point e = h^-1 X_o. Looking at e settles the question when the other hypotheses expect nothing
+// of o's type there: under h' the point e is the world point h' e, and the nearest object of o's
+// type to it is d(h') away. The discrimination of (o, h) is min over h' != h of d(h') (capped at
+// `limits.cap_m`): large means that whatever is (or is not) seen at e confirms h or refutes it
+// against every other hypothesis. Pairs whose discrimination is below the gate of a percept at e
+// (it would be explained under h' too) do not discriminate.
+//
+// A look sees more than its target: every discriminating (o', h) whose ego point lies within
+// `limits.view_half_angle_rad` of the gaze ray from the camera to e is in view too. The look is
+// rated by the sum of those discriminations (view_discrimination_m, o itself included), so a
+// look at a cluster of telling objects beats one at a lone handle; equal ratings go to the target
+// nearest `preferred_range_m`.
+//
+// Only targets the head can look at usefully are candidates (`limits`): between min_range_m
+// (under some hypothesis an object may lie at the robot's own head) and max_range_m from the
+// camera, within max_azimuth_rad of ego +x (the head's reach) and max_elevation_rad of the
+// camera's horizontal (a front seen steeply from below is not recognized). Ego points already
+// looked at (`looked_at_ego_m`, within 0.3 m) are not chosen again: validation counts what is
+// seen, not what is missing, so a look that found nothing there would only repeat.
 // Returns the best, or nullopt.
 std::optional<ActiveValidationTarget> choose_discriminator(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
-    double range_m = 4.0, double cap_m = 1.0, double min_range_m = 1.0,
-    double max_azimuth_rad = 3.141592653589793,
-    const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
+    const LookLimits& limits = {}, const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
 
 }  // namespace vsl::localization
