@@ -9,6 +9,7 @@
 #include "vsl/config/eigen.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/recognition/descriptors.hpp"
+#include "vsl/recognition/quadrilateral.hpp"
 
 namespace vsl::recognition {
 namespace {
@@ -77,7 +78,12 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
     Detection detection;
     detection.type = model_.type();
     detection.blob_index = static_cast<int>(i);
-    detection.reference_px = blob.centroid_px;
+    // The image of the door face's centre: where the diagonals of the outline's quadrilateral
+    // cross (quadrilateral.hpp); the centroid when the outline is no quadrilateral.
+    const std::optional<BlobQuadrilateral> quad = fit_quadrilateral(blob);
+    detection.reference_px = quad ? quad->centre_px : blob.centroid_px;
+    detection.height_px = quad ? quad->vertical_side_px : double(blob.v_max - blob.v_min + 1);
+    if (quad) detection.corners_px.assign(quad->corners.begin(), quad->corners.end());
     detection.area_px = blob.area_px;
     detection.major_axis_angle_rad = major_axis_angle_rad(blob);
     detection.major_extent_px = axes.major_extent_px;
