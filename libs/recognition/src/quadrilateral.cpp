@@ -19,6 +19,7 @@ constexpr double kSideTolerancePx = 2.0;
 constexpr double kSideToleranceFraction = 0.03;
 constexpr double kCornerFraction = 0.1;
 constexpr int kMinSidePoints = 5;
+constexpr double kOutlierPx = 1.5;
 
 struct Line {
   Eigen::Vector2d point;
@@ -82,6 +83,8 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob) {
 
   // Each side refitted to the outline pixels near it.
   std::array<Line, 4> sides;
+  std::vector<Eigen::Vector2d> near;
+  near.reserve(points.size());
   for (int i = 0; i < 4; ++i) {
     const Eigen::Vector2d a(simplified[i].x + offset.x(), simplified[i].y + offset.y());
     const Eigen::Vector2d b(simplified[(i + 1) % 4].x + offset.x(),
@@ -91,20 +94,41 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob) {
     const Eigen::Vector2d d = (b - a) / length;
     const Eigen::Vector2d n(-d.y(), d.x());
     const double tol = tolerance(length);
-    std::vector<cv::Point2f> near;
+    near.clear();
     for (const Eigen::Vector2d& q : points) {
       const double t = d.dot(q - a);
       if (t < kCornerFraction * length || t > (1.0 - kCornerFraction) * length) continue;
       if (std::abs(n.dot(q - a)) > tol) continue;
-      near.emplace_back(static_cast<float>(q.x()), static_cast<float>(q.y()));
+      near.push_back(q);
     }
-    if (static_cast<int>(near.size()) < kMinSidePoints) {
-      sides[i] = {a, d};
-      continue;
+    sides[i] = {a, d};
+    // Total least squares, then again without the points more than kOutlierPx off that line (a
+    // notch, a rounded corner).
+    for (int pass = 0; pass < 2; ++pass) {
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+      int count = 0;
+      for (const Eigen::Vector2d& q : near) {
+        if (pass == 1 && std::abs(cross(sides[i].direction, q - sides[i].point)) > kOutlierPx) {
+          continue;
+        }
+        mean += q;
+        ++count;
+      }
+      if (count < kMinSidePoints) break;
+      mean /= count;
+      Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+      for (const Eigen::Vector2d& q : near) {
+        if (pass == 1 && std::abs(cross(sides[i].direction, q - sides[i].point)) > kOutlierPx) {
+          continue;
+        }
+        scatter += (q - mean) * (q - mean).transpose();
+      }
+      // The principal direction of the 2x2 scatter, in closed form.
+      const double angle = 0.5 * std::atan2(2.0 * scatter(0, 1), scatter(0, 0) - scatter(1, 1));
+      Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+      if (direction.dot(d) < 0.0) direction = -direction;
+      sides[i] = {mean, direction};
     }
-    cv::Vec4f line;
-    cv::fitLine(near, line, cv::DIST_HUBER, 0, 0.01, 0.01);
-    sides[i] = {Eigen::Vector2d(line[2], line[3]), Eigen::Vector2d(line[0], line[1]).normalized()};
   }
   BlobQuadrilateral out;
   for (int i = 0; i < 4; ++i) {

@@ -33,10 +33,11 @@ struct BlobQuadrilateral {
 };
 
 // Fits a convex quadrilateral to the outline of `blob`: the four-vertex simplification of the
-// outline's convex hull, then each side refitted (robust least squares, Huber) to the outline
-// pixels near it, the corners from the intersections of neighbouring sides. Empty when the blob is
-// too small (fewer than 8 px across), the hull does not simplify to four vertices, or the result
-// is not a convex quadrilateral holding the blob's centroid.
+// outline's convex hull, then each side refitted (total least squares, again without the pixels
+// more than 1.5 px off) to the outline pixels near it, the corners from the intersections of
+// neighbouring sides. Empty when the blob is too small (fewer than 8 px across), the hull does not
+// simplify to four vertices, or the result is not a convex quadrilateral holding the blob's
+// centroid.
 std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob);
 
 }  // namespace vsl::recognition
