@@ -23,6 +23,9 @@ int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
   return static_cast<int>(value);
 }
 
+// Of each side of a blob cut by the image border, at least this fraction must be outline.
+constexpr double kMinBorderSideSupport = 0.6;
+
 }  // namespace
 
 DoorRecognizerParameters door_parameters_from(const config::Node& section) {
@@ -67,9 +70,13 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
   for (std::size_t i = 0; i < blobs.size(); ++i) {
     const Blob& blob = blobs[i];
     if (blob.empty() || blob.area_px < parameters_.min_blob_px) continue;
+    // A blob the image border cuts is judged only when its outline still shows all four sides
+    // (the border cut off a corner, which the sides' intersection restores).
+    std::optional<BlobQuadrilateral> quad;
     if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
         blob.v_max >= bgr_image.rows - border) {
-      continue;
+      quad = fit_quadrilateral(blob, bgr_image.cols, bgr_image.rows);
+      if (!quad || quad->min_side_support < kMinBorderSideSupport) continue;
     }
     const BlobAxes axes = blob_axes(blob);
     const double d2 =
@@ -80,7 +87,7 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
     detection.blob_index = static_cast<int>(i);
     // The image of the door face's centre: where the diagonals of the outline's quadrilateral
     // cross (quadrilateral.hpp); the centroid when the outline is no quadrilateral.
-    const std::optional<BlobQuadrilateral> quad = fit_quadrilateral(blob);
+    if (!quad) quad = fit_quadrilateral(blob);
     detection.reference_px = quad ? quad->centre_px : blob.centroid_px;
     detection.height_px = quad ? quad->vertical_side_px : double(blob.v_max - blob.v_min + 1);
     if (quad) detection.corners_px.assign(quad->corners.begin(), quad->corners.end());

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace vsl::recognition {
@@ -45,7 +46,8 @@ double tolerance(double side_length_px) {
 
 }  // namespace
 
-std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob) {
+std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob, int image_width,
+                                                   int image_height) {
   if (blob.empty()) return std::nullopt;
   const int width = blob.u_max - blob.u_min + 1;
   const int height = blob.v_max - blob.v_min + 1;
@@ -66,7 +68,17 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob) {
   const Eigen::Vector2d offset(blob.u_min - 1, blob.v_min - 1);
   std::vector<Eigen::Vector2d> points;
   points.reserve(outline.size());
-  for (const cv::Point& p : outline) points.emplace_back(p.x + offset.x(), p.y + offset.y());
+  // Outline pixels on the image border are where the image cuts the blob, not its outline.
+  const bool clip = image_width > 0 && image_height > 0;
+  for (const cv::Point& p : outline) {
+    const Eigen::Vector2d q(p.x + offset.x(), p.y + offset.y());
+    if (clip &&
+        (q.x() <= 0 || q.y() <= 0 || q.x() >= image_width - 1 || q.y() >= image_height - 1)) {
+      continue;
+    }
+    points.push_back(q);
+  }
+  if (points.empty()) return std::nullopt;
 
   // Four-vertex simplification of the convex hull: the tolerance grows until at most four
   // vertices remain.
@@ -171,8 +183,9 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob) {
   }
   const int first = verticality[0] + verticality[2] >= verticality[1] + verticality[3] ? 0 : 1;
   out.vertical_side_px = 0.5 * (length[first] + length[first + 2]);
-  // Outline pixels near a fitted side.
+  // Outline pixels near a fitted side, in all and per side.
   int fitted = 0;
+  std::array<int, 4> on_side{};
   for (const Eigen::Vector2d& q : points) {
     for (int i = 0; i < 4; ++i) {
       const Eigen::Vector2d a = out.corners[i];
@@ -182,11 +195,20 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob) {
       if (t < -0.05 || t > 1.05) continue;
       if (std::abs(cross(s / l, q - a)) <= tolerance(l)) {
         ++fitted;
+        ++on_side[i];
         break;
       }
     }
   }
   out.outline_fit = points.empty() ? 0.0 : static_cast<double>(fitted) / points.size();
+  // An 8-connected outline has one pixel per pixel of a side's longer image extent.
+  out.min_side_support = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector2d s = out.corners[(i + 1) % 4] - out.corners[i];
+    const double pixels = std::max(std::abs(s.x()), std::abs(s.y()));
+    out.min_side_support =
+        std::min(out.min_side_support, pixels > 0.0 ? std::min(1.0, on_side[i] / pixels) : 0.0);
+  }
   return out;
 }
 

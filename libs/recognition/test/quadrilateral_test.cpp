@@ -58,6 +58,24 @@ TEST(QuadrilateralTest, HandleNotchesDoNotMoveTheSides) {
   EXPECT_LT((quad->centre_px - diagonal_crossing(kDoor)).norm(), 0.7);
 }
 
+TEST(QuadrilateralTest, ImageBorderCuttingACornerOrASide) {
+  // The door reaches 8 px past the left border with its bottom-left corner only (a fifth of its
+  // left side): the sides' intersection restores the corner outside the image.
+  const std::vector<cv::Point> corner_out{{30, 100}, {150, 130}, {150, 330}, {-8, 380}};
+  const auto restored = fit_quadrilateral(blob_of(corner_out), 640, 480);
+  ASSERT_TRUE(restored);
+  EXPECT_NEAR(restored->corners[3].x(), -8.0, 1.5);
+  EXPECT_NEAR(restored->corners[3].y(), 380.0, 1.5);
+  EXPECT_LT((restored->centre_px - diagonal_crossing(corner_out)).norm(), 1.0);
+  EXPECT_GT(restored->min_side_support, 0.7);
+  // Cut along a whole side: the side along the border is no outline.
+  const std::vector<cv::Point> side_out{{-60, 100}, {150, 130}, {150, 330}, {-60, 380}};
+  const auto cut = fit_quadrilateral(blob_of(side_out), 640, 480);
+  EXPECT_TRUE(!cut || cut->min_side_support < 0.6);
+  // A door wholly in the image is fully supported.
+  EXPECT_GT(fit_quadrilateral(blob_of(kDoor), 640, 480)->min_side_support, 0.9);
+}
+
 TEST(QuadrilateralTest, RejectsWhatIsNoQuadrilateral) {
   EXPECT_FALSE(fit_quadrilateral(blob_of({{10, 10}, {14, 10}, {14, 14}, {10, 14}})));  // tiny
   // A triangle.

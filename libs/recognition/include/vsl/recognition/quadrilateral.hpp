@@ -30,6 +30,10 @@ struct BlobQuadrilateral {
   // Fraction of the blob's outline pixels within the fit tolerance of a side (1 for a clean
   // quadrilateral; a blob of two doors in an L or a door with a big bite out of it scores low).
   double outline_fit = 0.0;
+  // The least, over the four sides, of the fraction of the side's length that outline pixels
+  // (not on the image border) lie along: near 1 when every side is seen; low for a side that is
+  // only the hull's chord across a gap, or where the image border cuts the object.
+  double min_side_support = 0.0;
 };
 
 // Fits a convex quadrilateral to the outline of `blob`: the four-vertex simplification of the
@@ -38,6 +42,12 @@ struct BlobQuadrilateral {
 // neighbouring sides. Empty when the blob is too small (fewer than 8 px across), the hull does not
 // simplify to four vertices, or the result is not a convex quadrilateral holding the blob's
 // centroid.
-std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob);
+//
+// With the image's size, outline pixels on the image border are left out of the sides (and of
+// outline_fit and min_side_support): where the border cuts off a corner of a rectangle, its two
+// sides still meet at the corner outside the image; where it cuts off a whole side, the side
+// along the border has no support.
+std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob, int image_width = 0,
+                                                   int image_height = 0);
 
 }  // namespace vsl::recognition
