@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -374,6 +375,25 @@ int main(int argc, char** argv) {
                    << blob.u_min << "," << blob.v_min << "," << blob.u_max << "," << blob.v_max
                    << " q";
               for (const Eigen::Vector2d& c : corners) text << c.x() << "," << c.y() << ";";
+              // The other object the blob lies on most, with its share of the blob.
+              std::map<int, int> others;
+              for (const recognition::PixelRun& run : blob.runs) {
+                const int* row = ids.ptr<int>(run.v);
+                for (int c = run.u_begin; c < run.u_end; ++c) {
+                  if (row[c] != id) ++others[row[c]];
+                }
+              }
+              int other = -2, other_px = 0;
+              for (const auto& [o, n] : others) {
+                if (n > other_px) {
+                  other = o;
+                  other_px = n;
+                }
+              }
+              text << " with "
+                   << (other >= 0 ? world.objects[static_cast<std::size_t>(other)].id
+                                  : std::string(other == -1 ? "nothing" : "-"))
+                   << " " << other_px / blob.area_px;
             }
           }
           text << " | " << (object_matched[t] ? "percept" : "-");
