@@ -20,9 +20,9 @@ struct Candidate {
   int left = -1;
   int right = -1;
   double cost = 0.0;  // normalized: sum of (gate quantity / its limit)^2, each term <= 1
-  // 1 when the pair is two rectangle outlines whose centre comes from their vertical sides
-  // (Triangulator::rectangle_centre), 0 when from the reference points.
-  int diagonals = 0;
+  // True when the pair is two rectangle outlines whose centre comes from their vertical sides
+  // (Triangulator::rectangle_centre); false when from the reference points.
+  bool rectangle = false;
 };
 
 // The epipolar gate of two rectangle outlines' centres: this fraction of their height (pixels),
@@ -248,11 +248,11 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
                      : options.max_epipolar_distance_px;
       if (!(epipolar_px <= max_epipolar_px)) continue;
       std::optional<Eigen::Vector3d> point;
-      int diagonals = 0;
+      bool rectangle = false;
       if (rectangles) {
         point = triangulator.rectangle_centre(corner_array(left_corners[l]),
                                               corner_array(right_corners[r]));
-        if (point) diagonals = 1;
+        rectangle = point.has_value();
       }
       // Size: both cameras are about equally far from the object, so the areas agree.
       double area_term = 0.0;
@@ -292,7 +292,7 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
       candidates.push_back({l, r,
                             epipolar_term * epipolar_term + area_term * area_term +
                                 orientation_term * orientation_term,
-                            diagonals});
+                            rectangle});
     }
   }
 
@@ -301,7 +301,7 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
        assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()))) {
     const double offset = reference_depth_offset(options, left[c.left].type);
     std::optional<detail::Triangulation> triangulation;
-    if (c.diagonals == 0) {
+    if (!c.rectangle) {
       triangulation = triangulator.triangulate(left_ideal[c.left], right_ideal[c.right],
                                                options.pixel_sigma_px, offset);
     } else {
