@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -55,9 +57,9 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob, int image_w
   // The blob's mask with a 1 px frame, so the outline never touches the mask's border.
   cv::Mat mask(height + 2, width + 2, CV_8U, cv::Scalar(0));
   for (const PixelRun& run : blob.runs) {
-    mask.row(run.v - blob.v_min + 1)
-        .colRange(run.u_begin - blob.u_min + 1, run.u_end - blob.u_min + 1)
-        .setTo(1);
+    std::uint8_t* row = mask.ptr<std::uint8_t>(run.v - blob.v_min + 1);
+    std::memset(row + run.u_begin - blob.u_min + 1, 1,
+                static_cast<std::size_t>(run.u_end - run.u_begin));
   }
   std::vector<std::vector<cv::Point>> contours;
   cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
