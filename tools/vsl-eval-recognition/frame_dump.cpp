@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "vsl/recognition/quadrilateral.hpp"
+
 namespace vsl::tools {
 namespace {
 
@@ -18,6 +20,37 @@ bool project(const head::CameraIntrinsics& k, const Eigen::Vector3d& p, cv::Poin
   return true;
 }
 
+// Blobs outlined (grey), detections' boxes (yellow), door outlines' quadrilaterals (magenta).
+void draw_blobs(cv::Mat& picture, const std::vector<recognition::Blob>& blobs,
+                const std::vector<recognition::Detection>& detections) {
+  for (const recognition::Blob& blob : blobs) {
+    cv::Mat mask(picture.size(), CV_8U, cv::Scalar(0));
+    for (const recognition::PixelRun& run : blob.runs) {
+      mask.row(run.v).colRange(run.u_begin, run.u_end).setTo(255);
+    }
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+    cv::drawContours(picture, contours, -1, cv::Scalar(160, 160, 160), 1);
+  }
+  for (const recognition::Detection& d : detections) {
+    if (d.blob_index < 0 || d.blob_index >= static_cast<int>(blobs.size())) continue;
+    const recognition::Blob& b = blobs[static_cast<std::size_t>(d.blob_index)];
+    cv::rectangle(picture, cv::Point(b.u_min, b.v_min), cv::Point(b.u_max, b.v_max),
+                  cv::Scalar(0, 220, 255), 1);
+    if (d.type == "door") {
+      if (const auto quad = recognition::fit_quadrilateral(b)) {
+        for (int i = 0; i < 4; ++i) {
+          const auto& a = quad->corners[static_cast<std::size_t>(i)];
+          const auto& c = quad->corners[static_cast<std::size_t>((i + 1) % 4)];
+          cv::line(picture, cv::Point(int(std::lround(a.x())), int(std::lround(a.y()))),
+                   cv::Point(int(std::lround(c.x())), int(std::lround(c.y()))),
+                   cv::Scalar(255, 0, 255), 1);
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 bool write_frame_dump(const std::string& path, const cv::Mat& left_bgr,
@@ -26,21 +59,7 @@ bool write_frame_dump(const std::string& path, const cv::Mat& left_bgr,
                       const std::vector<recognition::GroundTruthObject>& ground_truth,
                       const std::vector<recognition::PerceptMatch>& matches) {
   cv::Mat picture = left_bgr.clone();
-  for (const recognition::Blob& blob : result.left_blobs) {
-    cv::Mat mask(left_bgr.size(), CV_8U, cv::Scalar(0));
-    for (const recognition::PixelRun& run : blob.runs) {
-      mask.row(run.v).colRange(run.u_begin, run.u_end).setTo(255);
-    }
-    std::vector<std::vector<cv::Point>> contours;
-    cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
-    cv::drawContours(picture, contours, -1, cv::Scalar(160, 160, 160), 1);
-  }
-  for (const recognition::Detection& d : result.left_detections) {
-    if (d.blob_index < 0 || d.blob_index >= static_cast<int>(result.left_blobs.size())) continue;
-    const recognition::Blob& b = result.left_blobs[static_cast<std::size_t>(d.blob_index)];
-    cv::rectangle(picture, cv::Point(b.u_min, b.v_min), cv::Point(b.u_max, b.v_max),
-                  cv::Scalar(0, 220, 255), 1);
-  }
+  draw_blobs(picture, result.left_blobs, result.left_detections);
   const Eigen::Isometry3d left_T_ego = result.ego_T_left_camera.inverse();
   for (const recognition::GroundTruthObject& object : ground_truth) {
     cv::Point p;
@@ -55,6 +74,17 @@ bool write_frame_dump(const std::string& path, const cv::Mat& left_bgr,
     cv::drawMarker(picture, p, hit ? cv::Scalar(0, 200, 0) : cv::Scalar(0, 0, 255),
                    cv::MARKER_CROSS, 10, 2);
   }
+  try {
+    return cv::imwrite(path, picture);
+  } catch (const cv::Exception&) {
+    return false;
+  }
+}
+
+bool write_right_dump(const std::string& path, const cv::Mat& right_bgr,
+                      const recognition::FrameResult& result) {
+  cv::Mat picture = right_bgr.clone();
+  draw_blobs(picture, result.right_blobs, result.right_detections);
   try {
     return cv::imwrite(path, picture);
   } catch (const cv::Exception&) {

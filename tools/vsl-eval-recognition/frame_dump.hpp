@@ -23,4 +23,8 @@ bool write_frame_dump(const std::string& path, const cv::Mat& left_bgr,
                       const std::vector<recognition::GroundTruthObject>& ground_truth,
                       const std::vector<recognition::PerceptMatch>& matches);
 
+// The right image with its blobs and detections drawn as in the left one.
+bool write_right_dump(const std::string& path, const cv::Mat& right_bgr,
+                      const recognition::FrameResult& result);
+
 }  // namespace vsl::tools

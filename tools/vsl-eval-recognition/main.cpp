@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -250,6 +251,10 @@ int main(int argc, char** argv) {
         head::HeadKinematics::load(config.head_file, config.calibration_file);
     std::vector<std::unique_ptr<recognition::ClassRecognizer>> recognizers =
         recognition::load_recognizers(model_files);
+    std::vector<recognition::RecognizerFile> model_contents;  // for the --dump funnel
+    for (const std::string& file : model_files) {
+      model_contents.push_back(recognition::read_recognizer_file(file));
+    }
     tools::EvaluationTally tally;
     std::vector<std::string> types;
     for (const auto& recognizer : recognizers) {
@@ -287,6 +292,12 @@ int main(int argc, char** argv) {
           std::cerr << "vsl-eval-recognition: cannot write " << path << "\n";
           return 1;
         }
+        if (!tools::write_right_dump(path.substr(0, path.size() - 4) + "_right.png",
+                                     frame.right.image, result)) {
+          std::cerr << "vsl-eval-recognition: cannot write the right picture beside " << path
+                    << "\n";
+          return 1;
+        }
         // The image as the recognizer saw it, without the drawing, to inspect the segmentation.
         if (!cv::imwrite(path.substr(0, path.size() - 4) + "_raw.png", frame.left.image)) {
           std::cerr << "vsl-eval-recognition: cannot write the raw image beside " << path << "\n";
@@ -301,6 +312,101 @@ int main(int argc, char** argv) {
                << object.left_unoccluded_px << " " << object.right_visible_px << "/"
                << object.right_unoccluded_px << " " << (object.visible ? "yes" : "no") << "\n";
         }
+        // Where each ground-truth object was lost: per image, the blob holding most of its
+        // pixels (purity, coverage: labelling.hpp), whether a recognizer of its type detected that
+        // blob, and whether a percept matched the object.
+        text << "# funnel: object type | left: blob purity coverage detected | right: ... | "
+                "percept\n";
+        std::vector<char> object_matched(truth.size(), 0);
+        for (const recognition::PerceptMatch& m : matches) {
+          if (m.ground_truth >= 0) object_matched[static_cast<std::size_t>(m.ground_truth)] = 1;
+        }
+        for (std::size_t t = 0; t < truth.size(); ++t) {
+          const recognition::GroundTruthObject& object = truth[t];
+          if (!object.visible) continue;
+          text << "funnel " << world.objects[object.object_index].id << " " << object.type;
+          int left_best = -1;
+          for (int side = 0; side < 2; ++side) {
+            const auto& blobs = side == 0 ? result.left_blobs : result.right_blobs;
+            const auto& detections = side == 0 ? result.left_detections : result.right_detections;
+            const cv::Mat& ids = side == 0 ? frame.left.object_ids : frame.right.object_ids;
+            const int id = static_cast<int>(object.object_index);
+            int best = -1, best_on = 0, best_area = 0, total = 0;
+            for (int r = 0; r < ids.rows; ++r) {
+              const int* row = ids.ptr<int>(r);
+              for (int c = 0; c < ids.cols; ++c) total += row[c] == id;
+            }
+            for (std::size_t b = 0; b < blobs.size(); ++b) {
+              int on = 0;
+              for (const recognition::PixelRun& run : blobs[b].runs) {
+                const int* row = ids.ptr<int>(run.v);
+                for (int c = run.u_begin; c < run.u_end; ++c) on += row[c] == id;
+              }
+              if (on > best_on) {
+                best_on = on;
+                best = static_cast<int>(b);
+                best_area = static_cast<int>(blobs[b].area_px);
+              }
+            }
+            bool detected = false;
+            Eigen::Vector2d reference = Eigen::Vector2d::Zero();
+            std::vector<Eigen::Vector2d> corners;
+            for (const recognition::Detection& d : detections) {
+              if (d.blob_index == best && d.type == object.type) {
+                detected = true;
+                reference = d.reference_px;
+                corners = d.corners_px;
+              }
+            }
+            double d2 = -1.0;
+            for (const recognition::RecognizerFile& file : model_contents) {
+              if (best >= 0 && file.model.type() == object.type) {
+                d2 = file.model.mahalanobis2(
+                    recognition::descriptor_of(file, blobs[static_cast<std::size_t>(best)]));
+              }
+            }
+            if (side == 0) left_best = best;
+            text << " | " << best << " " << (best_area > 0 ? double(best_on) / best_area : 0.0)
+                 << " " << (total > 0 ? double(best_on) / total : 0.0) << " "
+                 << (detected ? "det" : "-") << " " << d2;
+            if (best >= 0) {
+              const recognition::Blob& blob = blobs[static_cast<std::size_t>(best)];
+              text << " @" << reference.x() << "," << reference.y() << " A" << blob.area_px << " bb"
+                   << blob.u_min << "," << blob.v_min << "," << blob.u_max << "," << blob.v_max
+                   << " q";
+              for (const Eigen::Vector2d& c : corners) text << c.x() << "," << c.y() << ";";
+              // The other object the blob lies on most, with its share of the blob.
+              std::map<int, int> others;
+              for (const recognition::PixelRun& run : blob.runs) {
+                const int* row = ids.ptr<int>(run.v);
+                for (int c = run.u_begin; c < run.u_end; ++c) {
+                  if (row[c] != id) ++others[row[c]];
+                }
+              }
+              int other = -2, other_px = 0;
+              for (const auto& [o, n] : others) {
+                if (n > other_px) {
+                  other = o;
+                  other_px = n;
+                }
+              }
+              text << " with "
+                   << (other >= 0 ? world.objects[static_cast<std::size_t>(other)].id
+                                  : std::string(other == -1 ? "nothing" : "-"))
+                   << " " << other_px / blob.area_px;
+            }
+          }
+          text << " | " << (object_matched[t] ? "percept" : "-");
+          // The percept made from the left blob, if any, and its distance from this object.
+          for (const recognition::FramePercept& p : result.percepts) {
+            const recognition::Detection& d =
+                result.left_detections[static_cast<std::size_t>(p.left_detection)];
+            if (d.type == object.type && d.blob_index == left_best) {
+              text << " " << (p.ego_position_m - object.ego_position_m).norm();
+            }
+          }
+          text << "\n";
+        }
         text << "# percept type left_px right_px distance_m matched_object error_m\n";
         for (std::size_t i = 0; i < result.percepts.size(); ++i) {
           const recognition::FramePercept& p = result.percepts[i];
@@ -311,7 +417,21 @@ int main(int argc, char** argv) {
             const auto& object = truth[static_cast<std::size_t>(matches[i].ground_truth)];
             text << world.objects[object.object_index].id << " " << matches[i].error_m << "\n";
           } else {
-            text << "- -\n";
+            text << "- -";
+            // What the false positive's left blob lies on (labelling.hpp).
+            const recognition::Detection& d =
+                result.left_detections[static_cast<std::size_t>(p.left_detection)];
+            const recognition::Blob& blob =
+                result.left_blobs[static_cast<std::size_t>(d.blob_index)];
+            const std::vector<int> visible =
+                recognition::object_pixel_counts(frame.left.object_ids, world.objects.size());
+            const recognition::BlobLabel label =
+                recognition::label_blob(blob, frame.left.object_ids, visible);
+            text << " on "
+                 << (label.object_index >= 0
+                         ? world.objects[static_cast<std::size_t>(label.object_index)].id
+                         : std::string("background"))
+                 << " purity " << label.purity << " coverage " << label.coverage << "\n";
           }
         }
       }

@@ -9,6 +9,7 @@
 #include "vsl/config/eigen.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/recognition/descriptors.hpp"
+#include "vsl/recognition/quadrilateral.hpp"
 
 namespace vsl::recognition {
 namespace {
@@ -20,6 +21,15 @@ int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
               "], got " + std::to_string(value));
   }
   return static_cast<int>(value);
+}
+
+// Of each side of a blob cut by the image border, at least this fraction must be outline.
+constexpr double kMinBorderSideSupport = 0.6;
+// The colour angle's index in the door descriptor (door_descriptor_names()).
+constexpr int kColourComponent = 6;
+
+double square(double x) {
+  return x * x;
 }
 
 }  // namespace
@@ -66,18 +76,35 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
   for (std::size_t i = 0; i < blobs.size(); ++i) {
     const Blob& blob = blobs[i];
     if (blob.empty() || blob.area_px < parameters_.min_blob_px) continue;
-    if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
-        blob.v_max >= bgr_image.rows - border) {
-      continue;
-    }
+    // A blob the image border cuts is judged only when its outline still shows all four sides
+    // (the border cut off a corner, which the sides' intersection restores).
+    // The squared Mahalanobis distance of the whole descriptor is at least that of its colour
+    // component alone (a marginal of the Gaussian): blobs of another colour (walls, floor,
+    // worktop) are refused before the descriptor's pass over their pixels.
+    const double colour_d2 =
+        square(colour_angle_rad(parameters_.ideal_colour_rgb, blob.mean_colour_rgb) -
+               model_.mean()(kColourComponent)) /
+        model_.covariance()(kColourComponent, kColourComponent);
+    if (!model_.accepts(colour_d2)) continue;
     const BlobAxes axes = blob_axes(blob);
     const double d2 =
         model_.mahalanobis2(door_descriptor(blob, axes, parameters_.ideal_colour_rgb));
     if (!model_.accepts(d2)) continue;
+    std::optional<BlobQuadrilateral> quad;
+    if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
+        blob.v_max >= bgr_image.rows - border) {
+      quad = fit_quadrilateral(blob, bgr_image.cols, bgr_image.rows);
+      if (!quad || quad->min_side_support < kMinBorderSideSupport) continue;
+    }
     Detection detection;
     detection.type = model_.type();
     detection.blob_index = static_cast<int>(i);
-    detection.reference_px = blob.centroid_px;
+    // The image of the door face's centre: where the diagonals of the outline's quadrilateral
+    // cross (quadrilateral.hpp); the centroid when the outline is no quadrilateral.
+    if (!quad) quad = fit_quadrilateral(blob);
+    detection.reference_px = quad ? quad->centre_px : blob.centroid_px;
+    detection.height_px = quad ? quad->vertical_side_px : double(blob.v_max - blob.v_min + 1);
+    if (quad) detection.corners_px.assign(quad->corners.begin(), quad->corners.end());
     detection.area_px = blob.area_px;
     detection.major_axis_angle_rad = major_axis_angle_rad(blob);
     detection.major_extent_px = axes.major_extent_px;

@@ -3,9 +3,11 @@
 #include "vsl/recognition/stereo_match.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "epipolar.hpp"
 #include "triangulation.hpp"
@@ -18,7 +20,21 @@ struct Candidate {
   int left = -1;
   int right = -1;
   double cost = 0.0;  // normalized: sum of (gate quantity / its limit)^2, each term <= 1
+  // True when the pair is two rectangle outlines whose centre comes from their vertical sides
+  // (Triangulator::rectangle_centre); false when from the reference points.
+  bool rectangle = false;
 };
+
+// The epipolar gate of two rectangle outlines' centres: this fraction of their height (pixels),
+// when more than StereoMatchOptions::max_epipolar_distance_px.
+constexpr double kRectangleCentreFraction = 0.05;
+
+// Undistorted corners of a detection's outline (empty unless it has four).
+std::vector<detail::IdealPixel> undistorted_corners(const Detection& d,
+                                                    const head::CameraIntrinsics& intrinsics) {
+  if (d.corners_px.size() != 4) return {};
+  return detail::undistort(d.corners_px, intrinsics);
+}
 
 // Leaving a left detection unmatched costs more than any set of admissible pairs can, so that the
 // assignment first maximizes the number of matches, then minimizes their total cost.
@@ -49,6 +65,14 @@ double reference_depth_offset(const StereoMatchOptions& options, const std::stri
 const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& options,
                                                     const std::string& type) {
   for (const StereoMatchOptions::ExtentRange& range : options.major_extent_range_m) {
+    if (range.type == type) return &range;
+  }
+  return nullptr;
+}
+
+const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
+                                                    const std::string& type) {
+  for (const StereoMatchOptions::ExtentRange& range : options.height_range_m) {
     if (range.type == type) return &range;
   }
   return nullptr;
@@ -193,6 +217,16 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
       detail::undistort(right_raw, right_intrinsics);
   const detail::EpipolarGeometry epipolar(left_intrinsics, right_intrinsics, left_T_right);
   const detail::Triangulator triangulator(left_intrinsics, right_intrinsics, left_T_right);
+  std::vector<std::vector<detail::IdealPixel>> left_corners, right_corners;
+  for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
+  for (const Detection& d : right) {
+    right_corners.push_back(undistorted_corners(d, right_intrinsics));
+  }
+  const auto corner_array = [](const std::vector<detail::IdealPixel>& corners) {
+    std::array<Eigen::Vector2d, 4> out;
+    for (int k = 0; k < 4; ++k) out[k] = corners[k].ideal_px;
+    return out;
+  };
 
   const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
   std::vector<Candidate> candidates;
@@ -201,10 +235,25 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
     for (int r = 0; r < static_cast<int>(right.size()); ++r) {
       const Detection& dr = right[r];
       if (dl.type != dr.type) continue;
-      // Position: the right reference point on (near) the left one's epipolar line.
+      // Position: the right reference point on (near) the left one's epipolar line. For two
+      // rectangle outlines the centres (where the diagonals cross) may differ by a few per cent of
+      // the outline's height when segmentation adds a strip along the top or the bottom in one
+      // image only: the gate widens to kRectangleCentreFraction of the height.
+      const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
       const double epipolar_px =
           epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
-      if (!(epipolar_px <= options.max_epipolar_distance_px)) continue;
+      const double max_epipolar_px =
+          rectangles ? std::max(options.max_epipolar_distance_px,
+                                kRectangleCentreFraction * 0.5 * (dl.height_px + dr.height_px))
+                     : options.max_epipolar_distance_px;
+      if (!(epipolar_px <= max_epipolar_px)) continue;
+      std::optional<Eigen::Vector3d> point;
+      bool rectangle = false;
+      if (rectangles) {
+        point = triangulator.rectangle_centre(corner_array(left_corners[l]),
+                                              corner_array(right_corners[r]));
+        rectangle = point.has_value();
+      }
       // Size: both cameras are about equally far from the object, so the areas agree.
       double area_term = 0.0;
       if (dl.area_px > 0.0 && dr.area_px > 0.0) {
@@ -223,7 +272,7 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
       }
       // Disparity range, as the depth of the triangulated point along the left optical axis
       // (verging eyes make disparity alone depend on where the point is in the image).
-      const auto point = triangulator.point(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
+      if (!point) point = triangulator.point(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
       if (!point || point->z() < options.min_depth_m || point->z() > options.max_depth_m) continue;
       // Size at that depth: a fronto-parallel length L spans f L / z pixels.
       const auto* range = extent_range(options, dl.type);
@@ -232,21 +281,40 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
                                 (0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px));
         if (length_m < range->min_m || length_m > range->max_m) continue;
       }
-      const double epipolar_term = options.max_epipolar_distance_px > 0.0
-                                       ? epipolar_px / options.max_epipolar_distance_px
-                                       : 0.0;
+      // Height at that depth: the image length of the vertical edges in metres.
+      const auto* height = height_range(options, dl.type);
+      if (height && dl.height_px > 0.0 && dr.height_px > 0.0) {
+        const double height_m = 0.5 * (dl.height_px + dr.height_px) * point->z() /
+                                (0.5 * (left_intrinsics.fy_px + right_intrinsics.fy_px));
+        if (height_m < height->min_m || height_m > height->max_m) continue;
+      }
+      const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
       candidates.push_back({l, r,
                             epipolar_term * epipolar_term + area_term * area_term +
-                                orientation_term * orientation_term});
+                                orientation_term * orientation_term,
+                            rectangle});
     }
   }
 
   std::vector<StereoPercept> out;
   for (const Candidate& c :
        assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()))) {
-    const auto triangulation =
-        triangulator.triangulate(left_ideal[c.left], right_ideal[c.right], options.pixel_sigma_px,
-                                 reference_depth_offset(options, left[c.left].type));
+    const double offset = reference_depth_offset(options, left[c.left].type);
+    std::optional<detail::Triangulation> triangulation;
+    if (!c.rectangle) {
+      triangulation = triangulator.triangulate(left_ideal[c.left], right_ideal[c.right],
+                                               options.pixel_sigma_px, offset);
+    } else {
+      // The rectangle's centre from its vertical sides (Triangulator::rectangle_centre), with
+      // the covariance the pixel noise gives the centre triangulated from the reference points.
+      triangulation = triangulator.triangulate(left_ideal[c.left], right_ideal[c.right],
+                                               options.pixel_sigma_px, offset);
+      const auto centre = triangulator.rectangle_centre(corner_array(left_corners[c.left]),
+                                                        corner_array(right_corners[c.right]));
+      if (triangulation && centre) {
+        triangulation->left_camera_position_m = *centre + offset * centre->normalized();
+      }
+    }
     if (!triangulation) continue;
     StereoPercept percept;
     percept.left_detection = c.left;

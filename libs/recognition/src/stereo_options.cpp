@@ -15,7 +15,8 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   section.expect_map();
   section.expect_keys({"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
                        "max_orientation_difference_rad", "min_elongation_for_orientation",
-                       "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m"});
+                       "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m",
+                       "height_range_m"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -46,7 +47,11 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       out.reference_depth_offset_m.emplace_back(type, offsets->at(type).as_double_in(-1.0, 1.0));
     }
   }
-  if (const auto ranges = section.find("major_extent_range_m")) {
+  for (const char* key : {"major_extent_range_m", "height_range_m"}) {
+    const auto ranges = section.find(key);
+    if (!ranges) continue;
+    auto& list =
+        std::string(key) == "height_range_m" ? out.height_range_m : out.major_extent_range_m;
     ranges->expect_map();
     for (const std::string& type : ranges->keys()) {
       const config::Node range = ranges->at(type);
@@ -54,7 +59,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       if (!(bounds[0] >= 0.0 && bounds[0] < bounds[1] && bounds[1] <= 1000.0)) {
         range.fail("expected [min_m, max_m] with 0 <= min_m < max_m <= 1000");
       }
-      out.major_extent_range_m.push_back({type, bounds[0], bounds[1]});
+      list.push_back({type, bounds[0], bounds[1]});
     }
   }
   return out;

@@ -17,6 +17,38 @@ Triangulator::Triangulator(const head::CameraIntrinsics& left, const head::Camer
       right_k_inverse_in_left_(left_T_right.linear() * camera_matrix(right).inverse()),
       right_centre_m_(left_T_right.translation()) {}
 
+std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
+    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right) const {
+  // The two sides nearer the vertical: (0, 3) and (1, 2), or (0, 1) and (3, 2).
+  const auto verticality = [](const std::array<Eigen::Vector2d, 4>& c, int i, int j) {
+    const Eigen::Vector2d d = c[j] - c[i];
+    const double n = d.norm();
+    return n > 0.0 ? std::abs(d.y()) / n : 0.0;
+  };
+  std::array<std::array<int, 2>, 2> sides{{{0, 3}, {1, 2}}};
+  if (verticality(left, 0, 1) + verticality(left, 3, 2) >
+      verticality(left, 0, 3) + verticality(left, 1, 2)) {
+    sides = {{{0, 1}, {3, 2}}};
+  }
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& [i, j] : sides) {
+    if (verticality(left, i, j) < std::sqrt(0.5) || verticality(right, i, j) < std::sqrt(0.5)) {
+      return std::nullopt;
+    }
+    const Eigen::Vector3d n = (right_k_inverse_in_left_ * right[i].homogeneous())
+                                  .cross(right_k_inverse_in_left_ * right[j].homogeneous());
+    for (const int k : {i, j}) {
+      const Eigen::Vector3d a = left_k_inverse_ * left[k].homogeneous();
+      const double na = n.dot(a);
+      if (!(std::abs(na) > 1e-3 * n.norm() * a.norm())) return std::nullopt;
+      const double s = n.dot(right_centre_m_) / na;
+      if (!(s > 0.0)) return std::nullopt;
+      sum += s * a;
+    }
+  }
+  return Eigen::Vector3d(sum / 4.0);
+}
+
 std::optional<Eigen::Vector3d> Triangulator::midpoint(const Eigen::Vector2d& left_ideal_px,
                                                       const Eigen::Vector2d& right_ideal_px,
                                                       double& s, double& w) const {

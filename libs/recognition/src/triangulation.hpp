@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <optional>
 
 #include "epipolar.hpp"
@@ -40,6 +41,21 @@ class Triangulator {
   // front of both cameras.
   std::optional<Eigen::Vector3d> point(const Eigen::Vector2d& left_ideal_px,
                                        const Eigen::Vector2d& right_ideal_px) const;
+
+  // The centre of a rectangle (a door's front face) from its outline in both images: corners
+  // clockwise from the top left (ideal pixels; corner k of one image is corner k of the other).
+  // Each of the two sides nearer the image vertical, seen by the right camera, spans a plane
+  // through the right camera centre; the left camera's rays through that side's two corners
+  // meet it at the side's ends in 3D, and the mean of the four ends is the rectangle's centre.
+  // Only the horizontal position of the vertical sides is compared between the images (what
+  // stereo measures well, as the epipolar lines run across them); where a side ends is taken
+  // from the left image alone, so a strip of the face that segmentation adds at the top or the
+  // bottom in one image only does not move the centre. nullopt when a side is nearer the
+  // horizontal than the vertical in either image, a ray runs (within 1e-3 rad) in its plane,
+  // or an end is not in front of the cameras.
+  std::optional<Eigen::Vector3d> rectangle_centre(
+      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
+      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
 
   // The midpoint with its covariance, then moved `reference_depth_offset_m` further along the
   // left viewing ray (the class's reference point lies behind the visible surface).

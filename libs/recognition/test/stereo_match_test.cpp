@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/calib3d.hpp>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -81,6 +82,66 @@ TEST_F(StereoMatchTest, EpipolarGateRejectsOffLineAndAcceptsOnIt) {
   Detection along = p.right;
   along.reference_px.x() += 5.0;
   EXPECT_EQ(match({p.left}, {along}).size(), 1u);
+}
+
+// A door's front face 0.5 x 0.7 m, turned 40 deg about the vertical, its centre at `centre_m`:
+// both outlines with corners clockwise from the top left.
+Pair door_pair(const Eigen::Vector3d& centre_m, const head::StereoCalibration& calibration,
+               const Eigen::Isometry3d& left_T_right) {
+  const Eigen::Vector3d across(std::cos(0.7), 0.0, std::sin(0.7));  // x right, z forward
+  const Eigen::Vector3d down(0.0, 1.0, 0.0);
+  const std::array<Eigen::Vector3d, 4> corners{
+      centre_m - 0.25 * across - 0.35 * down, centre_m + 0.25 * across - 0.35 * down,
+      centre_m + 0.25 * across + 0.35 * down, centre_m - 0.25 * across + 0.35 * down};
+  Pair p;
+  for (Detection* d : {&p.left, &p.right}) {
+    const bool left = d == &p.left;
+    const Eigen::Isometry3d pose = left ? Eigen::Isometry3d::Identity() : left_T_right;
+    const head::CameraIntrinsics& camera = left ? calibration.left : calibration.right;
+    *d = detection("door", project(centre_m, camera, pose), 9000.0, M_PI / 2);
+    for (const Eigen::Vector3d& c : corners) d->corners_px.push_back(project(c, camera, pose));
+    d->height_px = 0.5 * ((d->corners_px[3] - d->corners_px[0]).norm() +
+                          (d->corners_px[2] - d->corners_px[1]).norm());
+  }
+  return p;
+}
+
+TEST_F(StereoMatchTest, RectangleCentreFromTheVerticalSides) {
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const Pair p = door_pair(centre, calibration_, left_T_right_);
+  const auto exact = match({p.left}, {p.right});
+  ASSERT_EQ(exact.size(), 1u);
+  EXPECT_LT((exact[0].left_camera_position_m - centre).norm(), 1e-3);
+  // Segmentation adds a 6 px strip along the bottom of the right outline only: its reference
+  // point moves down 3 px (past the 3 px gate, within 5% of the height) and its bottom corners
+  // 6 px. The centre from the vertical sides' disparity and the left image's corners stays.
+  Detection strip = p.right;
+  strip.reference_px.y() += 3.5;
+  strip.corners_px[2].y() += 6.0;
+  strip.corners_px[3].y() += 6.0;
+  const auto moved = match({p.left}, {strip});
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_LT((moved[0].left_camera_position_m - centre).norm(), 0.01);
+  // The same shift from the reference points alone is a depth error of decimetres.
+  Detection shifted = p.right;
+  shifted.corners_px.clear();
+  Detection left_only = p.left;
+  left_only.corners_px.clear();
+  left_only.reference_px.x() += 1.5;  // what a strip along one side does to a centroid
+  const auto from_points = match({left_only}, {shifted});
+  ASSERT_EQ(from_points.size(), 1u);
+  EXPECT_GT((from_points[0].left_camera_position_m - centre).norm(), 0.1);
+}
+
+TEST_F(StereoMatchTest, HeightRangeGate) {
+  const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_);
+  options_.height_range_m.push_back({"door", 0.5, 2.5});
+  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);  // 0.7 m tall
+  options_.height_range_m.back().min_m = 0.8;
+  EXPECT_TRUE(match({p.left}, {p.right}).empty());
+  // Not checked for other classes, nor without a height.
+  options_.height_range_m.back().type = "window";
+  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
 }
 
 TEST_F(StereoMatchTest, DisparityRangeAsDepth) {
@@ -231,6 +292,7 @@ stereo:
   pixel_sigma_px: 0.5
   reference_depth_offset_m: {door: 0.0095, handle: 0.006}
   major_extent_range_m: {handle: [0.12, 0.25]}
+  height_range_m: {door: [0.5, 2.5]}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -248,6 +310,10 @@ stereo:
   EXPECT_EQ(o.major_extent_range_m[0].type, "handle");
   EXPECT_EQ(o.major_extent_range_m[0].min_m, 0.12);
   EXPECT_EQ(o.major_extent_range_m[0].max_m, 0.25);
+  ASSERT_EQ(o.height_range_m.size(), 1u);
+  EXPECT_EQ(o.height_range_m[0].type, "door");
+  EXPECT_EQ(o.height_range_m[0].min_m, 0.5);
+  EXPECT_EQ(o.height_range_m[0].max_m, 2.5);
 }
 
 std::string stereo_error(const std::string& body) {

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <vector>
 
 namespace vsl::recognition {
 
@@ -18,6 +19,15 @@ struct Detection {
   double major_axis_angle_rad = 0.0;  // angle of the major axis from the +u axis, in [0, pi)
   double major_extent_px = 0.0;       // length of the blob along its major axis
   double minor_extent_px = 0.0;       // and along its minor axis
+  // Image length of the object's vertical edges (doors: the outline's sides nearest the image
+  // vertical, quadrilateral.hpp), pixels; 0 when the recognizer does not measure it. With the
+  // depth, the stereo match turns it into metres (StereoMatchOptions::height_range_m).
+  double height_px = 0.0;
+  // The corners of the object's outline when it is a rectangle seen as a quadrilateral (doors,
+  // quadrilateral.hpp: clockwise from the top left), raw pixels; empty otherwise. The stereo
+  // match triangulates the centre of a rectangle from a diagonal whose two ends agree in both
+  // images (StereoMatchOptions), not from the reference point alone.
+  std::vector<Eigen::Vector2d> corners_px;
   // Squared Mahalanobis distance of the blob's descriptor to the class model (unitless), and
   // the confidence derived from it: the chi-square survival probability, 0 .. 1.
   double mahalanobis2 = 0.0;

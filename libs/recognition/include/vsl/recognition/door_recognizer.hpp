@@ -23,7 +23,9 @@ struct DoorRecognizerParameters {
   // Smaller blobs are not judged: at 4 m a 0.3 x 0.7 m door seen at 60 deg is about 20 x 95 px.
   int min_blob_px = 300;
   // Blobs with a pixel closer than this to the image border are cut off by it: their shape (and
-  // centroid, the reference point) is not the door's. 0 disables the check.
+  // centroid) is not the door's. They are judged only when the fitted outline (quadrilateral.hpp)
+  // still shows each of the four sides along at least 60% of its length (the border cut off a
+  // corner, which the sides' intersection restores). 0 disables the check.
   int min_border_distance_px = 1;
 };
 

@@ -45,6 +45,11 @@ struct StereoMatchOptions {
     double max_m = 0.0;
   };
   std::vector<ExtentRange> major_extent_range_m;
+  // Optional, per class: the range of the object's height (the physical length of its vertical
+  // edges, Detection::height_px at the triangulated depth), metres. A door is taller than a
+  // drawer front of the same colour and of any width, and a camera turning about the vertical
+  // does not foreshorten it. Classes not listed, and detections without a height, are not checked.
+  std::vector<ExtentRange> height_range_m;
 };
 
 // Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
