@@ -395,8 +395,9 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     for (const NodeAssociation& a : validated.front().explanation.associations) {
       points.push_back(context.correspondence(a.percept, a.node));
     }
-    const RefinedPose refined =
-        refine_pose(validated.front().world_T_ego, points, options.refinement);
+    RefinedPose refined = refine_pose(validated.front().world_T_ego, points, options.refinement);
+    // Reported (and checked against required_position_m below) as the residuals support it.
+    scale_covariance_by_residuals(refined, points.size(), options.refinement.planar_prior);
     if (refined.world_T_ego.matrix().allFinite()) {
       result.world_T_ego = refined.world_T_ego;
       result.hypotheses.front().world_T_ego = refined.world_T_ego;

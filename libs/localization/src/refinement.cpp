@@ -315,4 +315,14 @@ RefinedPose refine_pose(const Eigen::Isometry3d& initial,
                               : refine_full(initial, points, options, loss);
 }
 
+double scale_covariance_by_residuals(RefinedPose& refined, std::size_t correspondences,
+                                     bool planar_prior) {
+  const double parameters = planar_prior ? 4.0 : 6.0;
+  const double dof = 3.0 * static_cast<double>(correspondences) - parameters;
+  if (dof <= 0.0 || !std::isfinite(refined.final_cost)) return 1.0;
+  const double scale = std::max(1.0, 2.0 * refined.final_cost / dof);
+  refined.covariance *= scale;
+  return scale;
+}
+
 }  // namespace vsl::localization

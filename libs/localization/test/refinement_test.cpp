@@ -707,5 +707,49 @@ TEST(RefinePose, ConcurrentCallsGiveTheSameResultsAsSequentialOnes) {
   }
 }
 
+// Percepts scattered three times as far as their covariances say: the fit's chi^2 per degree of
+// freedom is about 9, and the scaled covariance then matches the estimates' real spread. With
+// the covariances right the scale stays near 1 and is never below it.
+TEST(ScaleCovarianceByResiduals, InflatesByTheReducedChiSquareNeverShrinks) {
+  std::mt19937 rng(15);
+  const int n = 8;
+  const Scene scene = kitchen_scene(rng, n);
+  const Eigen::Isometry3d truth = upright_pose(3.0, 1.0, 0.7);
+  RefinementOptions options;
+  options.planar_prior = true;
+  options.huber_sigmas = 0.0;  // plain least squares: chi^2 is exact
+  Scene wide = scene;
+  for (Eigen::Matrix3d& c : wide.ego_covariance_m2) c *= 9.0;  // the real scatter: 3 sigma
+  double mean_scale = 0.0, mean_right_scale = 0.0, min_right_scale = 1e9;
+  PoseCovariance empirical = PoseCovariance::Zero(), predicted = PoseCovariance::Zero();
+  const int trials = 400;
+  for (int trial = 0; trial < trials; ++trial) {
+    std::vector<PointCorrespondence> points = observe(wide, truth, &rng);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      points[i].ego_covariance_m2 = scene.ego_covariance_m2[i];  // what the percepts claim
+    }
+    RefinedPose refined = refine_pose(truth, points, options);
+    ASSERT_TRUE(refined.covariance_valid);
+    mean_scale += scale_covariance_by_residuals(refined, points.size(), true) / trials;
+    const Vector6 e = pose_error(refined.world_T_ego, truth);
+    empirical += e * e.transpose() / trials;
+    predicted += refined.covariance / trials;
+
+    RefinedPose right = refine_pose(truth, observe(scene, truth, &rng), options);
+    const double s = scale_covariance_by_residuals(right, scene.ego_truth_m.size(), true);
+    mean_right_scale += s / trials;
+    min_right_scale = std::min(min_right_scale, s);
+  }
+  EXPECT_NEAR(mean_scale, 9.0, 1.5);
+  for (const int k : {0, 1, 2, 5}) {
+    EXPECT_NEAR(empirical(k, k) / predicted(k, k), 1.0, 0.3) << "axis " << k;
+  }
+  EXPECT_GE(min_right_scale, 1.0);
+  EXPECT_LT(mean_right_scale, 1.5);
+  RefinedPose two;
+  two.final_cost = 100.0;
+  EXPECT_EQ(scale_covariance_by_residuals(two, 1, true), 1.0);  // no degree of freedom
+}
+
 }  // namespace
 }  // namespace vsl::localization

@@ -54,4 +54,19 @@ RefinedPose refine_pose(const Eigen::Isometry3d& initial,
                         const std::vector<PointCorrespondence>& points,
                         const RefinementOptions& options = {});
 
+// The refined covariance is absolute under the percepts' own covariances. A fused percept's
+// covariance carries only what the pixel noise and the scatter of its frames show
+// (docs/fusion.md); errors all its frames share (calibration, ego-mapping, the recognizer's
+// reference point, the model's accuracy) show in the residuals of the fit instead. When those
+// scatter more than the covariances say, the covariance of the pose is scaled by the reduced
+// chi-square of the fit (the Birge ratio), never shrunk:
+//
+//   s = max(1, chi^2 / (3n - p)),   chi^2 = 2 * final_cost,   p = 4 (planar prior) or 6,
+//
+// n the number of correspondences; with no degree of freedom left (3n <= p) s = 1. Under a
+// correct noise model E[chi^2] = 3n - p and s stays near 1. (With the robust loss, final_cost
+// counts an outlier's residual linearly, so s is then a lower bound.) Returns s.
+double scale_covariance_by_residuals(RefinedPose& refined, std::size_t correspondences,
+                                     bool planar_prior);
+
 }  // namespace vsl::localization
