@@ -149,7 +149,11 @@ void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int l
       right_area += right.back().u_end - right.back().u_begin;
     }
   }
-  if (left_area < options.min_blob_px || right_area < options.min_blob_px) {
+  // Each piece a front of its own: not a strip such as a shaker door's stile, which the groove
+  // between the stile and the recessed panel (a slit too) would cut off.
+  if (left_area < options.min_blob_px || right_area < options.min_blob_px ||
+      static_cast<double>(std::min(left_area, right_area)) <
+          options.min_split_piece_fraction * static_cast<double>(area)) {
     out.push_back(std::move(runs));
     return;
   }

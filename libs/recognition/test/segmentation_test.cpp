@@ -145,7 +145,7 @@ TEST(SegmentationOptions, ReadsEveryKey) {
       "  colour_bandwidth_rgb: 0.1\n  max_mean_shift_iterations: 7\n  "
       "max_mode_distance: 0.4\n"
       "  min_blob_px: 9\n  min_split_blob_px: 800\n  max_slit_width_px: 3\n"
-      "  min_slit_support: 0.6\n");
+      "  min_slit_support: 0.6\n  min_split_piece_fraction: 0.3\n");
   EXPECT_DOUBLE_EQ(options.max_neighbour_difference_rgb, 0.05);
   EXPECT_DOUBLE_EQ(options.max_colour_volume_rgb3, 1e-3);
   EXPECT_EQ(options.line_bridge_px, 3);
@@ -162,6 +162,7 @@ TEST(SegmentationOptions, ReadsEveryKey) {
   EXPECT_EQ(options.min_split_blob_px, 800);
   EXPECT_EQ(options.max_slit_width_px, 3);
   EXPECT_DOUBLE_EQ(options.min_slit_support, 0.6);
+  EXPECT_DOUBLE_EQ(options.min_split_piece_fraction, 0.3);
   // Every key is optional.
   const SegmentationOptions defaults = options_from("segmentation: {}\n");
   EXPECT_EQ(defaults.max_region_px, SegmentationOptions{}.max_region_px);
@@ -251,6 +252,13 @@ TEST(SlitSplit, ADoorWithAHandleHoleOrANotchIsNotSplit) {
   SegmentationOptions off;
   off.min_split_blob_px = 0;
   EXPECT_EQ(split_at_slits(pair, off).size(), 1u);
+  // A shaker door: the groove around its recessed panel runs 10 px inside each edge over the
+  // panel's height. Cutting a stile off is no split into two fronts.
+  const auto shaker = runs_where(0, 80, 0, 160, [](int u, int v) {
+    const bool groove = (u == 10 || u == 69) && v >= 10 && v < 150;
+    return !groove;
+  });
+  EXPECT_EQ(split_at_slits(shaker, SegmentationOptions{}).size(), 1u);
   // A horizontal slit (a drawer stack) is not a near-vertical line.
   const auto stack =
       runs_where(0, 120, 0, 80, [](int u, int v) { return !(v == 40 && u >= 10 && u < 110); });
