@@ -34,7 +34,9 @@ std::vector<recognition::PerceptMatch> tally_frame(
       recognition::match_percepts(percepts, ground_truth, max_error_m);
   for (ClassTally& c : tally.classes) {
     for (const recognition::GroundTruthObject& object : ground_truth) {
-      if (object.visible && object.type == c.type) ++c.ground_truth;
+      if (!object.visible || object.type != c.type) continue;
+      ++c.ground_truth;
+      if (recognition::whole_in_both_images(object)) ++c.ground_truth_whole;
     }
     for (std::size_t i = 0; i < percepts.size(); ++i) {
       if (percepts[i].type != c.type) continue;
@@ -47,6 +49,7 @@ std::vector<recognition::PerceptMatch> tally_frame(
       if (matches[i].ground_truth >= 0) {
         ++c.true_positives;
         const auto& object = ground_truth[static_cast<std::size_t>(matches[i].ground_truth)];
+        if (recognition::whole_in_both_images(object)) ++c.true_positives_whole;
         c.errors_m[static_cast<std::size_t>(distance_band(object.distance_m))].push_back(
             matches[i].error_m);
         continue;

@@ -24,6 +24,10 @@ struct ClassTally {
   int percepts = 0;      // every percept of the type within range (see tally_frame)
   int out_of_range = 0;  // percepts farther away: outside the evaluated range, not counted
   int true_positives = 0;
+  // The same over the ground-truth objects whose whole outline lies inside both images
+  // (recognition::whole_in_both_images: not cut by the image border).
+  int ground_truth_whole = 0;
+  int true_positives_whole = 0;
   // False positives within the match distance of a real object of the type that is not in the
   // ground truth (farther than the limit, or less than half visible): not wrong, just not counted.
   int false_positives_on_other_objects = 0;
@@ -31,6 +35,9 @@ struct ClassTally {
 
   double precision() const { return percepts == 0 ? 1.0 : double(true_positives) / percepts; }
   double recall() const { return ground_truth == 0 ? 1.0 : double(true_positives) / ground_truth; }
+  double recall_whole() const {
+    return ground_truth_whole == 0 ? 1.0 : double(true_positives_whole) / ground_truth_whole;
+  }
 };
 
 struct EvaluationTally {

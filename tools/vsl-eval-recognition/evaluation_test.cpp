@@ -47,7 +47,7 @@ TEST(RecognitionEvaluation, TalliesPrecisionRecallErrorsAndRange) {
                      percept({6.0, 0.0, 1.0}),    // beyond range: not counted
                      percept({0.5, 0.5, 1.0})};   // on nothing
   EvaluationTally tally;
-  tally.classes.push_back(ClassTally{"door", 0, 0, 0, 0, 0, {}});
+  tally.classes.emplace_back().type = "door";
   const auto matches = tally_frame(truth, result, 12.0, 4.0, 0.1, tally);
   ASSERT_EQ(matches.size(), 4u);
   EXPECT_EQ(matches[0].ground_truth, 0);
@@ -63,6 +63,36 @@ TEST(RecognitionEvaluation, TalliesPrecisionRecallErrorsAndRange) {
   EXPECT_NEAR(c.errors_m[2][0], 0.02, 1e-12);
   EXPECT_EQ(tally.frames, 1);
   EXPECT_EQ(tally.frame_ms, std::vector<double>{12.0});
+}
+
+TEST(RecognitionEvaluation, RecallOverObjectsWhollyInsideBothImages) {
+  std::vector<recognition::GroundTruthObject> truth(2);
+  for (auto& t : truth) {
+    t.type = "door";
+    t.visible = true;
+    t.distance_m = 2.0;
+    t.left_unoccluded_px = t.right_unoccluded_px = 1000;
+    t.left_in_image_px = t.right_in_image_px = 1000;
+  }
+  truth[0].ego_position_m = {2.0, 0.0, 1.0};
+  truth[1].ego_position_m = {2.0, 1.0, 1.0};
+  truth[1].right_in_image_px = 700;  // the right image's border cuts it
+  recognition::FrameResult result;
+  recognition::FramePercept p;
+  p.type = "door";
+  p.confidence = 0.5f;
+  p.ego_position_m = {2.0, 1.0, 1.0};  // finds only the cut door
+  result.percepts = {p};
+  EvaluationTally tally;
+  tally.classes.emplace_back().type = "door";
+  tally_frame(truth, result, 1.0, 4.0, 0.1, tally);
+  const ClassTally& c = tally.classes[0];
+  EXPECT_EQ(c.ground_truth, 2);
+  EXPECT_EQ(c.ground_truth_whole, 1);
+  EXPECT_EQ(c.true_positives, 1);
+  EXPECT_EQ(c.true_positives_whole, 0);
+  EXPECT_DOUBLE_EQ(c.recall(), 0.5);
+  EXPECT_DOUBLE_EQ(c.recall_whole(), 0.0);
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ constexpr const char* kUsage =
 Evaluates recognition (docs/recognition.md): renders noisy stereo frames from seeded robot poses in
 the world (the head looking at the cupboards), runs the recognition pipeline with the settings of
 the recognition config, and prints per class the precision (over every percept within range) and the recall
-(over the objects within 4 m of the left camera and at least half visible in both images), the 3D
+(over the objects within 4 m of the left camera and at least half visible in both images; beside it
+the recall over those whose whole outline lies inside both images, not cut by the border), the 3D
 error of the matched percepts (within 10 cm of their object's reference point) by distance band,
 and the time per stereo pair.
   --world FILE          world model, e.g. config/worlds/kitchen_galley.yaml
@@ -156,15 +157,19 @@ void print_table(const Options& options, const tools::EvaluationTally& tally) {
       "visible in both images\n",
       options.world_file.c_str(), tally.frames, static_cast<unsigned long long>(options.seed),
       options.max_distance_m);
-  std::printf("%-8s %8s %8s %8s %8s %10s %8s %10s %10s\n", "class", "objects", "percepts", "true+",
-              "false+", "precision", "recall", "false+ on", "beyond");
-  std::printf("%-8s %8s %8s %8s %8s %10s %8s %10s %10s\n", "", "", "", "", "", "", "", "non-truth",
-              "range");
+  std::printf("%-8s %8s %8s %8s %8s %10s %8s %14s %10s %10s\n", "class", "objects", "percepts",
+              "true+", "false+", "precision", "recall", "recall whole", "false+ on", "beyond");
+  std::printf("%-8s %8s %8s %8s %8s %10s %8s %14s %10s %10s\n", "", "", "", "", "", "", "",
+              "(objects)", "non-truth", "range");
   for (const tools::ClassTally& c : tally.classes) {
-    std::printf("%-8s %8d %8d %8d %8d %9.1f%% %7.1f%% %10d %10d\n", c.type.c_str(), c.ground_truth,
-                c.percepts, c.true_positives, c.percepts - c.true_positives, 100.0 * c.precision(),
-                100.0 * c.recall(), c.false_positives_on_other_objects, c.out_of_range);
+    std::printf("%-8s %8d %8d %8d %8d %9.1f%% %7.1f%% %7.1f%% %5d %10d %10d\n", c.type.c_str(),
+                c.ground_truth, c.percepts, c.true_positives, c.percepts - c.true_positives,
+                100.0 * c.precision(), 100.0 * c.recall(), 100.0 * c.recall_whole(),
+                c.ground_truth_whole, c.false_positives_on_other_objects, c.out_of_range);
   }
+  std::printf(
+      "(recall whole: over the ground-truth objects whose whole outline lies inside both images, "
+      "not cut by the image border)\n");
   std::printf(
       "(false+ on non-truth: false positives within the match distance of a real object of "
       "the type that is not ground truth, i.e. less than half visible; beyond range: "
@@ -212,6 +217,9 @@ void write_json(std::ostream& out, const Options& options, const tools::Evaluati
     json.key("percepts_beyond_range").number(c.out_of_range);
     json.key("precision").number(c.precision());
     json.key("recall").number(c.recall());
+    json.key("ground_truth_objects_whole_in_both_images").number(c.ground_truth_whole);
+    json.key("true_positives_whole_in_both_images").number(c.true_positives_whole);
+    json.key("recall_whole_in_both_images").number(c.recall_whole());
     json.key("error_by_distance_band").begin_array();
     for (int b = 0; b < tools::kDistanceBands; ++b) {
       const auto& errors = c.errors_m[static_cast<std::size_t>(b)];
@@ -259,7 +267,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> types;
     for (const auto& recognizer : recognizers) {
       types.push_back(recognizer->type());
-      tally.classes.push_back(tools::ClassTally{recognizer->type(), 0, 0, 0, 0, 0, {}});
+      tally.classes.emplace_back().type = recognizer->type();
     }
     const recognition::FrameRecognizer recognizer(config.options, head, std::move(recognizers));
     const render::Renderer renderer(world, tools::simulated_camera_options());

@@ -119,7 +119,10 @@ GroundTruthRenderer::GroundTruthRenderer(const world::WorldModel& world,
                                          const head::HeadKinematics& head,
                                          std::vector<std::string> evaluated_types,
                                          std::vector<std::string> recognizable_types, int margin_px)
-    : world_(world), head_(head), evaluated_types_(std::move(evaluated_types)) {
+    : world_(world),
+      head_(head),
+      evaluated_types_(std::move(evaluated_types)),
+      margin_px_(margin_px) {
   world::WorldModel recognizable;
   recognizable.name = world.name + " (recognizable objects only)";
   recognizable.materials = world.materials;
@@ -156,6 +159,16 @@ std::vector<recognition::GroundTruthObject> GroundTruthRenderer::objects(
   const std::vector<int> free_right_px =
       recognition::object_pixel_counts(free_right.object_ids, unoccluded_to_world_.size());
 
+  // The same counts inside the image: the wide renderings' central window.
+  const cv::Rect left_window(margin_px_, margin_px_, head_.calibration().left.width_px,
+                             head_.calibration().left.height_px);
+  const cv::Rect right_window(margin_px_, margin_px_, head_.calibration().right.width_px,
+                              head_.calibration().right.height_px);
+  const std::vector<int> in_left_px = recognition::object_pixel_counts(
+      free_left.object_ids(left_window), unoccluded_to_world_.size());
+  const std::vector<int> in_right_px = recognition::object_pixel_counts(
+      free_right.object_ids(right_window), unoccluded_to_world_.size());
+
   const Eigen::Isometry3d ego_T_world = frame.pose.world_T_ego.inverse();
   const Eigen::Vector3d world_left_centre_m = world_T_left.translation();
   std::vector<recognition::GroundTruthObject> out;
@@ -173,6 +186,8 @@ std::vector<recognition::GroundTruthObject> GroundTruthRenderer::objects(
     truth.right_visible_px = right_px[i];
     truth.left_unoccluded_px = free_left_px[k];
     truth.right_unoccluded_px = free_right_px[k];
+    truth.left_in_image_px = in_left_px[k];
+    truth.right_in_image_px = in_right_px[k];
     out.push_back(std::move(truth));
   }
   return out;

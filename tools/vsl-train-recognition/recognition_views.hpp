@@ -104,6 +104,7 @@ class GroundTruthRenderer {
   const world::WorldModel& world_;
   const head::HeadKinematics& head_;
   std::vector<std::string> evaluated_types_;
+  int margin_px_ = 0;
   std::vector<std::size_t> unoccluded_to_world_;  // object index in the reduced world -> world
   std::unique_ptr<render::Renderer> unoccluded_renderer_;
   head::CameraIntrinsics wide_left_, wide_right_;

@@ -68,9 +68,11 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
   }
   const Clock::time_point classified = Clock::now();
 
-  const std::vector<StereoPercept> stereo =
-      match_and_triangulate(result.left_detections, result.right_detections, calibration.left,
-                            calibration.right, left_T_right, options_.stereo);
+  const std::vector<StereoPercept> stereo = match_and_triangulate(
+      result.left_detections, result.right_detections, calibration.left, calibration.right,
+      left_T_right, options_.stereo,
+      // The ego frame's z is up (head_kinematics.hpp).
+      result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ());
   // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
   const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
   result.percepts.reserve(stereo.size());

@@ -129,6 +129,12 @@ SampleRole sample_role(const Blob& blob, const cv::Mat& object_ids, std::span<co
                      options);
 }
 
+bool whole_in_both_images(const GroundTruthObject& object) {
+  return object.left_unoccluded_px > 0 && object.right_unoccluded_px > 0 &&
+         object.left_in_image_px >= object.left_unoccluded_px &&
+         object.right_in_image_px >= object.right_unoccluded_px;
+}
+
 double visible_fraction(int visible_px, int unoccluded_px) {
   if (unoccluded_px <= 0) return 0.0;
   return std::min(1.0, static_cast<double>(visible_px) / unoccluded_px);

@@ -147,7 +147,14 @@ std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& o
   std::vector<Blob> blobs;
   for (std::size_t b = 0; b < blob_runs.size(); ++b) {
     if (blob_area[b] < options.min_blob_px) continue;
-    blobs.push_back(make_blob(std::move(blob_runs[b]), bgr_image));
+    if (blob_area[b] < options.min_split_blob_px || options.min_split_blob_px <= 0) {
+      blobs.push_back(make_blob(std::move(blob_runs[b]), bgr_image));
+      continue;
+    }
+    // Two doors joined where the barrier along their reveal breaks: cut along the reveal's slit.
+    for (std::vector<PixelRun>& piece : split_at_slits(std::move(blob_runs[b]), options)) {
+      blobs.push_back(make_blob(std::move(piece), bgr_image));
+    }
   }
   return blobs;
 }

@@ -27,7 +27,8 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
                        "min_region_px", "spatial_bandwidth_px", "colour_bandwidth_rgb",
                        "max_mean_shift_iterations", "max_mode_distance", "min_blob_px",
                        "min_line_contrast_rgb", "line_bridge_px", "max_chromaticity_difference",
-                       "max_facet_px"});
+                       "max_facet_px", "min_split_blob_px", "max_slit_width_px", "min_slit_support",
+                       "min_split_piece_fraction"});
   if (const auto v = section.find("max_neighbour_difference_rgb")) {
     out.max_neighbour_difference_rgb = v->as_double_in(0.0, 1.0);
   }
@@ -58,6 +59,16 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
     out.max_chromaticity_difference = v->as_double_in(0.0, 1.0);
   }
   if (const auto v = section.find("max_facet_px")) out.max_facet_px = int_in(*v, 0, 100000000);
+  if (const auto v = section.find("min_split_blob_px")) {
+    out.min_split_blob_px = int_in(*v, 0, 100000000);
+  }
+  if (const auto v = section.find("max_slit_width_px")) out.max_slit_width_px = int_in(*v, 1, 100);
+  if (const auto v = section.find("min_split_piece_fraction")) {
+    out.min_split_piece_fraction = v->as_double_in(0.0, 0.5);
+  }
+  if (const auto v = section.find("min_slit_support")) {
+    out.min_slit_support = v->as_double_in(0.0, 1.0);
+  }
   if (out.min_region_px > out.max_region_px) {
     section.at("min_region_px")
         .fail("must not exceed max_region_px (" + std::to_string(out.max_region_px) + ")");

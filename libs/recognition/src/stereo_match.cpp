@@ -205,7 +205,8 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
                                                  const head::CameraIntrinsics& left_intrinsics,
                                                  const head::CameraIntrinsics& right_intrinsics,
                                                  const Eigen::Isometry3d& left_T_right,
-                                                 const StereoMatchOptions& options) {
+                                                 const StereoMatchOptions& options,
+                                                 const Eigen::Vector3d& up_in_left_camera) {
   if (left.empty() || right.empty()) return {};
   std::vector<Eigen::Vector2d> left_raw, right_raw;
   left_raw.reserve(left.size());
@@ -249,6 +250,11 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
       if (!(epipolar_px <= max_epipolar_px)) continue;
       std::optional<Eigen::Vector3d> point;
       bool rectangle = false;
+      if (rectangles && options.max_side_tilt_rad > 0.0 && up_in_left_camera.norm() > 0.0 &&
+          triangulator.max_side_tilt(corner_array(left_corners[l]), corner_array(right_corners[r]),
+                                     up_in_left_camera) > std::sin(options.max_side_tilt_rad)) {
+        continue;
+      }
       if (rectangles) {
         point = triangulator.rectangle_centre(corner_array(left_corners[l]),
                                               corner_array(right_corners[r]));

@@ -1,5 +1,6 @@
 #include "triangulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vsl::recognition::detail {
@@ -17,19 +18,45 @@ Triangulator::Triangulator(const head::CameraIntrinsics& left, const head::Camer
       right_k_inverse_in_left_(left_T_right.linear() * camera_matrix(right).inverse()),
       right_centre_m_(left_T_right.translation()) {}
 
+namespace {
+
+double verticality(const std::array<Eigen::Vector2d, 4>& c, int i, int j) {
+  const Eigen::Vector2d d = c[j] - c[i];
+  const double n = d.norm();
+  return n > 0.0 ? std::abs(d.y()) / n : 0.0;
+}
+
+// The two sides nearer the image vertical: (0, 3) and (1, 2), or (0, 1) and (3, 2).
+std::array<std::array<int, 2>, 2> vertical_sides(const std::array<Eigen::Vector2d, 4>& c) {
+  if (verticality(c, 0, 1) + verticality(c, 3, 2) > verticality(c, 0, 3) + verticality(c, 1, 2)) {
+    return {{{0, 1}, {3, 2}}};
+  }
+  return {{{0, 3}, {1, 2}}};
+}
+
+}  // namespace
+
+double Triangulator::max_side_tilt(const std::array<Eigen::Vector2d, 4>& left,
+                                   const std::array<Eigen::Vector2d, 4>& right,
+                                   const Eigen::Vector3d& up) const {
+  double tilt = 0.0;
+  for (const auto& [i, j] : vertical_sides(left)) {
+    const Eigen::Vector3d nl =
+        (left_k_inverse_ * left[i].homogeneous()).cross(left_k_inverse_ * left[j].homogeneous());
+    const Eigen::Vector3d nr = (right_k_inverse_in_left_ * right[i].homogeneous())
+                                   .cross(right_k_inverse_in_left_ * right[j].homogeneous());
+    for (const Eigen::Vector3d& n : {nl, nr}) {
+      const double norm = n.norm() * up.norm();
+      if (!(norm > 0.0)) return 1.0;
+      tilt = std::max(tilt, std::abs(n.dot(up)) / norm);
+    }
+  }
+  return tilt;
+}
+
 std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right) const {
-  // The two sides nearer the vertical: (0, 3) and (1, 2), or (0, 1) and (3, 2).
-  const auto verticality = [](const std::array<Eigen::Vector2d, 4>& c, int i, int j) {
-    const Eigen::Vector2d d = c[j] - c[i];
-    const double n = d.norm();
-    return n > 0.0 ? std::abs(d.y()) / n : 0.0;
-  };
-  std::array<std::array<int, 2>, 2> sides{{{0, 3}, {1, 2}}};
-  if (verticality(left, 0, 1) + verticality(left, 3, 2) >
-      verticality(left, 0, 3) + verticality(left, 1, 2)) {
-    sides = {{{0, 1}, {3, 2}}};
-  }
+  const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const auto& [i, j] : sides) {
     if (verticality(left, i, j) < std::sqrt(0.5) || verticality(right, i, j) < std::sqrt(0.5)) {

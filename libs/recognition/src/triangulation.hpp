@@ -57,6 +57,17 @@ class Triangulator {
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
 
+  // How far from vertical in 3D the rectangle's sides nearer the image vertical are, as seen by
+  // both cameras: a 3D line is vertical exactly when the plane its image spans through the camera
+  // centre (the plane of the rays through its two ends) holds the up direction. Returns the
+  // largest, over the two sides in each image, of |n . up| (n the plane's unit normal, `up` a
+  // unit vector in the left camera frame): the sine of the angle between `up` and the plane, 0
+  // for a vertical side in any view. A side of a door's outline that is not vertical is no door
+  // edge (an occluder's contour, a strip of the neighbour). 1 when a side is degenerate.
+  double max_side_tilt(const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
+                       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
+                       const Eigen::Vector3d& up_in_left_camera) const;
+
   // The midpoint with its covariance, then moved `reference_depth_offset_m` further along the
   // left viewing ray (the class's reference point lies behind the visible surface).
   //

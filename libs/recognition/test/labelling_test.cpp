@@ -129,6 +129,16 @@ TEST(Labelling, GroundTruthNeedsHalfVisibleInBothImagesWithinFourMetres) {
   EXPECT_DOUBLE_EQ(visible_fraction(5, 0), 0.0);
 }
 
+TEST(Labelling, WholeInBothImagesWhenNoUnoccludedPixelLiesBeyondABorder) {
+  GroundTruthObject o = object("door", {1, 0, 1}, 2.0, 300, 1000, 300, 1000);
+  o.left_in_image_px = 1000;
+  o.right_in_image_px = 1000;
+  EXPECT_TRUE(whole_in_both_images(o));  // occluded, but not cut by the border
+  o.right_in_image_px = 990;
+  EXPECT_FALSE(whole_in_both_images(o));
+  EXPECT_FALSE(whole_in_both_images(object("door", {1, 0, 1}, 2.0, 0, 0, 0, 0)));
+}
+
 TEST(Labelling, PerceptsMatchTheNearestFreeObjectOfTheirTypeMostConfidentFirst) {
   std::vector<GroundTruthObject> truth{
       object("door", {1.0, 0, 1}, 1.0, 1, 1, 1, 1), object("door", {1.15, 0, 1}, 1.0, 1, 1, 1, 1),

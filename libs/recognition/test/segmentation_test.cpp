@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
@@ -143,7 +144,8 @@ TEST(SegmentationOptions, ReadsEveryKey) {
       "  max_region_px: 5000\n  min_region_px: 3\n  spatial_bandwidth_px: 50\n"
       "  colour_bandwidth_rgb: 0.1\n  max_mean_shift_iterations: 7\n  "
       "max_mode_distance: 0.4\n"
-      "  min_blob_px: 9\n");
+      "  min_blob_px: 9\n  min_split_blob_px: 800\n  max_slit_width_px: 3\n"
+      "  min_slit_support: 0.6\n  min_split_piece_fraction: 0.3\n");
   EXPECT_DOUBLE_EQ(options.max_neighbour_difference_rgb, 0.05);
   EXPECT_DOUBLE_EQ(options.max_colour_volume_rgb3, 1e-3);
   EXPECT_EQ(options.line_bridge_px, 3);
@@ -157,6 +159,10 @@ TEST(SegmentationOptions, ReadsEveryKey) {
   EXPECT_EQ(options.max_mean_shift_iterations, 7);
   EXPECT_DOUBLE_EQ(options.max_mode_distance, 0.4);
   EXPECT_EQ(options.min_blob_px, 9);
+  EXPECT_EQ(options.min_split_blob_px, 800);
+  EXPECT_EQ(options.max_slit_width_px, 3);
+  EXPECT_DOUBLE_EQ(options.min_slit_support, 0.6);
+  EXPECT_DOUBLE_EQ(options.min_split_piece_fraction, 0.3);
   // Every key is optional.
   const SegmentationOptions defaults = options_from("segmentation: {}\n");
   EXPECT_EQ(defaults.max_region_px, SegmentationOptions{}.max_region_px);
@@ -180,6 +186,83 @@ TEST(SegmentationOptions, BadValuesAreOneLineErrors) {
                       "max_region_px"),
             std::string::npos);
   EXPECT_NE(error_of("segmentation:\n  min_blob_px: 2.5\n").find("seg.yaml:2:"), std::string::npos);
+  EXPECT_NE(error_of("segmentation:\n  max_slit_width_px: 0\n").find("seg.yaml:2:"),
+            std::string::npos);
+  EXPECT_NE(error_of("segmentation:\n  min_slit_support: 1.5\n").find("seg.yaml:2:"),
+            std::string::npos);
+}
+
+// The runs of the pixels (u, v) with u0 <= u < u1 and v0 <= v < v1 for which `in` holds.
+template <typename In>
+std::vector<PixelRun> runs_where(int u0, int u1, int v0, int v1, In&& in) {
+  std::vector<PixelRun> runs;
+  for (int v = v0; v < v1; ++v) {
+    int begin = -1;
+    for (int u = u0; u <= u1; ++u) {
+      const bool inside = u < u1 && in(u, v);
+      if (inside && begin < 0) begin = u;
+      if (!inside && begin >= 0) {
+        runs.push_back({v, begin, u});
+        begin = -1;
+      }
+    }
+  }
+  return runs;
+}
+
+int area_of(const std::vector<PixelRun>& runs) {
+  int area = 0;
+  for (const PixelRun& r : runs) area += r.u_end - r.u_begin;
+  return area;
+}
+
+TEST(SlitSplit, TwoDoorsJoinedWhereTheirRevealBreaksAreCutAlongIt) {
+  // Two 60 x 120 px doors, a 2 px reveal between them (columns 60-61) that the barrier lost
+  // for 40 rows beside a handle (rows 50-89): one blob, split along the reveal.
+  const auto runs = runs_where(
+      0, 122, 0, 120, [](int u, int v) { return u < 60 || u > 61 || (v >= 50 && v < 90); });
+  const auto pieces = split_at_slits(runs, SegmentationOptions{});
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(area_of(pieces[0]), 60 * 120 + 40);  // the left door and its half of the break
+  EXPECT_EQ(area_of(pieces[1]), 60 * 120 + 40);
+  for (const PixelRun& r : pieces[0]) EXPECT_LE(r.u_end, 61);
+  for (const PixelRun& r : pieces[1]) EXPECT_GE(r.u_begin, 61);
+}
+
+TEST(SlitSplit, SlantedRevealOfThreeDoorsGivesThreePieces) {
+  // Under neck pitch the vertical reveals lean: u = 50 + 0.2 v and u = 110 + 0.2 v, each lost
+  // over a third of the rows.
+  const auto runs = runs_where(0, 200, 0, 150, [](int u, int v) {
+    const double a = 50.0 + 0.2 * v, b = 110.0 + 0.2 * v;
+    const bool on_a = std::abs(u - a) < 1.0 && v < 100;
+    const bool on_b = std::abs(u - b) < 1.0 && v >= 50;
+    return !on_a && !on_b;
+  });
+  EXPECT_EQ(split_at_slits(runs, SegmentationOptions{}).size(), 3u);
+}
+
+TEST(SlitSplit, ADoorWithAHandleHoleOrANotchIsNotSplit) {
+  // A vertical handle bar 4 px wide over a quarter of the door's height leaves a gap too short
+  // to be a reveal; a blob below min_split_blob_px and a blob with min_split_blob_px 0 are kept.
+  const auto door = runs_where(
+      0, 80, 0, 160, [](int u, int v) { return !(u >= 70 && u < 74 && v >= 60 && v < 100); });
+  EXPECT_EQ(split_at_slits(door, SegmentationOptions{}).size(), 1u);
+  const auto pair = runs_where(
+      0, 122, 0, 120, [](int u, int v) { return u < 60 || u > 61 || (v >= 50 && v < 90); });
+  SegmentationOptions off;
+  off.min_split_blob_px = 0;
+  EXPECT_EQ(split_at_slits(pair, off).size(), 1u);
+  // A shaker door: the groove around its recessed panel runs 10 px inside each edge over the
+  // panel's height. Cutting a stile off is no split into two fronts.
+  const auto shaker = runs_where(0, 80, 0, 160, [](int u, int v) {
+    const bool groove = (u == 10 || u == 69) && v >= 10 && v < 150;
+    return !groove;
+  });
+  EXPECT_EQ(split_at_slits(shaker, SegmentationOptions{}).size(), 1u);
+  // A horizontal slit (a drawer stack) is not a near-vertical line.
+  const auto stack =
+      runs_where(0, 120, 0, 80, [](int u, int v) { return !(v == 40 && u >= 10 && u < 110); });
+  EXPECT_EQ(split_at_slits(stack, SegmentationOptions{}).size(), 1u);
 }
 
 // --- Quality on rendered kitchen frames

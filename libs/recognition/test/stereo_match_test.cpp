@@ -86,10 +86,12 @@ TEST_F(StereoMatchTest, EpipolarGateRejectsOffLineAndAcceptsOnIt) {
 
 // A door's front face 0.5 x 0.7 m, turned 40 deg about the vertical, its centre at `centre_m`:
 // both outlines with corners clockwise from the top left.
+// `down`: the door's vertical (the gravity direction) in the left camera frame.
 Pair door_pair(const Eigen::Vector3d& centre_m, const head::StereoCalibration& calibration,
-               const Eigen::Isometry3d& left_T_right) {
-  const Eigen::Vector3d across(std::cos(0.7), 0.0, std::sin(0.7));  // x right, z forward
-  const Eigen::Vector3d down(0.0, 1.0, 0.0);
+               const Eigen::Isometry3d& left_T_right,
+               const Eigen::Vector3d& down = Eigen::Vector3d(0.0, 1.0, 0.0)) {
+  const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));  // x right, z forward
+  const Eigen::Vector3d across = (turned - turned.dot(down) * down).normalized();
   const std::array<Eigen::Vector3d, 4> corners{
       centre_m - 0.25 * across - 0.35 * down, centre_m + 0.25 * across - 0.35 * down,
       centre_m + 0.25 * across + 0.35 * down, centre_m - 0.25 * across + 0.35 * down};
@@ -142,6 +144,33 @@ TEST_F(StereoMatchTest, HeightRangeGate) {
   // Not checked for other classes, nor without a height.
   options_.height_range_m.back().type = "window";
   EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
+}
+
+TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
+  // The camera pitched 0.4 rad down: the door's vertical sides converge in the image, but each
+  // spans a plane holding the up direction.
+  const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
+  const Eigen::Vector3d up = -down;
+  const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_, down);
+  options_.max_side_tilt_rad = 0.03;
+  EXPECT_EQ(match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
+                                  left_T_right_, options_, up)
+                .size(),
+            1u);
+  // An occluder cut the bottom-left corner off the left outline (a chair's contour became its
+  // side): 8 px off the door's edge, a side some 0.05 rad from vertical. Refused; accepted without
+  // the up direction or with the gate off.
+  Pair cut = p;
+  cut.left.corners_px[3].x() += 8.0;
+  EXPECT_TRUE(match_and_triangulate({cut.left}, {cut.right}, calibration_.left, calibration_.right,
+                                    left_T_right_, options_, up)
+                  .empty());
+  EXPECT_EQ(match({cut.left}, {cut.right}).size(), 1u);
+  options_.max_side_tilt_rad = 0.0;
+  EXPECT_EQ(match_and_triangulate({cut.left}, {cut.right}, calibration_.left, calibration_.right,
+                                  left_T_right_, options_, up)
+                .size(),
+            1u);
 }
 
 TEST_F(StereoMatchTest, DisparityRangeAsDepth) {
@@ -293,6 +322,7 @@ stereo:
   reference_depth_offset_m: {door: 0.0095, handle: 0.006}
   major_extent_range_m: {handle: [0.12, 0.25]}
   height_range_m: {door: [0.5, 2.5]}
+  max_side_tilt_rad: 0.05
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -314,6 +344,7 @@ stereo:
   EXPECT_EQ(o.height_range_m[0].type, "door");
   EXPECT_EQ(o.height_range_m[0].min_m, 0.5);
   EXPECT_EQ(o.height_range_m[0].max_m, 2.5);
+  EXPECT_EQ(o.max_side_tilt_rad, 0.05);
 }
 
 std::string stereo_error(const std::string& body) {

@@ -86,8 +86,16 @@ struct GroundTruthObject {
   int right_visible_px = 0;
   int left_unoccluded_px = 0;  // in the rendering of the recognizable objects alone
   int right_unoccluded_px = 0;
+  // Of the unoccluded pixels, those inside the image (the rest lie in the wider rendering's
+  // margin, beyond the image border).
+  int left_in_image_px = 0;
+  int right_in_image_px = 0;
   bool visible = false;  // set by mark_ground_truth_visible()
 };
+
+// True when the object's whole unoccluded outline lies inside both images (none of its pixels in
+// the wider renderings' margin): not cut by the image border, whether or not it is occluded.
+bool whole_in_both_images(const GroundTruthObject& object);
 
 // Visible fraction in one image: visible / unoccluded (0 when the object is not in the unoccluded
 // image at all; capped at 1, since distortion and pixel rounding can differ between renderings).

@@ -55,12 +55,36 @@ struct SegmentationOptions {
   int max_facet_px = 1000;
   // Blobs smaller than this are not reported.
   int min_blob_px = 12;
+  // Slit split (split_at_slits): a blob of at least min_split_blob_px pixels (0 turns it off) is
+  // cut in two along a straight, near-vertical slit of at most max_slit_width_px pixels inside it
+  // (the reveal between two doors, whose line barrier breaks where a handle stands beside it)
+  // when the slit runs along at least min_slit_support of the rows the line crosses the blob in
+  // and each piece has at least min_split_piece_fraction of the blob's pixels (two fronts, not a
+  // front and a strip: the groove around a shaker door's recessed panel is a slit too, 6 cm
+  // from the door's edge, and cutting the stile off moves the door's centre by 3 cm).
+  int min_split_blob_px = 600;
+  int max_slit_width_px = 4;
+  double min_slit_support = 0.4;
+  double min_split_piece_fraction = 0.2;
 };
 
 // Reads the `segmentation:` section (every key optional, defaults above;
 // unknown keys, non-finite or out-of-range values are errors:
 // vsl::config::Error "file:line: key: what").
 SegmentationOptions segmentation_options_from(const config::Node& section);
+
+// Splits the pixels of one blob (runs sorted by (v, u_begin), as in Blob::runs) at straight
+// slits: a gap of 1..max_slit_width_px pixels between two runs of one row is a slit point; the
+// line u = a + b v (|b| <= 0.6: within 31 deg of the image vertical) through the most slit points
+// (within 1.5 px), refitted by least squares, is a slit when the rows with a slit point on it
+// are at least min_slit_support of the rows in which the line crosses the blob (and at least 24
+// of them). The pixels left of the line and those right of it are then two pieces (each at least
+// min_blob_px and min_split_piece_fraction of the blob), each split again (at most 3 levels). The
+// reveal between two flush doors is such a slit along most of its length: the line barrier (above)
+// keeps it out of every region except where it breaks, and there the two doors join. Returns the
+// pieces (the whole blob when no slit splits it), each sorted as its input.
+std::vector<std::vector<PixelRun>> split_at_slits(std::vector<PixelRun> runs,
+                                                  const SegmentationOptions& options);
 
 // Segments one raw image (CV_8UC3, BGR) into blobs. Const inputs, no shared
 // state: thread-safe.

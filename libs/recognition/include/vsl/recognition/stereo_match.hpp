@@ -50,6 +50,11 @@ struct StereoMatchOptions {
   // drawer front of the same colour and of any width, and a camera turning about the vertical
   // does not foreshorten it. Classes not listed, and detections without a height, are not checked.
   std::vector<ExtentRange> height_range_m;
+  // Rectangle outlines (detections with corners: doors) whose sides nearer the image vertical
+  // are not vertical in 3D within this angle, in either image, are no door's front face (an
+  // occluder's contour or a neighbour's strip gave the outline a side): such a pair is refused.
+  // Needs the up direction (match_and_triangulate's up_in_left_camera); 0 turns it off.
+  double max_side_tilt_rad = 0.0;
 };
 
 // Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
@@ -81,11 +86,10 @@ struct StereoPercept {
 // two detections' confidences, sqrt(c_l c_r): symmetric, in [0, 1], and on the scale of a single
 // detection's (two views of confidence c give c; the product would give c^2, penalizing every
 // stereo percept for having been seen twice).
-std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& left,
-                                                 const std::vector<Detection>& right,
-                                                 const head::CameraIntrinsics& left_intrinsics,
-                                                 const head::CameraIntrinsics& right_intrinsics,
-                                                 const Eigen::Isometry3d& left_T_right,
-                                                 const StereoMatchOptions& options);
+std::vector<StereoPercept> match_and_triangulate(
+    const std::vector<Detection>& left, const std::vector<Detection>& right,
+    const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
+    const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
+    const Eigen::Vector3d& up_in_left_camera = Eigen::Vector3d::Zero());
 
 }  // namespace vsl::recognition

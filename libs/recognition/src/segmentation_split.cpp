@@ -1,0 +1,177 @@
+// split_at_slits (segmentation.hpp): a blob of two flush doors, joined where the line barrier
+// along their reveal breaks, is cut along the straight slit the reveal leaves in it.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "vsl/recognition/segmentation.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+// A slit point: the centre of a gap between two runs of one row.
+struct SlitPoint {
+  int v = 0;
+  double u = 0.0;
+};
+
+// u = u_ref + slope (v - v_ref).
+struct SlitLine {
+  double v_ref = 0.0;
+  double u_ref = 0.0;
+  double slope = 0.0;
+  double at(double v) const { return u_ref + slope * (v - v_ref); }
+};
+
+constexpr double kMaxSlope = 0.6;      // |du/dv|: within 31 deg of the image vertical
+constexpr double kInlierPx = 1.5;      // a slit point on the line
+constexpr int kMinSlitRows = 24;       // rows in which the line crosses the blob
+constexpr int kCandidatesPerEnd = 12;  // slit points tried at each end of the blob
+constexpr int kMaxLevels = 3;          // splits of splits
+
+// The slit points within kInlierPx of `line`, counted once per row.
+template <typename Visit>
+int count_on_line(const std::vector<SlitPoint>& points, const SlitLine& line, Visit&& visit) {
+  int count = 0;
+  int last_v = -1;
+  for (const SlitPoint& p : points) {
+    if (p.v == last_v || std::abs(p.u - line.at(p.v)) > kInlierPx) continue;
+    last_v = p.v;
+    ++count;
+    visit(p);
+  }
+  return count;
+}
+
+std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
+                                  const SegmentationOptions& options) {
+  const int v_min = runs.front().v;
+  const int v_max = runs.back().v;
+  const int rows = v_max - v_min + 1;
+  if (rows < kMinSlitRows) return std::nullopt;
+  // Per row, the blob's first and last column; slit points between runs.
+  std::vector<int> row_first(static_cast<std::size_t>(rows), 0);
+  std::vector<int> row_end(static_cast<std::size_t>(rows), 0);  // 0 = no pixel in the row
+  std::vector<SlitPoint> points;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const PixelRun& r = runs[i];
+    const auto row = static_cast<std::size_t>(r.v - v_min);
+    if (row_end[row] == 0) row_first[row] = r.u_begin;
+    row_end[row] = r.u_end;
+    if (i + 1 < runs.size() && runs[i + 1].v == r.v) {
+      const int gap = runs[i + 1].u_begin - r.u_end;
+      if (gap >= 1 && gap <= options.max_slit_width_px) {
+        points.push_back({r.v, 0.5 * (r.u_end + runs[i + 1].u_begin - 1)});
+      }
+    }
+  }
+  const double min_support = options.min_slit_support;
+  if (static_cast<double>(points.size()) < min_support * kMinSlitRows) return std::nullopt;
+
+  // Candidate lines through pairs of slit points from the two ends of the blob (a slit along
+  // most of the blob has points near both ends); the one through the most points.
+  const std::size_t n = points.size();
+  const std::size_t third = std::max<std::size_t>(1, n / 3);
+  const std::size_t step = std::max<std::size_t>(1, third / kCandidatesPerEnd);
+  std::optional<SlitLine> best;
+  int best_count = 0;
+  for (std::size_t i = 0; i < third; i += step) {
+    for (std::size_t k = 0; k < third; k += step) {
+      const std::size_t j = n - 1 - k;
+      if (j <= i) break;
+      const SlitPoint& a = points[i];
+      const SlitPoint& b = points[j];
+      if (4 * (b.v - a.v) < rows) continue;
+      const SlitLine line{double(a.v), a.u, (b.u - a.u) / double(b.v - a.v)};
+      if (std::abs(line.slope) > kMaxSlope) continue;
+      const int count = count_on_line(points, line, [](const SlitPoint&) {});
+      if (count > best_count) {
+        best_count = count;
+        best = line;
+      }
+    }
+  }
+  if (!best || best_count < min_support * kMinSlitRows) return std::nullopt;
+
+  // Least-squares refit to the points on it.
+  double sv = 0.0, su = 0.0, svv = 0.0, svu = 0.0;
+  int m = 0;
+  count_on_line(points, *best, [&](const SlitPoint& p) {
+    sv += p.v;
+    su += p.u;
+    ++m;
+  });
+  const double mv = sv / m, mu = su / m;
+  count_on_line(points, *best, [&](const SlitPoint& p) {
+    svv += (p.v - mv) * (p.v - mv);
+    svu += (p.v - mv) * (p.u - mu);
+  });
+  SlitLine line{mv, mu, svv > 0.0 ? svu / svv : 0.0};
+  if (std::abs(line.slope) > kMaxSlope) return std::nullopt;
+  const int on_line = count_on_line(points, line, [](const SlitPoint&) {});
+  int crossing = 0;
+  for (int row = 0; row < rows; ++row) {
+    const double u = line.at(v_min + row);
+    if (row_end[static_cast<std::size_t>(row)] > 0 &&
+        u > row_first[static_cast<std::size_t>(row)] &&
+        u < row_end[static_cast<std::size_t>(row)] - 1) {
+      ++crossing;
+    }
+  }
+  if (crossing < kMinSlitRows || on_line < min_support * crossing) return std::nullopt;
+  return line;
+}
+
+void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int level,
+           std::vector<std::vector<PixelRun>>& out) {
+  long area = 0;
+  for (const PixelRun& r : runs) area += r.u_end - r.u_begin;
+  const std::optional<SlitLine> line =
+      level < kMaxLevels && area >= options.min_split_blob_px && !runs.empty()
+          ? find_slit(runs, options)
+          : std::nullopt;
+  if (!line) {
+    out.push_back(std::move(runs));
+    return;
+  }
+  std::vector<PixelRun> left, right;
+  long left_area = 0, right_area = 0;
+  for (const PixelRun& r : runs) {
+    // Pixel centres at integers: left of the line are the columns u < line(v).
+    const int cut = static_cast<int>(std::ceil(line->at(r.v)));
+    if (r.u_begin < cut) {
+      left.push_back({r.v, r.u_begin, std::min(r.u_end, cut)});
+      left_area += left.back().u_end - left.back().u_begin;
+    }
+    if (r.u_end > cut) {
+      right.push_back({r.v, std::max(r.u_begin, cut), r.u_end});
+      right_area += right.back().u_end - right.back().u_begin;
+    }
+  }
+  // Each piece a front of its own: not a strip such as a shaker door's stile, which the groove
+  // between the stile and the recessed panel (a slit too) would cut off.
+  if (left_area < options.min_blob_px || right_area < options.min_blob_px ||
+      static_cast<double>(std::min(left_area, right_area)) <
+          options.min_split_piece_fraction * static_cast<double>(area)) {
+    out.push_back(std::move(runs));
+    return;
+  }
+  split(std::move(left), options, level + 1, out);
+  split(std::move(right), options, level + 1, out);
+}
+
+}  // namespace
+
+std::vector<std::vector<PixelRun>> split_at_slits(std::vector<PixelRun> runs,
+                                                  const SegmentationOptions& options) {
+  std::vector<std::vector<PixelRun>> out;
+  if (options.min_split_blob_px <= 0) {
+    out.push_back(std::move(runs));
+    return out;
+  }
+  split(std::move(runs), options, 0, out);
+  return out;
+}
+
+}  // namespace vsl::recognition
