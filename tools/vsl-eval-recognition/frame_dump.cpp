@@ -7,8 +7,6 @@
 
 #include <cmath>
 
-#include "vsl/recognition/quadrilateral.hpp"
-
 namespace vsl::tools {
 namespace {
 
@@ -37,15 +35,14 @@ void draw_blobs(cv::Mat& picture, const std::vector<recognition::Blob>& blobs,
     const recognition::Blob& b = blobs[static_cast<std::size_t>(d.blob_index)];
     cv::rectangle(picture, cv::Point(b.u_min, b.v_min), cv::Point(b.u_max, b.v_max),
                   cv::Scalar(0, 220, 255), 1);
-    if (d.type == "door") {
-      if (const auto quad = recognition::fit_quadrilateral(b)) {
-        for (int i = 0; i < 4; ++i) {
-          const auto& a = quad->corners[static_cast<std::size_t>(i)];
-          const auto& c = quad->corners[static_cast<std::size_t>((i + 1) % 4)];
-          cv::line(picture, cv::Point(int(std::lround(a.x())), int(std::lround(a.y()))),
-                   cv::Point(int(std::lround(c.x())), int(std::lround(c.y()))),
-                   cv::Scalar(255, 0, 255), 1);
-        }
+    // The outline the recognizer judged (also for a door cut by the image border).
+    if (d.corners_px.size() == 4) {
+      for (std::size_t i = 0; i < 4; ++i) {
+        const Eigen::Vector2d& a = d.corners_px[i];
+        const Eigen::Vector2d& c = d.corners_px[(i + 1) % 4];
+        cv::line(picture, cv::Point(int(std::lround(a.x())), int(std::lround(a.y()))),
+                 cv::Point(int(std::lround(c.x())), int(std::lround(c.y()))),
+                 cv::Scalar(255, 0, 255), 1);
       }
     }
   }

@@ -67,7 +67,7 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
     out.min_split_piece_fraction = v->as_double_in(0.0, 0.5);
   }
   if (const auto v = section.find("min_slit_support")) {
-    out.min_slit_support = v->as_double_in(0.0, 1.0);
+    out.min_slit_support = v->as_double_in(0.05, 1.0);
   }
   if (out.min_region_px > out.max_region_px) {
     section.at("min_region_px")

@@ -67,7 +67,10 @@ std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
     }
   }
   const double min_support = options.min_slit_support;
-  if (static_cast<double>(points.size()) < min_support * kMinSlitRows) return std::nullopt;
+  // A line needs two points (and the index arithmetic below n >= 2).
+  if (points.size() < 2 || static_cast<double>(points.size()) < min_support * kMinSlitRows) {
+    return std::nullopt;
+  }
 
   // Candidate lines through pairs of slit points from the two ends of the blob (a slit along
   // most of the blob has points near both ends); the one through the most points.

@@ -38,7 +38,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     out.min_elongation_for_orientation = v->as_double_in(1.0, 1000.0);
   }
   if (const auto v = section.find("max_side_tilt_rad")) {
-    out.max_side_tilt_rad = v->as_double_in(0.0, 1.6);
+    out.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2: sin() still grows
   }
   if (const auto v = section.find("pixel_sigma_px")) {
     out.pixel_sigma_px = v->as_double_in(1e-3, 100.0);

@@ -190,6 +190,9 @@ TEST(SegmentationOptions, BadValuesAreOneLineErrors) {
             std::string::npos);
   EXPECT_NE(error_of("segmentation:\n  min_slit_support: 1.5\n").find("seg.yaml:2:"),
             std::string::npos);
+  // 0 would accept a blob with no slit point at all.
+  EXPECT_NE(error_of("segmentation:\n  min_slit_support: 0\n").find("seg.yaml:2:"),
+            std::string::npos);
 }
 
 // The runs of the pixels (u, v) with u0 <= u < u1 and v0 <= v < v1 for which `in` holds.

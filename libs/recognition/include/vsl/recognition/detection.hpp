@@ -25,8 +25,8 @@ struct Detection {
   double height_px = 0.0;
   // The corners of the object's outline when it is a rectangle seen as a quadrilateral (doors,
   // quadrilateral.hpp: clockwise from the top left), raw pixels; empty otherwise. The stereo
-  // match triangulates the centre of a rectangle from a diagonal whose two ends agree in both
-  // images (StereoMatchOptions), not from the reference point alone.
+  // match triangulates the centre of a rectangle from its two vertical sides in both images
+  // (StereoMatchOptions), not from the reference point alone.
   std::vector<Eigen::Vector2d> corners_px;
   // Squared Mahalanobis distance of the blob's descriptor to the class model (unitless), and
   // the confidence derived from it: the chi-square survival probability, 0 .. 1.
