@@ -17,6 +17,7 @@
 #include "vsl/ground_truth_pose_t.hpp"
 #include "vsl/localize_request_t.hpp"
 #include "vsl/localizer_status_t.hpp"
+#include "vsl/messages/enum_names.hpp"
 #include "vsl/percept_list_t.hpp"
 #include "vsl/pose_estimate_t.hpp"
 #include "vsl/runtime/clock.hpp"
@@ -53,26 +54,6 @@ Besides the table it prints one line for scripts:
 [[noreturn]] void usage_error(const std::string& what) {
   std::cerr << "vsl-request: " << what << " (see vsl-request --help)\n";
   std::exit(2);
-}
-
-const char* state_name(int state) {
-  static constexpr const char* kNames[] = {
-      "IDLE",       "SCANNING",          "FUSING",   "PRUNING", "GENERATING",
-      "VALIDATING", "ACTIVE_VALIDATION", "REFINING", "DONE",    "FAILED"};
-  return state >= 0 && state < 10 ? kNames[state] : "?";
-}
-
-const char* pose_status_name(int status) {
-  switch (status) {
-    case vsl::pose_estimate_t::LOCALIZED:
-      return "LOCALIZED";
-    case vsl::pose_estimate_t::AMBIGUOUS:
-      return "AMBIGUOUS";
-    case vsl::pose_estimate_t::FAILED:
-      return "FAILED";
-    default:
-      return "?";
-  }
 }
 
 vsl::request::Pose pose_of(const vsl::pose_t& pose) {
@@ -211,8 +192,8 @@ int main(int argc, char** argv) {
         const std::string hypotheses =
             m.num_hypotheses > 1 ? " [" + std::to_string(m.num_hypotheses) + " hypotheses]" : "";
         std::fprintf(stderr, "[%6.1f s] %-17s %3.0f%%  %s%s\n", seconds_since_start(),
-                     state_name(m.state), 100.0 * m.progress, m.message.c_str(),
-                     hypotheses.c_str());
+                     vsl::messages::localizer_state_name(m.state), 100.0 * m.progress,
+                     m.message.c_str(), hypotheses.c_str());
       });
   vsl::runtime::subscribe<vsl::percept_list_t>(
       bus, "PERCEPTS", [&](const vsl::percept_list_t& m, std::int64_t) {
@@ -290,7 +271,7 @@ int main(int argc, char** argv) {
     while (!truth && Clock::now() < until) bus.handle(std::chrono::milliseconds(100));
   }
 
-  const std::string status = pose_status_name(estimate->status);
+  const std::string status = vsl::messages::pose_status_name(estimate->status);
   const vsl::request::Pose pose = pose_of(estimate->world_T_ego);
   std::printf("\nrequest %lld: %s after %.1f s: %s\n", static_cast<long long>(request_id),
               status.c_str(), seconds_since_start(), estimate->message.c_str());

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "vsl/messages/enum_names.hpp"
+
 namespace vsl::view {
 namespace {
 
@@ -88,26 +90,6 @@ std::vector<CameraPercept> camera_percepts_of(const vsl::percept_list_t& list) {
   return out;
 }
 
-const char* localizer_state_name(int state) {
-  static constexpr const char* kNames[] = {
-      "IDLE",       "SCANNING",          "FUSING",   "PRUNING", "GENERATING",
-      "VALIDATING", "ACTIVE_VALIDATION", "REFINING", "DONE",    "FAILED"};
-  return state >= 0 && state < 10 ? kNames[state] : "?";
-}
-
-const char* pose_status_name(int status) {
-  switch (status) {
-    case vsl::pose_estimate_t::LOCALIZED:
-      return "LOCALIZED";
-    case vsl::pose_estimate_t::AMBIGUOUS:
-      return "AMBIGUOUS";
-    case vsl::pose_estimate_t::FAILED:
-      return "FAILED";
-    default:
-      return "?";
-  }
-}
-
 std::vector<std::string> map_caption(const std::optional<vsl::localizer_status_t>& status,
                                      const std::optional<vsl::pose_estimate_t>& estimate,
                                      const MapOverlay& overlay) {
@@ -115,7 +97,7 @@ std::vector<std::string> map_caption(const std::optional<vsl::localizer_status_t
   // Line 2: the localizer's state and the counts.
   std::string progress = "waiting for the localizer (LOCALIZER_STATUS)";
   if (status) {
-    progress = format("localizer %s %.0f%%: %s", localizer_state_name(status->state),
+    progress = format("localizer %s %.0f%%: %s", messages::localizer_state_name(status->state),
                       100.0 * status->progress, status->message.c_str());
   }
   const int hypotheses = estimate ? estimate->num_hypotheses : status ? status->num_hypotheses : 0;
@@ -144,9 +126,9 @@ std::vector<std::string> map_caption(const std::optional<vsl::localizer_status_t
     for (const FusedPercept& p : overlay.fused_percepts) {
       matched += p.match == FusedPercept::Match::kMatched;
     }
-    const std::string answer = pose_status_name(estimate->status);
+    const std::string answer = messages::pose_status_name(estimate->status);
     const std::string state =
-        status ? format("localizer %s | ", localizer_state_name(status->state)) : "";
+        status ? format("localizer %s | ", messages::localizer_state_name(status->state)) : "";
     return {answer + "  " + (pose_text.empty() ? estimate->message : pose_text),
             state + counts + format(" (%d matched)", matched)};
   }

@@ -34,9 +34,6 @@ std::vector<FusedPercept> fused_percepts_of(const vsl::fused_percept_list_t& lis
 void mark_matches(const vsl::pose_estimate_t& estimate, std::vector<FusedPercept>& percepts);
 std::vector<CameraPercept> camera_percepts_of(const vsl::percept_list_t& list);
 
-const char* localizer_state_name(int state);
-const char* pose_status_name(int status);
-
 // Caption lines of the map: the localizer's state and message; the counts; the estimate beside
 // the ground truth with the errors when both are known.
 std::vector<std::string> map_caption(const std::optional<vsl::localizer_status_t>& status,
