@@ -323,7 +323,7 @@ int main(int argc, char** argv) {
         // Where each ground-truth object was lost: per image, the blob holding most of its
         // pixels (purity, coverage: labelling.hpp), whether a recognizer of its type detected that
         // blob, and whether a percept matched the object.
-        text << "# funnel: object type | left: blob purity coverage detected | right: ... | "
+        text << "# funnel: object type whole|cut | left: blob purity coverage detected | right: ... | "
                 "percept\n";
         std::vector<char> object_matched(truth.size(), 0);
         for (const recognition::PerceptMatch& m : matches) {
@@ -332,7 +332,8 @@ int main(int argc, char** argv) {
         for (std::size_t t = 0; t < truth.size(); ++t) {
           const recognition::GroundTruthObject& object = truth[t];
           if (!object.visible) continue;
-          text << "funnel " << world.objects[object.object_index].id << " " << object.type;
+          text << "funnel " << world.objects[object.object_index].id << " " << object.type
+               << (recognition::whole_in_both_images(object) ? " whole" : " cut");
           int left_best = -1;
           for (int side = 0; side < 2; ++side) {
             const auto& blobs = side == 0 ? result.left_blobs : result.right_blobs;
