@@ -147,13 +147,19 @@ std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& o
   std::vector<Blob> blobs;
   for (std::size_t b = 0; b < blob_runs.size(); ++b) {
     if (blob_area[b] < options.min_blob_px) continue;
-    if (blob_area[b] < options.min_split_blob_px || options.min_split_blob_px <= 0) {
-      blobs.push_back(make_blob(std::move(blob_runs[b]), bgr_image));
-      continue;
-    }
-    // Two doors joined where the barrier along their reveal breaks: cut along the reveal's slit.
-    for (std::vector<PixelRun>& piece : split_at_slits(std::move(blob_runs[b]), options)) {
-      blobs.push_back(make_blob(std::move(piece), bgr_image));
+    // The two handles of a double door joined by their standoffs: cut between the bars.
+    for (std::vector<PixelRun>& piece :
+         split_twin_bars(std::move(blob_runs[b]), bgr_image, options)) {
+      long area = 0;
+      for (const PixelRun& r : piece) area += r.u_end - r.u_begin;
+      if (area < options.min_split_blob_px || options.min_split_blob_px <= 0) {
+        blobs.push_back(make_blob(std::move(piece), bgr_image));
+        continue;
+      }
+      // Two doors joined where the barrier along their reveal breaks: cut along the reveal's slit.
+      for (std::vector<PixelRun>& front : split_at_slits(std::move(piece), options)) {
+        blobs.push_back(make_blob(std::move(front), bgr_image));
+      }
     }
   }
   return blobs;

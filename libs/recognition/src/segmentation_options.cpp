@@ -23,12 +23,27 @@ int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
 SegmentationOptions segmentation_options_from(const config::Node& section) {
   SegmentationOptions out;
   section.expect_map();
-  section.expect_keys({"max_neighbour_difference_rgb", "max_colour_volume_rgb3", "max_region_px",
-                       "min_region_px", "spatial_bandwidth_px", "colour_bandwidth_rgb",
-                       "max_mean_shift_iterations", "max_mode_distance", "min_blob_px",
-                       "min_line_contrast_rgb", "line_bridge_px", "max_chromaticity_difference",
-                       "max_facet_px", "min_split_blob_px", "max_slit_width_px", "min_slit_support",
-                       "min_split_piece_fraction"});
+  section.expect_keys({"max_neighbour_difference_rgb",
+                       "max_colour_volume_rgb3",
+                       "max_region_px",
+                       "min_region_px",
+                       "spatial_bandwidth_px",
+                       "colour_bandwidth_rgb",
+                       "max_mean_shift_iterations",
+                       "max_mode_distance",
+                       "min_blob_px",
+                       "min_line_contrast_rgb",
+                       "line_bridge_px",
+                       "max_chromaticity_difference",
+                       "max_facet_px",
+                       "min_split_blob_px",
+                       "max_slit_width_px",
+                       "min_slit_support",
+                       "min_split_piece_fraction",
+                       "max_twin_split_px",
+                       "min_twin_gap_support",
+                       "min_twin_piece_fraction",
+                       "min_twin_gap_chromaticity_difference"});
   if (const auto v = section.find("max_neighbour_difference_rgb")) {
     out.max_neighbour_difference_rgb = v->as_double_in(0.0, 1.0);
   }
@@ -68,6 +83,18 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
   }
   if (const auto v = section.find("min_slit_support")) {
     out.min_slit_support = v->as_double_in(0.05, 1.0);
+  }
+  if (const auto v = section.find("max_twin_split_px")) {
+    out.max_twin_split_px = int_in(*v, 0, 100000000);
+  }
+  if (const auto v = section.find("min_twin_gap_support")) {
+    out.min_twin_gap_support = v->as_double_in(0.05, 1.0);
+  }
+  if (const auto v = section.find("min_twin_piece_fraction")) {
+    out.min_twin_piece_fraction = v->as_double_in(0.0, 0.5);
+  }
+  if (const auto v = section.find("min_twin_gap_chromaticity_difference")) {
+    out.min_twin_gap_chromaticity_difference = v->as_double_in(0.0, 1.0);
   }
   if (out.min_region_px > out.max_region_px) {
     section.at("min_region_px")

@@ -145,7 +145,9 @@ TEST(SegmentationOptions, ReadsEveryKey) {
       "  colour_bandwidth_rgb: 0.1\n  max_mean_shift_iterations: 7\n  "
       "max_mode_distance: 0.4\n"
       "  min_blob_px: 9\n  min_split_blob_px: 800\n  max_slit_width_px: 3\n"
-      "  min_slit_support: 0.6\n  min_split_piece_fraction: 0.3\n");
+      "  min_slit_support: 0.6\n  min_split_piece_fraction: 0.3\n  max_twin_split_px: 900\n"
+      "  min_twin_gap_support: 0.7\n  min_twin_piece_fraction: 0.3\n"
+      "  min_twin_gap_chromaticity_difference: 0.1\n");
   EXPECT_DOUBLE_EQ(options.max_neighbour_difference_rgb, 0.05);
   EXPECT_DOUBLE_EQ(options.max_colour_volume_rgb3, 1e-3);
   EXPECT_EQ(options.line_bridge_px, 3);
@@ -163,6 +165,10 @@ TEST(SegmentationOptions, ReadsEveryKey) {
   EXPECT_EQ(options.max_slit_width_px, 3);
   EXPECT_DOUBLE_EQ(options.min_slit_support, 0.6);
   EXPECT_DOUBLE_EQ(options.min_split_piece_fraction, 0.3);
+  EXPECT_EQ(options.max_twin_split_px, 900);
+  EXPECT_DOUBLE_EQ(options.min_twin_gap_support, 0.7);
+  EXPECT_DOUBLE_EQ(options.min_twin_piece_fraction, 0.3);
+  EXPECT_DOUBLE_EQ(options.min_twin_gap_chromaticity_difference, 0.1);
   // Every key is optional.
   const SegmentationOptions defaults = options_from("segmentation: {}\n");
   EXPECT_EQ(defaults.max_region_px, SegmentationOptions{}.max_region_px);
@@ -189,6 +195,12 @@ TEST(SegmentationOptions, BadValuesAreOneLineErrors) {
   EXPECT_NE(error_of("segmentation:\n  max_slit_width_px: 0\n").find("seg.yaml:2:"),
             std::string::npos);
   EXPECT_NE(error_of("segmentation:\n  min_slit_support: 1.5\n").find("seg.yaml:2:"),
+            std::string::npos);
+  EXPECT_NE(error_of("segmentation:\n  min_twin_gap_support: 0\n").find("seg.yaml:2:"),
+            std::string::npos);
+  EXPECT_NE(error_of("segmentation:\n  min_twin_piece_fraction: 0.6\n").find("seg.yaml:2:"),
+            std::string::npos);
+  EXPECT_NE(error_of("segmentation:\n  max_twin_split_px: -1\n").find("seg.yaml:2:"),
             std::string::npos);
   // 0 would accept a blob with no slit point at all.
   EXPECT_NE(error_of("segmentation:\n  min_slit_support: 0\n").find("seg.yaml:2:"),
@@ -266,6 +278,68 @@ TEST(SlitSplit, ADoorWithAHandleHoleOrANotchIsNotSplit) {
   const auto stack =
       runs_where(0, 120, 0, 80, [](int u, int v) { return !(v == 40 && u >= 10 && u < 110); });
   EXPECT_EQ(split_at_slits(stack, SegmentationOptions{}).size(), 1u);
+}
+
+// Twin bars: two brass bars (5 x 60 px) side by side on a blue door, 3 px apart, joined by two
+// standoffs, rotated by `angle_rad` about (50, 50). Returns the blob's runs; paints `image`.
+std::vector<PixelRun> twin_bars(cv::Mat& image, double angle_rad, int gap_px, bool second_bar) {
+  image = cv::Mat(100, 100, CV_8UC3, cv::Scalar(143, 95, 47));  // BGR of the doors' #2f5f8f
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  const auto on_bars = [&](int u, int v) {
+    // Into the bars' frame: x across (bar 1 at x in [-8, -3), bar 2 beyond the gap), y along.
+    const double du = u - 50.0, dv = v - 50.0;
+    const double x = c * du + s * dv, y = -s * du + c * dv;
+    if (std::abs(y) > 30.0) return false;
+    const bool bar1 = x >= -8.0 && x < -3.0;
+    const bool bar2 = second_bar && x >= -3.0 + gap_px && x < 2.0 + gap_px;
+    const bool standoff = (std::abs(y - 24.0) < 1.5 || std::abs(y + 24.0) < 1.5) && x >= -8.0 &&
+                          x < (second_bar ? 2.0 + gap_px : 4.0);
+    return bar1 || bar2 || standoff;
+  };
+  const auto runs = runs_where(0, 100, 0, 100, on_bars);
+  for (const PixelRun& r : runs) {
+    for (int u = r.u_begin; u < r.u_end; ++u) image.at<cv::Vec3b>(r.v, u) = {58, 154, 194};
+  }
+  return runs;
+}
+
+TEST(TwinBarSplit, TwoHandleBarsJoinedByStandoffsAreCutBetweenTheBars) {
+  for (const double angle : {0.0, 0.5, 1.2, M_PI / 2}) {
+    cv::Mat image;
+    const auto runs = twin_bars(image, angle, 3, true);
+    const auto pieces = split_twin_bars(runs, image, SegmentationOptions{});
+    ASSERT_EQ(pieces.size(), 2u) << "angle " << angle;
+    EXPECT_EQ(area_of(pieces[0]) + area_of(pieces[1]), area_of(runs));
+    // Each piece holds one bar: about half the pixels.
+    EXPECT_NEAR(area_of(pieces[0]), area_of(pieces[1]), 0.25 * area_of(runs)) << "angle " << angle;
+    for (const auto& piece : pieces) {
+      for (std::size_t i = 1; i < piece.size(); ++i) {
+        EXPECT_TRUE(piece[i - 1].v < piece[i].v ||
+                    (piece[i - 1].v == piece[i].v && piece[i - 1].u_end < piece[i].u_begin));
+      }
+    }
+  }
+}
+
+TEST(TwinBarSplit, OneBarWithStandoffsARevealOrALargeBlobIsKept) {
+  cv::Mat image;
+  // One bar with its two standoffs ("[" from the side): nothing across a gap in most slices.
+  const auto one = twin_bars(image, 0.3, 3, false);
+  EXPECT_EQ(split_twin_bars(one, image, SegmentationOptions{}).size(), 1u);
+  // Touching bars leave no gap.
+  const auto touching = twin_bars(image, 0.3, 0, true);
+  EXPECT_EQ(split_twin_bars(touching, image, SegmentationOptions{}).size(), 1u);
+  // Two thin fronts at a grazing angle, their reveal showing their own hue: no two bars.
+  const auto fronts = twin_bars(image, 0.0, 3, true);
+  image.setTo(cv::Scalar(58, 154, 194));
+  EXPECT_EQ(split_twin_bars(fronts, image, SegmentationOptions{}).size(), 1u);
+  // Off, or larger than max_twin_split_px.
+  const auto pair = twin_bars(image, 0.0, 3, true);
+  SegmentationOptions off;
+  off.max_twin_split_px = 0;
+  EXPECT_EQ(split_twin_bars(pair, image, off).size(), 1u);
+  off.max_twin_split_px = area_of(pair) - 1;
+  EXPECT_EQ(split_twin_bars(pair, image, off).size(), 1u);
 }
 
 // --- Quality on rendered kitchen frames

@@ -66,6 +66,17 @@ struct SegmentationOptions {
   int max_slit_width_px = 4;
   double min_slit_support = 0.4;
   double min_split_piece_fraction = 0.2;
+  // Twin-bar split (split_twin_bars): a blob of at most max_twin_split_px pixels (0 turns it off)
+  // is cut in two along its major axis where a gap runs between two bars in at least
+  // min_twin_gap_support of its slices across, when each piece is a bar (along at least 60% of
+  // the blob, at least 3 times as long as wide) of at least min_twin_piece_fraction of the pixels
+  // and the gap shows another surface (its mean chromaticity differs from the blob's by at least
+  // min_twin_gap_chromaticity_difference in a component): the two handles of a double door seen
+  // at an angle, joined by their standoffs, in front of the door.
+  int max_twin_split_px = 5000;
+  double min_twin_gap_support = 0.5;
+  double min_twin_piece_fraction = 0.25;
+  double min_twin_gap_chromaticity_difference = 0.06;
 };
 
 // Reads the `segmentation:` section (every key optional, defaults above;
@@ -85,6 +96,21 @@ SegmentationOptions segmentation_options_from(const config::Node& section);
 // pieces (the whole blob when no slit splits it), each sorted as its input.
 std::vector<std::vector<PixelRun>> split_at_slits(std::vector<PixelRun> runs,
                                                   const SegmentationOptions& options);
+
+// Splits the pixels of one blob (runs sorted as in Blob::runs) of two parallel bars side by side:
+// in the blob's principal frame, a cut line along the major axis is supported by every 1-px slice
+// across the blob that has pixels on both sides of it and none within 0.75 px of it. The line
+// with the most support is a cut when that support is at least min_twin_gap_support of the
+// slices, the gap along the line shows another surface (chromaticity, above: not the reveal
+// between two fronts at a grazing angle, which shows their own hue), and the pieces on its two
+// sides are bars (each along at least 60% of the blob's length,
+// at least 3 times as long as wide, at least min_blob_px and min_twin_piece_fraction of the
+// pixels). A bar with its standoffs (a "[" seen from the side) has no such line: beside the bar
+// there is nothing across the gap in most slices. Returns the two pieces, or the whole blob;
+// each sorted as its input. Blobs larger than max_twin_split_px are returned whole.
+std::vector<std::vector<PixelRun>> split_twin_bars(std::vector<PixelRun> runs,
+                                                   const cv::Mat& bgr_image,
+                                                   const SegmentationOptions& options);
 
 // Segments one raw image (CV_8UC3, BGR) into blobs. Const inputs, no shared
 // state: thread-safe.
