@@ -257,10 +257,32 @@ std::vector<StereoPercept> match_and_triangulate(
     if (!(epipolar_px <= max_epipolar_px)) {
       return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
     }
+    // A pair of outlines with one side that is no door edge in one image (tilted: an
+    // occluder's contour, a neighbour's strip) still has its centre from the three good sides
+    // (Triangulator::rectangle_centre_from_one_side); more than one such side is refused.
+    std::optional<Eigen::Vector3d> one_side_centre;
     if (rectangles && options.max_side_tilt_rad > 0.0 && up_in_left_camera.norm() > 0.0) {
-      const double tilt = triangulator.max_side_tilt(
+      const std::array<std::array<double, 2>, 2> tilts = triangulator.side_tilts(
           corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera);
-      if (tilt > std::sin(options.max_side_tilt_rad)) {
+      const double max_sin = std::sin(options.max_side_tilt_rad);
+      int bad = 0, bad_side = -1, bad_image = -1;
+      double tilt = 0.0;
+      for (int side = 0; side < 2; ++side) {
+        for (int image = 0; image < 2; ++image) {
+          tilt = std::max(tilt, tilts[side][image]);
+          if (tilts[side][image] > max_sin) {
+            ++bad;
+            bad_side = side;
+            bad_image = image;
+          }
+        }
+      }
+      if (bad == 1) {
+        one_side_centre = triangulator.rectangle_centre_from_one_side(
+            corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera,
+            1 - bad_side, 1 - bad_image);
+      }
+      if (bad > 0 && !one_side_centre) {
         return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
                       options.max_side_tilt_rad);
       }
@@ -297,8 +319,10 @@ std::vector<StereoPercept> match_and_triangulate(
                             offset * triangulation->left_camera_position_m.normalized();
     bool rectangle = false;
     if (rectangles) {
-      const auto centre = triangulator.rectangle_centre(corner_array(left_corners[l]),
-                                                        corner_array(right_corners[r]));
+      const auto centre = one_side_centre
+                              ? one_side_centre
+                              : triangulator.rectangle_centre(corner_array(left_corners[l]),
+                                                              corner_array(right_corners[r]));
       if (centre) {
         point = *centre;
         triangulation->left_camera_position_m = *centre + offset * centre->normalized();

@@ -52,8 +52,11 @@ struct StereoMatchOptions {
   std::vector<ExtentRange> height_range_m;
   // Rectangle outlines (detections with corners: doors) whose sides nearer the image vertical
   // are not vertical in 3D within this angle, in either image, are no door's front face (an
-  // occluder's contour or a neighbour's strip gave the outline a side): such a pair is refused.
-  // Needs the up direction (match_and_triangulate's up_in_left_camera); 0 turns it off.
+  // occluder's contour or a neighbour's strip gave the outline a side). When only one side in
+  // one image is so tilted, the pair's centre comes from the other three (the good side from
+  // both images, the other side from the image where it is vertical, its ends at the heights of
+  // the good side's ends); otherwise the pair is refused. Needs the up direction
+  // (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
 };
 
