@@ -6,6 +6,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -323,11 +324,23 @@ int main(int argc, char** argv) {
         // Where each ground-truth object was lost: per image, the blob holding most of its
         // pixels (purity, coverage: labelling.hpp), whether a recognizer of its type detected that
         // blob, and whether a percept matched the object.
-        text << "# funnel: object type whole|cut | left: blob purity coverage detected | right: ... | "
+        text << "# funnel: object type whole|cut | left: blob purity coverage detected | right: "
+                "... | "
                 "percept\n";
         std::vector<char> object_matched(truth.size(), 0);
         for (const recognition::PerceptMatch& m : matches) {
           if (m.ground_truth >= 0) object_matched[static_cast<std::size_t>(m.ground_truth)] = 1;
+        }
+        // The stereo match again, with its trace: which gate refused the pair of the object's
+        // two detections, or whether the assignment kept it.
+        std::vector<recognition::StereoPairTrace> pair_trace;
+        {
+          Eigen::Isometry3d ego_T_left, ego_T_right;
+          head.ego_T_cameras(view.joints.positions_rad, ego_T_left, ego_T_right);
+          recognition::match_and_triangulate(
+              result.left_detections, result.right_detections, head.calibration().left,
+              head.calibration().right, ego_T_left.inverse() * ego_T_right, config.options.stereo,
+              ego_T_left.linear().transpose() * Eigen::Vector3d::UnitZ(), &pair_trace);
         }
         for (std::size_t t = 0; t < truth.size(); ++t) {
           const recognition::GroundTruthObject& object = truth[t];
@@ -335,6 +348,7 @@ int main(int argc, char** argv) {
           text << "funnel " << world.objects[object.object_index].id << " " << object.type
                << (recognition::whole_in_both_images(object) ? " whole" : " cut");
           int left_best = -1;
+          std::array<int, 2> detection_index{-1, -1};
           for (int side = 0; side < 2; ++side) {
             const auto& blobs = side == 0 ? result.left_blobs : result.right_blobs;
             const auto& detections = side == 0 ? result.left_detections : result.right_detections;
@@ -360,9 +374,11 @@ int main(int argc, char** argv) {
             bool detected = false;
             Eigen::Vector2d reference = Eigen::Vector2d::Zero();
             std::vector<Eigen::Vector2d> corners;
-            for (const recognition::Detection& d : detections) {
+            for (std::size_t i = 0; i < detections.size(); ++i) {
+              const recognition::Detection& d = detections[i];
               if (d.blob_index == best && d.type == object.type) {
                 detected = true;
+                detection_index[static_cast<std::size_t>(side)] = static_cast<int>(i);
                 reference = d.reference_px;
                 corners = d.corners_px;
               }
@@ -412,6 +428,17 @@ int main(int argc, char** argv) {
                 result.left_detections[static_cast<std::size_t>(p.left_detection)];
             if (d.type == object.type && d.blob_index == left_best) {
               text << " " << (p.ego_position_m - object.ego_position_m).norm();
+            }
+          }
+          for (const recognition::StereoPairTrace& trace : pair_trace) {
+            if (trace.left_detection == detection_index[0] &&
+                trace.right_detection == detection_index[1]) {
+              text << " | stereo " << recognition::stereo_gate_name(trace.refused_by);
+              if (trace.refused_by != recognition::StereoGate::kNone) {
+                text << " " << trace.value << " limit " << trace.limit;
+              } else {
+                text << (trace.assigned ? " assigned" : " not_assigned");
+              }
             }
           }
           text << "\n";

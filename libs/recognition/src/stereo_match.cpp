@@ -23,6 +23,7 @@ struct Candidate {
   // True when the pair is two rectangle outlines whose centre comes from their vertical sides
   // (Triangulator::rectangle_centre); false when from the reference points.
   bool rectangle = false;
+  detail::Triangulation triangulation;
 };
 
 // The epipolar gate of two rectangle outlines' centres: this fraction of their height (pixels),
@@ -200,13 +201,12 @@ std::vector<Candidate> assign(const std::vector<Candidate>& candidates, int left
 
 }  // namespace
 
-std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& left,
-                                                 const std::vector<Detection>& right,
-                                                 const head::CameraIntrinsics& left_intrinsics,
-                                                 const head::CameraIntrinsics& right_intrinsics,
-                                                 const Eigen::Isometry3d& left_T_right,
-                                                 const StereoMatchOptions& options,
-                                                 const Eigen::Vector3d& up_in_left_camera) {
+std::vector<StereoPercept> match_and_triangulate(
+    const std::vector<Detection>& left, const std::vector<Detection>& right,
+    const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
+    const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
+    const Eigen::Vector3d& up_in_left_camera, std::vector<StereoPairTrace>* pair_trace) {
+  if (pair_trace) pair_trace->clear();
   if (left.empty() || right.empty()) return {};
   std::vector<Eigen::Vector2d> left_raw, right_raw;
   left_raw.reserve(left.size());
@@ -230,109 +230,198 @@ std::vector<StereoPercept> match_and_triangulate(const std::vector<Detection>& l
   };
 
   const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
-  std::vector<Candidate> candidates;
-  for (int l = 0; l < static_cast<int>(left.size()); ++l) {
+  // Judges one pair against every gate, in order; a pair that passes all of them is a candidate
+  // with its triangulation. Triangulating here rather than after the assignment means that a
+  // pair which cannot be triangulated is never assigned, and its detections stay free for other
+  // pairs.
+  const auto judge = [&](int l, int r, StereoPairTrace& trace) -> std::optional<Candidate> {
     const Detection& dl = left[l];
+    const Detection& dr = right[r];
+    const auto refuse = [&](StereoGate gate, double value, double limit) {
+      trace.refused_by = gate;
+      trace.value = value;
+      trace.limit = limit;
+      return std::nullopt;
+    };
+    // Position: the right reference point on (near) the left one's epipolar line. For two
+    // rectangle outlines the centres (where the diagonals cross) may differ by a few per cent of
+    // the outline's height when segmentation adds a strip along the top or the bottom in one
+    // image only: the gate widens to kRectangleCentreFraction of the height.
+    const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
+    const double epipolar_px =
+        epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
+    const double max_epipolar_px =
+        rectangles ? std::max(options.max_epipolar_distance_px,
+                              kRectangleCentreFraction * 0.5 * (dl.height_px + dr.height_px))
+                   : options.max_epipolar_distance_px;
+    if (!(epipolar_px <= max_epipolar_px)) {
+      return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+    }
+    // A pair of outlines with one side that is no door edge in one image (tilted: an
+    // occluder's contour, a neighbour's strip) still has its centre from the three good sides
+    // (Triangulator::rectangle_centre_from_one_side); more than one such side is refused.
+    std::optional<Eigen::Vector3d> one_side_centre;
+    if (rectangles && options.max_side_tilt_rad > 0.0 && up_in_left_camera.norm() > 0.0) {
+      const std::array<std::array<double, 2>, 2> tilts = triangulator.side_tilts(
+          corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera);
+      const double max_sin = std::sin(options.max_side_tilt_rad);
+      int bad = 0, bad_side = -1, bad_image = -1;
+      double tilt = 0.0;
+      for (int side = 0; side < 2; ++side) {
+        for (int image = 0; image < 2; ++image) {
+          tilt = std::max(tilt, tilts[side][image]);
+          if (tilts[side][image] > max_sin) {
+            ++bad;
+            bad_side = side;
+            bad_image = image;
+          }
+        }
+      }
+      if (bad == 1) {
+        one_side_centre = triangulator.rectangle_centre_from_one_side(
+            corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera,
+            1 - bad_side, 1 - bad_image);
+      }
+      if (bad > 0 && !one_side_centre) {
+        return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
+                      options.max_side_tilt_rad);
+      }
+    }
+    // Size: both cameras are about equally far from the object, so the areas agree.
+    double area_term = 0.0;
+    if (dl.area_px > 0.0 && dr.area_px > 0.0) {
+      const double log_ratio = std::abs(std::log(dl.area_px / dr.area_px));
+      if (log_ratio > log_max_area_ratio) {
+        return refuse(StereoGate::kAreaRatio, std::exp(log_ratio), options.max_area_ratio);
+      }
+      area_term = log_ratio / log_max_area_ratio;
+    }
+    // Orientation: only defined for elongated blobs (a near-round blob's axis is noise).
+    double orientation_term = 0.0;
+    if (elongation(dl) >= options.min_elongation_for_orientation &&
+        elongation(dr) >= options.min_elongation_for_orientation) {
+      const double difference =
+          axis_difference_rad(dl.major_axis_angle_rad, dr.major_axis_angle_rad);
+      if (difference > options.max_orientation_difference_rad) {
+        return refuse(StereoGate::kOrientation, difference, options.max_orientation_difference_rad);
+      }
+      orientation_term = difference / options.max_orientation_difference_rad;
+    }
+    // The 3D point: for two rectangle outlines the centre from their vertical sides
+    // (Triangulator::rectangle_centre), with the covariance the pixel noise gives the centre
+    // triangulated from the reference points; otherwise from the reference points.
+    const double offset = reference_depth_offset(options, dl.type);
+    std::optional<detail::Triangulation> triangulation =
+        triangulator.triangulate(left_ideal[l], right_ideal[r], options.pixel_sigma_px, offset);
+    if (!triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+    // The gates below measure the visible surface, before the reference point's offset.
+    Eigen::Vector3d point = triangulation->left_camera_position_m -
+                            offset * triangulation->left_camera_position_m.normalized();
+    bool rectangle = false;
+    if (rectangles) {
+      const auto centre = one_side_centre
+                              ? one_side_centre
+                              : triangulator.rectangle_centre(corner_array(left_corners[l]),
+                                                              corner_array(right_corners[r]));
+      if (centre) {
+        point = *centre;
+        triangulation->left_camera_position_m = *centre + offset * centre->normalized();
+        rectangle = true;
+      }
+    }
+    // Disparity range, as the depth of the triangulated point along the left optical axis
+    // (verging eyes make disparity alone depend on where the point is in the image).
+    if (point.z() < options.min_depth_m) {
+      return refuse(StereoGate::kDepth, point.z(), options.min_depth_m);
+    }
+    if (point.z() > options.max_depth_m) {
+      return refuse(StereoGate::kDepth, point.z(), options.max_depth_m);
+    }
+    // Size at that depth: a fronto-parallel length L spans f L / z pixels.
+    const auto* range = extent_range(options, dl.type);
+    if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
+      const double length_m = 0.5 * (dl.major_extent_px + dr.major_extent_px) * point.z() /
+                              (0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px));
+      if (length_m < range->min_m) return refuse(StereoGate::kExtent, length_m, range->min_m);
+      if (length_m > range->max_m) return refuse(StereoGate::kExtent, length_m, range->max_m);
+    }
+    // Height at that depth: the image length of the vertical edges in metres.
+    const auto* height = height_range(options, dl.type);
+    if (height && dl.height_px > 0.0 && dr.height_px > 0.0) {
+      const double height_m = 0.5 * (dl.height_px + dr.height_px) * point.z() /
+                              (0.5 * (left_intrinsics.fy_px + right_intrinsics.fy_px));
+      if (height_m < height->min_m) return refuse(StereoGate::kHeight, height_m, height->min_m);
+      if (height_m > height->max_m) return refuse(StereoGate::kHeight, height_m, height->max_m);
+    }
+    const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
+    Candidate c;
+    c.left = l;
+    c.right = r;
+    c.cost =
+        epipolar_term * epipolar_term + area_term * area_term + orientation_term * orientation_term;
+    c.rectangle = rectangle;
+    c.triangulation = *triangulation;
+    trace.cost = c.cost;
+    return c;
+  };
+
+  std::vector<Candidate> candidates;
+  std::vector<StereoPairTrace> traces;
+  for (int l = 0; l < static_cast<int>(left.size()); ++l) {
     for (int r = 0; r < static_cast<int>(right.size()); ++r) {
-      const Detection& dr = right[r];
-      if (dl.type != dr.type) continue;
-      // Position: the right reference point on (near) the left one's epipolar line. For two
-      // rectangle outlines the centres (where the diagonals cross) may differ by a few per cent of
-      // the outline's height when segmentation adds a strip along the top or the bottom in one
-      // image only: the gate widens to kRectangleCentreFraction of the height.
-      const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
-      const double epipolar_px =
-          epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
-      const double max_epipolar_px =
-          rectangles ? std::max(options.max_epipolar_distance_px,
-                                kRectangleCentreFraction * 0.5 * (dl.height_px + dr.height_px))
-                     : options.max_epipolar_distance_px;
-      if (!(epipolar_px <= max_epipolar_px)) continue;
-      std::optional<Eigen::Vector3d> point;
-      bool rectangle = false;
-      if (rectangles && options.max_side_tilt_rad > 0.0 && up_in_left_camera.norm() > 0.0 &&
-          triangulator.max_side_tilt(corner_array(left_corners[l]), corner_array(right_corners[r]),
-                                     up_in_left_camera) > std::sin(options.max_side_tilt_rad)) {
-        continue;
-      }
-      if (rectangles) {
-        point = triangulator.rectangle_centre(corner_array(left_corners[l]),
-                                              corner_array(right_corners[r]));
-        rectangle = point.has_value();
-      }
-      // Size: both cameras are about equally far from the object, so the areas agree.
-      double area_term = 0.0;
-      if (dl.area_px > 0.0 && dr.area_px > 0.0) {
-        const double log_ratio = std::abs(std::log(dl.area_px / dr.area_px));
-        if (log_ratio > log_max_area_ratio) continue;
-        area_term = log_ratio / log_max_area_ratio;
-      }
-      // Orientation: only defined for elongated blobs (a near-round blob's axis is noise).
-      double orientation_term = 0.0;
-      if (elongation(dl) >= options.min_elongation_for_orientation &&
-          elongation(dr) >= options.min_elongation_for_orientation) {
-        const double difference =
-            axis_difference_rad(dl.major_axis_angle_rad, dr.major_axis_angle_rad);
-        if (difference > options.max_orientation_difference_rad) continue;
-        orientation_term = difference / options.max_orientation_difference_rad;
-      }
-      // Disparity range, as the depth of the triangulated point along the left optical axis
-      // (verging eyes make disparity alone depend on where the point is in the image).
-      if (!point) point = triangulator.point(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
-      if (!point || point->z() < options.min_depth_m || point->z() > options.max_depth_m) continue;
-      // Size at that depth: a fronto-parallel length L spans f L / z pixels.
-      const auto* range = extent_range(options, dl.type);
-      if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
-        const double length_m = 0.5 * (dl.major_extent_px + dr.major_extent_px) * point->z() /
-                                (0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px));
-        if (length_m < range->min_m || length_m > range->max_m) continue;
-      }
-      // Height at that depth: the image length of the vertical edges in metres.
-      const auto* height = height_range(options, dl.type);
-      if (height && dl.height_px > 0.0 && dr.height_px > 0.0) {
-        const double height_m = 0.5 * (dl.height_px + dr.height_px) * point->z() /
-                                (0.5 * (left_intrinsics.fy_px + right_intrinsics.fy_px));
-        if (height_m < height->min_m || height_m > height->max_m) continue;
-      }
-      const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
-      candidates.push_back({l, r,
-                            epipolar_term * epipolar_term + area_term * area_term +
-                                orientation_term * orientation_term,
-                            rectangle});
+      if (left[l].type != right[r].type) continue;
+      StereoPairTrace trace;
+      trace.left_detection = l;
+      trace.right_detection = r;
+      if (std::optional<Candidate> c = judge(l, r, trace)) candidates.push_back(std::move(*c));
+      if (pair_trace) traces.push_back(trace);
     }
   }
 
   std::vector<StereoPercept> out;
   for (const Candidate& c :
        assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()))) {
-    const double offset = reference_depth_offset(options, left[c.left].type);
-    std::optional<detail::Triangulation> triangulation;
-    if (!c.rectangle) {
-      triangulation = triangulator.triangulate(left_ideal[c.left], right_ideal[c.right],
-                                               options.pixel_sigma_px, offset);
-    } else {
-      // The rectangle's centre from its vertical sides (Triangulator::rectangle_centre), with
-      // the covariance the pixel noise gives the centre triangulated from the reference points.
-      triangulation = triangulator.triangulate(left_ideal[c.left], right_ideal[c.right],
-                                               options.pixel_sigma_px, offset);
-      const auto centre = triangulator.rectangle_centre(corner_array(left_corners[c.left]),
-                                                        corner_array(right_corners[c.right]));
-      if (triangulation && centre) {
-        triangulation->left_camera_position_m = *centre + offset * centre->normalized();
-      }
-    }
-    if (!triangulation) continue;
     StereoPercept percept;
     percept.left_detection = c.left;
     percept.right_detection = c.right;
-    percept.left_camera_position_m = triangulation->left_camera_position_m;
-    percept.left_camera_covariance_m2 = triangulation->left_camera_covariance_m2;
+    percept.left_camera_position_m = c.triangulation.left_camera_position_m;
+    percept.left_camera_covariance_m2 = c.triangulation.left_camera_covariance_m2;
     percept.confidence = static_cast<float>(
         std::sqrt(std::clamp(static_cast<double>(left[c.left].confidence), 0.0, 1.0) *
                   std::clamp(static_cast<double>(right[c.right].confidence), 0.0, 1.0)));
     out.push_back(percept);
+    if (pair_trace) {
+      for (StereoPairTrace& t : traces) {
+        if (t.left_detection == c.left && t.right_detection == c.right) t.assigned = true;
+      }
+    }
   }
+  if (pair_trace) *pair_trace = std::move(traces);
   return out;
+}
+
+const char* stereo_gate_name(StereoGate gate) {
+  switch (gate) {
+    case StereoGate::kNone:
+      return "none";
+    case StereoGate::kEpipolar:
+      return "epipolar";
+    case StereoGate::kSideTilt:
+      return "side_tilt";
+    case StereoGate::kAreaRatio:
+      return "area_ratio";
+    case StereoGate::kOrientation:
+      return "orientation";
+    case StereoGate::kTriangulation:
+      return "triangulation";
+    case StereoGate::kDepth:
+      return "depth";
+    case StereoGate::kExtent:
+      return "extent";
+    case StereoGate::kHeight:
+      return "height";
+  }
+  return "?";
 }
 
 }  // namespace vsl::recognition

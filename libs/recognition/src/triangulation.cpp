@@ -9,6 +9,13 @@ namespace {
 // sin^2 of the smallest angle between the rays that still counts as an intersection.
 constexpr double kMinSin2 = 1e-12;
 constexpr double kDifferenceStepPx = 1e-3;
+// rectangle_centre_from_one_side: the smallest sine of the angle between a ray and the
+// horizontal plane it must meet (below it, a pixel of noise moves the point too far along the
+// ray), and the largest horizontal lean of the side found from one image, as a fraction of the
+// good side's length: a sanity bound, since that side's two ends come from independent rays
+// (on the kitchen 0.05 refused most true doors; 0.3 kept them and 1 false pair fewer than 1).
+constexpr double kMinRayElevationSin = 0.05;
+constexpr double kMaxOtherSideLean = 0.3;
 
 }  // namespace
 
@@ -36,20 +43,32 @@ std::array<std::array<int, 2>, 2> vertical_sides(const std::array<Eigen::Vector2
 
 }  // namespace
 
-double Triangulator::max_side_tilt(const std::array<Eigen::Vector2d, 4>& left,
-                                   const std::array<Eigen::Vector2d, 4>& right,
-                                   const Eigen::Vector3d& up) const {
-  double tilt = 0.0;
-  for (const auto& [i, j] : vertical_sides(left)) {
+std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
+    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
+    const Eigen::Vector3d& up) const {
+  std::array<std::array<double, 2>, 2> tilts{};
+  const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
+  for (int s = 0; s < 2; ++s) {
+    const auto [i, j] = sides[s];
     const Eigen::Vector3d nl =
         (left_k_inverse_ * left[i].homogeneous()).cross(left_k_inverse_ * left[j].homogeneous());
     const Eigen::Vector3d nr = (right_k_inverse_in_left_ * right[i].homogeneous())
                                    .cross(right_k_inverse_in_left_ * right[j].homogeneous());
-    for (const Eigen::Vector3d& n : {nl, nr}) {
+    for (int image = 0; image < 2; ++image) {
+      const Eigen::Vector3d& n = image == 0 ? nl : nr;
       const double norm = n.norm() * up.norm();
-      if (!(norm > 0.0)) return 1.0;
-      tilt = std::max(tilt, std::abs(n.dot(up)) / norm);
+      tilts[s][image] = norm > 0.0 ? std::abs(n.dot(up)) / norm : 1.0;
     }
+  }
+  return tilts;
+}
+
+double Triangulator::max_side_tilt(const std::array<Eigen::Vector2d, 4>& left,
+                                   const std::array<Eigen::Vector2d, 4>& right,
+                                   const Eigen::Vector3d& up) const {
+  double tilt = 0.0;
+  for (const auto& side : side_tilts(left, right, up)) {
+    for (const double t : side) tilt = std::max(tilt, t);
   }
   return tilt;
 }
@@ -74,6 +93,53 @@ std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
     }
   }
   return Eigen::Vector3d(sum / 4.0);
+}
+
+std::optional<Eigen::Vector3d> Triangulator::rectangle_centre_from_one_side(
+    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
+    const Eigen::Vector3d& up, int good_side, int other_side_image) const {
+  const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
+  const std::array<int, 2> a = sides[good_side];
+  const std::array<int, 2> b = sides[1 - good_side];
+  const std::array<Eigen::Vector2d, 4>& other = other_side_image == 0 ? left : right;
+  if (verticality(left, a[0], a[1]) < std::sqrt(0.5) ||
+      verticality(right, a[0], a[1]) < std::sqrt(0.5) ||
+      verticality(other, b[0], b[1]) < std::sqrt(0.5) || !(up.norm() > 0.0)) {
+    return std::nullopt;
+  }
+  const Eigen::Vector3d u = up.normalized();
+  // The good side's ends, as rectangle_centre finds them.
+  const Eigen::Vector3d n = (right_k_inverse_in_left_ * right[a[0]].homogeneous())
+                                .cross(right_k_inverse_in_left_ * right[a[1]].homogeneous());
+  std::array<Eigen::Vector3d, 2> good_end, other_end;
+  for (int e = 0; e < 2; ++e) {
+    const Eigen::Vector3d ray = left_k_inverse_ * left[a[e]].homogeneous();
+    const double nr = n.dot(ray);
+    if (!(std::abs(nr) > 1e-3 * n.norm() * ray.norm())) return std::nullopt;
+    const double s = n.dot(right_centre_m_) / nr;
+    if (!(s > 0.0)) return std::nullopt;
+    good_end[e] = s * ray;
+  }
+  // The other side's ends: the rays of one camera through its corners meet the horizontal plane
+  // of the good side's end at the same end (a door's top and bottom edges are horizontal).
+  const Eigen::Vector3d origin = other_side_image == 0 ? Eigen::Vector3d::Zero() : right_centre_m_;
+  const Eigen::Matrix3d& k_inverse =
+      other_side_image == 0 ? left_k_inverse_ : right_k_inverse_in_left_;
+  for (int e = 0; e < 2; ++e) {
+    const Eigen::Vector3d ray = (k_inverse * other[b[e]].homogeneous()).normalized();
+    const double ur = u.dot(ray);
+    if (!(std::abs(ur) > kMinRayElevationSin)) return std::nullopt;
+    const double s = u.dot(good_end[e] - origin) / ur;
+    if (!(s > 0.0)) return std::nullopt;
+    other_end[e] = origin + s * ray;
+  }
+  // Those ends come from one image and the horizontal prior: they must make a vertical side.
+  const Eigen::Vector3d side = other_end[1] - other_end[0];
+  const Eigen::Vector3d horizontal = side - side.dot(u) * u;
+  if (!(horizontal.norm() <= kMaxOtherSideLean * (good_end[1] - good_end[0]).norm())) {
+    return std::nullopt;
+  }
+  return Eigen::Vector3d((good_end[0] + good_end[1] + other_end[0] + other_end[1]) / 4.0);
 }
 
 std::optional<Eigen::Vector3d> Triangulator::midpoint(const Eigen::Vector2d& left_ideal_px,

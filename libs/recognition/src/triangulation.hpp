@@ -57,6 +57,20 @@ class Triangulator {
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
 
+  // The centre of the same rectangle when only one of its vertical sides (`good_side`, in the
+  // order of side_tilts) is a door edge in both images, and the other only in image
+  // `other_side_image` (0 left, 1 right): the other image's outline has an occluder's contour or
+  // a neighbour's strip there. The good side's ends come as in rectangle_centre; the other side's
+  // ends are where the rays of `other_side_image` through its corners meet the horizontal planes
+  // of the good side's ends (the top and bottom edges of a door are horizontal; `up` in the left
+  // camera frame). nullopt when a side used is nearer the image horizontal, a ray runs within
+  // 0.05 rad of its horizontal plane, a point is not in front of the cameras, or the other side
+  // found so leans horizontally by more than 30% of the good side's length.
+  std::optional<Eigen::Vector3d> rectangle_centre_from_one_side(
+      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
+      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
+      const Eigen::Vector3d& up_in_left_camera, int good_side, int other_side_image) const;
+
   // How far from vertical in 3D the rectangle's sides nearer the image vertical are, as seen by
   // both cameras: a 3D line is vertical exactly when the plane its image spans through the camera
   // centre (the plane of the rays through its two ends) holds the up direction. Returns the
@@ -64,6 +78,13 @@ class Triangulator {
   // unit vector in the left camera frame): the sine of the angle between `up` and the plane, 0
   // for a vertical side in any view. A side of a door's outline that is not vertical is no door
   // edge (an occluder's contour, a strip of the neighbour). 1 when a side is degenerate.
+  // The same per side and image: [side][0 left, 1 right], the sides in the order
+  // rectangle_centre takes them.
+  std::array<std::array<double, 2>, 2> side_tilts(
+      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
+      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
+      const Eigen::Vector3d& up_in_left_camera) const;
+
   double max_side_tilt(const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
                        const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
                        const Eigen::Vector3d& up_in_left_camera) const;

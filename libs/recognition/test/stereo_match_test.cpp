@@ -158,19 +158,91 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
                 .size(),
             1u);
   // An occluder cut the bottom-left corner off the left outline (a chair's contour became its
-  // side): 8 px off the door's edge, a side some 0.05 rad from vertical. Refused; accepted without
-  // the up direction or with the gate off.
+  // side): 8 px off the door's edge, a side some 0.05 rad from vertical. The other three sides
+  // are door edges: the left side from the right image, at the heights of the right side's ends,
+  // gives the centre.
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
   Pair cut = p;
   cut.left.corners_px[3].x() += 8.0;
-  EXPECT_TRUE(match_and_triangulate({cut.left}, {cut.right}, calibration_.left, calibration_.right,
+  std::vector<StereoPairTrace> trace;
+  const auto one_side =
+      match_and_triangulate({cut.left}, {cut.right}, calibration_.left, calibration_.right,
+                            left_T_right_, options_, up, &trace);
+  ASSERT_EQ(one_side.size(), 1u);
+  EXPECT_LT((one_side[0].left_camera_position_m - centre).norm(), 1e-3);
+  // The right image's left side is cut too (the occluder in both views): refused, as is an
+  // outline with both sides tilted in one image.
+  Pair both = cut;
+  both.right.corners_px[3].x() += 8.0;
+  EXPECT_TRUE(match_and_triangulate({both.left}, {both.right}, calibration_.left,
+                                    calibration_.right, left_T_right_, options_, up, &trace)
+                  .empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
+  EXPECT_GT(trace[0].value, 0.03);
+  Pair two = cut;
+  two.left.corners_px[2].x() -= 8.0;
+  EXPECT_TRUE(match_and_triangulate({two.left}, {two.right}, calibration_.left, calibration_.right,
                                     left_T_right_, options_, up)
                   .empty());
-  EXPECT_EQ(match({cut.left}, {cut.right}).size(), 1u);
+  // Without the up direction or with the gate off, the sides are not checked.
+  EXPECT_EQ(match({both.left}, {both.right}).size(), 1u);
   options_.max_side_tilt_rad = 0.0;
-  EXPECT_EQ(match_and_triangulate({cut.left}, {cut.right}, calibration_.left, calibration_.right,
+  EXPECT_EQ(match_and_triangulate({both.left}, {both.right}, calibration_.left, calibration_.right,
                                   left_T_right_, options_, up)
                 .size(),
             1u);
+}
+
+TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
+  // Two left detections of one door compete for its right detection. The cheaper pair (its
+  // reference points exactly on one epipolar line) has a left reference point 60 px to the left:
+  // the rays through the reference points diverge (negative disparity), so it has no covariance
+  // and cannot be triangulated, although its outline's centre can. It must be refused as a
+  // candidate, leaving the right detection to the other pair, not assigned and then dropped.
+  const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_);
+  Detection behind = p.left;
+  behind.reference_px.x() -= 60.0;
+  Detection other = p.left;
+  other.reference_px.y() += 2.0;
+  std::vector<StereoPairTrace> trace;
+  const auto percepts =
+      match_and_triangulate({behind, other}, {p.right}, calibration_.left, calibration_.right,
+                            left_T_right_, options_, Eigen::Vector3d::Zero(), &trace);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_EQ(percepts[0].left_detection, 1);
+  EXPECT_LT((percepts[0].left_camera_position_m - Eigen::Vector3d(0.1, 0.3, 2.5)).norm(), 1e-3);
+  ASSERT_EQ(trace.size(), 2u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kTriangulation);
+  EXPECT_FALSE(trace[0].assigned);
+  EXPECT_EQ(trace[1].refused_by, StereoGate::kNone);
+  EXPECT_TRUE(trace[1].assigned);
+  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "triangulation");
+}
+
+TEST_F(StereoMatchTest, PairTraceNamesTheRefusingGate) {
+  const Pair a = pair_of({0.2, 0.1, 2.0});
+  const Pair b = pair_of({-0.3, 0.4, 2.0});  // another row: off a's epipolar line
+  Detection small = b.right;
+  small.area_px = 20.0;  // area ratio 6 against a's left
+  std::vector<StereoPairTrace> trace;
+  match_and_triangulate({a.left}, {a.right, small}, calibration_.left, calibration_.right,
+                        left_T_right_, options_, Eigen::Vector3d::Zero(), &trace);
+  ASSERT_EQ(trace.size(), 2u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
+  EXPECT_TRUE(trace[0].assigned);
+  EXPECT_EQ(trace[1].refused_by, StereoGate::kEpipolar);
+  EXPECT_GT(trace[1].value, trace[1].limit);
+  // Pairs of different types are not traced; an empty side clears the trace.
+  Detection door = a.right;
+  door.type = "door";
+  match_and_triangulate({a.left}, {door}, calibration_.left, calibration_.right, left_T_right_,
+                        options_, Eigen::Vector3d::Zero(), &trace);
+  EXPECT_TRUE(trace.empty());
+  trace.resize(3);
+  match_and_triangulate({}, {a.right}, calibration_.left, calibration_.right, left_T_right_,
+                        options_, Eigen::Vector3d::Zero(), &trace);
+  EXPECT_TRUE(trace.empty());
 }
 
 TEST_F(StereoMatchTest, DisparityRangeAsDepth) {

@@ -52,8 +52,11 @@ struct StereoMatchOptions {
   std::vector<ExtentRange> height_range_m;
   // Rectangle outlines (detections with corners: doors) whose sides nearer the image vertical
   // are not vertical in 3D within this angle, in either image, are no door's front face (an
-  // occluder's contour or a neighbour's strip gave the outline a side): such a pair is refused.
-  // Needs the up direction (match_and_triangulate's up_in_left_camera); 0 turns it off.
+  // occluder's contour or a neighbour's strip gave the outline a side). When only one side in
+  // one image is so tilted, the pair's centre comes from the other three (the good side from
+  // both images, the other side from the image where it is vertical, its ends at the heights of
+  // the good side's ends); otherwise the pair is refused. Needs the up direction
+  // (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
 };
 
@@ -71,6 +74,32 @@ struct StereoPercept {
   float confidence = 0.0f;
 };
 
+// The gates of match_and_triangulate, in the order they are tested (kTriangulation: the pair's
+// point cannot be triangulated, e.g. it is not in front of both cameras).
+enum class StereoGate {
+  kNone,
+  kEpipolar,
+  kSideTilt,
+  kAreaRatio,
+  kOrientation,
+  kTriangulation,
+  kDepth,
+  kExtent,
+  kHeight
+};
+const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
+
+// How one left-right pair fared in match_and_triangulate.
+struct StereoPairTrace {
+  int left_detection = -1;
+  int right_detection = -1;
+  StereoGate refused_by = StereoGate::kNone;  // kNone: a candidate of the assignment
+  double value = 0.0;  // the refusing gate's quantity (px, rad, ratio or m) and its limit
+  double limit = 0.0;
+  double cost = 0.0;      // a candidate's normalized cost
+  bool assigned = false;  // a candidate the assignment kept (a percept)
+};
+
 // Matches detections of the same type one to one (each left detection to at most one right
 // detection and vice versa) and triangulates each pair. A pair is admissible when it passes every
 // gate (same type, epipolar distance, depth range, area ratio, orientation of elongated blobs,
@@ -86,10 +115,15 @@ struct StereoPercept {
 // two detections' confidences, sqrt(c_l c_r): symmetric, in [0, 1], and on the scale of a single
 // detection's (two views of confidence c give c; the product would give c^2, penalizing every
 // stereo percept for having been seen twice).
+//
+// `pair_trace`, when given, receives one entry per pair of detections of the same type: the first
+// gate that refused it, or none and whether the assignment kept it (a debug aid: where the
+// evaluation's ground-truth pairs were lost).
 std::vector<StereoPercept> match_and_triangulate(
     const std::vector<Detection>& left, const std::vector<Detection>& right,
     const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
     const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
-    const Eigen::Vector3d& up_in_left_camera = Eigen::Vector3d::Zero());
+    const Eigen::Vector3d& up_in_left_camera = Eigen::Vector3d::Zero(),
+    std::vector<StereoPairTrace>* pair_trace = nullptr);
 
 }  // namespace vsl::recognition
