@@ -29,6 +29,7 @@ constexpr double kInlierPx = 1.5;      // a slit point on the line
 constexpr int kMinSlitRows = 24;       // rows in which the line crosses the blob
 constexpr int kCandidatesPerEnd = 12;  // slit points tried at each end of the blob
 constexpr int kMaxLevels = 3;          // splits of splits
+constexpr int kMaxSlitsTried = 4;      // slits tried per blob when the best cuts off a strip
 
 // The slit points within kInlierPx of `line`, counted once per row.
 template <typename Visit>
@@ -44,8 +45,19 @@ int count_on_line(const std::vector<SlitPoint>& points, const SlitLine& line, Vi
   return count;
 }
 
+// Whether `line` is (about) one of `rejected`: within kInlierPx of it at the blob's top and
+// bottom rows.
+bool among(const SlitLine& line, const std::vector<SlitLine>& rejected, int v_min, int v_max) {
+  return std::any_of(rejected.begin(), rejected.end(), [&](const SlitLine& r) {
+    return std::abs(line.at(v_min) - r.at(v_min)) <= 2.0 * kInlierPx &&
+           std::abs(line.at(v_max) - r.at(v_max)) <= 2.0 * kInlierPx;
+  });
+}
+
+// The slit line through the most slit points, other than the `rejected` ones.
 std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
-                                  const SegmentationOptions& options) {
+                                  const SegmentationOptions& options,
+                                  const std::vector<SlitLine>& rejected) {
   const int v_min = runs.front().v;
   const int v_max = runs.back().v;
   const int rows = v_max - v_min + 1;
@@ -87,7 +99,7 @@ std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
       const SlitPoint& b = points[j];
       if (4 * (b.v - a.v) < rows) continue;
       const SlitLine line{double(a.v), a.u, (b.u - a.u) / double(b.v - a.v)};
-      if (std::abs(line.slope) > kMaxSlope) continue;
+      if (std::abs(line.slope) > kMaxSlope || among(line, rejected, v_min, v_max)) continue;
       const int count = count_on_line(points, line, [](const SlitPoint&) {});
       if (count > best_count) {
         best_count = count;
@@ -130,38 +142,44 @@ void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int l
            std::vector<std::vector<PixelRun>>& out) {
   long area = 0;
   for (const PixelRun& r : runs) area += r.u_end - r.u_begin;
-  const std::optional<SlitLine> line =
-      level < kMaxLevels && area >= options.min_split_blob_px && !runs.empty()
-          ? find_slit(runs, options)
-          : std::nullopt;
-  if (!line) {
+  if (level >= kMaxLevels || area < options.min_split_blob_px || runs.empty()) {
     out.push_back(std::move(runs));
     return;
   }
-  std::vector<PixelRun> left, right;
-  long left_area = 0, right_area = 0;
-  for (const PixelRun& r : runs) {
-    // Pixel centres at integers: left of the line are the columns u < line(v).
-    const int cut = static_cast<int>(std::ceil(line->at(r.v)));
-    if (r.u_begin < cut) {
-      left.push_back({r.v, r.u_begin, std::min(r.u_end, cut)});
-      left_area += left.back().u_end - left.back().u_begin;
+  // The best-supported slit may be a groove that would cut a strip off (below); then the next
+  // best, up to kMaxSlitsTried: the groove of a shaker door's stile often has more support than
+  // the reveal beside it, which a handle interrupts.
+  std::vector<SlitLine> rejected;
+  for (int attempt = 0; attempt < kMaxSlitsTried; ++attempt) {
+    const std::optional<SlitLine> line = find_slit(runs, options, rejected);
+    if (!line) break;
+    std::vector<PixelRun> left, right;
+    long left_area = 0, right_area = 0;
+    for (const PixelRun& r : runs) {
+      // Pixel centres at integers: left of the line are the columns u < line(v).
+      const int cut = static_cast<int>(std::ceil(line->at(r.v)));
+      if (r.u_begin < cut) {
+        left.push_back({r.v, r.u_begin, std::min(r.u_end, cut)});
+        left_area += left.back().u_end - left.back().u_begin;
+      }
+      if (r.u_end > cut) {
+        right.push_back({r.v, std::max(r.u_begin, cut), r.u_end});
+        right_area += right.back().u_end - right.back().u_begin;
+      }
     }
-    if (r.u_end > cut) {
-      right.push_back({r.v, std::max(r.u_begin, cut), r.u_end});
-      right_area += right.back().u_end - right.back().u_begin;
+    // Each piece a front of its own: not a strip such as a shaker door's stile, which the groove
+    // between the stile and the recessed panel (a slit too) would cut off.
+    if (left_area < options.min_blob_px || right_area < options.min_blob_px ||
+        static_cast<double>(std::min(left_area, right_area)) <
+            options.min_split_piece_fraction * static_cast<double>(area)) {
+      rejected.push_back(*line);
+      continue;
     }
-  }
-  // Each piece a front of its own: not a strip such as a shaker door's stile, which the groove
-  // between the stile and the recessed panel (a slit too) would cut off.
-  if (left_area < options.min_blob_px || right_area < options.min_blob_px ||
-      static_cast<double>(std::min(left_area, right_area)) <
-          options.min_split_piece_fraction * static_cast<double>(area)) {
-    out.push_back(std::move(runs));
+    split(std::move(left), options, level + 1, out);
+    split(std::move(right), options, level + 1, out);
     return;
   }
-  split(std::move(left), options, level + 1, out);
-  split(std::move(right), options, level + 1, out);
+  out.push_back(std::move(runs));
 }
 
 }  // namespace

@@ -256,6 +256,20 @@ TEST(SlitSplit, SlantedRevealOfThreeDoorsGivesThreePieces) {
   EXPECT_EQ(split_at_slits(runs, SegmentationOptions{}).size(), 3u);
 }
 
+TEST(SlitSplit, WhenTheBestSlitCutsOffAStripTheNextBestIsTried) {
+  // Two doors (columns 0-59 and 62-121, 120 rows) whose reveal (columns 60-61) the barrier lost
+  // for 50 rows beside a handle; the right door's shaker groove (column 112) runs the whole
+  // height and has more slit points than the reveal, but cuts off a strip of 9 columns.
+  const auto runs = runs_where(0, 122, 0, 120, [](int u, int v) {
+    const bool reveal = (u == 60 || u == 61) && !(v >= 30 && v < 80);
+    return !reveal && u != 112;
+  });
+  const auto pieces = split_at_slits(runs, SegmentationOptions{});
+  ASSERT_EQ(pieces.size(), 2u);
+  for (const PixelRun& r : pieces[0]) EXPECT_LE(r.u_end, 62);
+  for (const PixelRun& r : pieces[1]) EXPECT_GE(r.u_begin, 60);
+}
+
 TEST(SlitSplit, ADoorWithAHandleHoleOrANotchIsNotSplit) {
   // A vertical handle bar 4 px wide over a quarter of the door's height leaves a gap too short
   // to be a reveal; a blob below min_split_blob_px and a blob with min_split_blob_px 0 are kept.

@@ -90,10 +90,12 @@ SegmentationOptions segmentation_options_from(const config::Node& section);
 // (within 1.5 px), refitted by least squares, is a slit when the rows with a slit point on it
 // are at least min_slit_support of the rows in which the line crosses the blob (and at least 24
 // of them). The pixels left of the line and those right of it are then two pieces (each at least
-// min_blob_px and min_split_piece_fraction of the blob), each split again (at most 3 levels). The
-// reveal between two flush doors is such a slit along most of its length: the line barrier (above)
-// keeps it out of every region except where it breaks, and there the two doors join. Returns the
-// pieces (the whole blob when no slit splits it), each sorted as its input.
+// min_blob_px and min_split_piece_fraction of the blob), each split again (at most 3 levels). When
+// the pieces of the best line fail that (a shaker door's groove, which would cut its stile off),
+// the next best line is tried, up to 4. The reveal between two flush doors is such a slit along
+// most of its length: the line barrier (above) keeps it out of every region except where it breaks,
+// and there the two doors join. Returns the pieces (the whole blob when no slit splits it), each
+// sorted as its input.
 std::vector<std::vector<PixelRun>> split_at_slits(std::vector<PixelRun> runs,
                                                   const SegmentationOptions& options);
 
