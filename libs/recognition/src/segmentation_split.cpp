@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "vsl/recognition/segmentation.hpp"
 
@@ -138,17 +140,11 @@ std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
   return line;
 }
 
-void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int level,
-           std::vector<std::vector<PixelRun>>& out) {
-  long area = 0;
-  for (const PixelRun& r : runs) area += r.u_end - r.u_begin;
-  if (level >= kMaxLevels || area < options.min_split_blob_px || runs.empty()) {
-    out.push_back(std::move(runs));
-    return;
-  }
-  // The best-supported slit may be a groove that would cut a strip off (below); then the next
-  // best, up to kMaxSlitsTried: the groove of a shaker door's stile often has more support than
-  // the reveal beside it, which a handle interrupts.
+// The blob cut in two along its best slit whose pieces are both fronts (below), trying up to
+// kMaxSlitsTried lines: the groove of a shaker door's stile often has more support than the
+// reveal beside it, which a handle interrupts. Nothing when no slit gives two fronts.
+std::optional<std::pair<std::vector<PixelRun>, std::vector<PixelRun>>> cut_at_slit(
+    const std::vector<PixelRun>& runs, long area, const SegmentationOptions& options) {
   std::vector<SlitLine> rejected;
   for (int attempt = 0; attempt < kMaxSlitsTried; ++attempt) {
     const std::optional<SlitLine> line = find_slit(runs, options, rejected);
@@ -175,11 +171,64 @@ void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int l
       rejected.push_back(*line);
       continue;
     }
-    split(std::move(left), options, level + 1, out);
-    split(std::move(right), options, level + 1, out);
+    return std::make_pair(std::move(left), std::move(right));
+  }
+  return std::nullopt;
+}
+
+// The runs of the blob mirrored about the diagonal (u, v) -> (v, u), sorted by (v, u_begin):
+// horizontal slits become vertical ones.
+std::vector<PixelRun> transposed(const std::vector<PixelRun>& runs) {
+  int u_min = runs.front().u_begin, u_max = runs.front().u_end;
+  for (const PixelRun& r : runs) {
+    u_min = std::min(u_min, r.u_begin);
+    u_max = std::max(u_max, r.u_end);
+  }
+  const int v_min = runs.front().v, rows = runs.back().v - v_min + 1;
+  // Column-major occupancy of the bounding box: each column of the blob becomes a row.
+  std::vector<unsigned char> occupied(static_cast<std::size_t>(u_max - u_min) * rows, 0);
+  for (const PixelRun& r : runs) {
+    for (int u = r.u_begin; u < r.u_end; ++u) {
+      occupied[static_cast<std::size_t>(u - u_min) * rows + (r.v - v_min)] = 1;
+    }
+  }
+  std::vector<PixelRun> out;
+  for (int u = u_min; u < u_max; ++u) {
+    const unsigned char* column = &occupied[static_cast<std::size_t>(u - u_min) * rows];
+    for (int k = 0; k < rows;) {
+      if (!column[k]) {
+        ++k;
+        continue;
+      }
+      const int begin = k;
+      while (k < rows && column[k]) ++k;
+      out.push_back({u, v_min + begin, v_min + k});
+    }
+  }
+  return out;
+}
+
+void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int level,
+           std::vector<std::vector<PixelRun>>& out) {
+  long area = 0;
+  for (const PixelRun& r : runs) area += r.u_end - r.u_begin;
+  if (level >= kMaxLevels || area < options.min_split_blob_px || runs.empty()) {
+    out.push_back(std::move(runs));
     return;
   }
-  out.push_back(std::move(runs));
+  auto pieces = cut_at_slit(runs, area, options);
+  // A horizontal slit: the reveal between the drawer fronts of a stack, or between a drawer and
+  // the door below it, found as a vertical slit of the transposed blob.
+  if (!pieces && options.split_horizontal_slits) {
+    pieces = cut_at_slit(transposed(runs), area, options);
+    if (pieces) *pieces = {transposed(pieces->first), transposed(pieces->second)};
+  }
+  if (!pieces) {
+    out.push_back(std::move(runs));
+    return;
+  }
+  split(std::move(pieces->first), options, level + 1, out);
+  split(std::move(pieces->second), options, level + 1, out);
 }
 
 }  // namespace
