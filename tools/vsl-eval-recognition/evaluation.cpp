@@ -32,6 +32,9 @@ std::vector<recognition::PerceptMatch> tally_frame(
   }
   const std::vector<recognition::PerceptMatch> matches =
       recognition::match_percepts(percepts, ground_truth, max_error_m);
+  // Objects outside the ground truth a percept was already left out for: one each, so a second
+  // percept of one of them is a false positive, as a second percept of a ground-truth object is.
+  std::vector<char> taken(ground_truth.size(), 0);
   for (ClassTally& c : tally.classes) {
     for (const recognition::GroundTruthObject& object : ground_truth) {
       if (!object.visible || object.type != c.type) continue;
@@ -54,10 +57,12 @@ std::vector<recognition::PerceptMatch> tally_frame(
             matches[i].error_m);
         continue;
       }
-      for (const recognition::GroundTruthObject& object : ground_truth) {
-        if (!object.visible && object.type == c.type &&
+      for (std::size_t k = 0; k < ground_truth.size(); ++k) {
+        const recognition::GroundTruthObject& object = ground_truth[k];
+        if (!taken[k] && !object.visible && object.type == c.type &&
             (object.ego_position_m - percepts[i].ego_position_m).norm() <= max_error_m) {
           ++c.false_positives_on_other_objects;
+          taken[k] = 1;
           break;
         }
       }

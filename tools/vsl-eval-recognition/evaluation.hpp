@@ -1,6 +1,7 @@
 // Per-class tallies of a recognition evaluation (docs/recognition.md): percepts matched to the
 // ground truth (labelling.hpp: within 10 cm of a visible object of their type, one to one),
-// precision over every percept, recall over the visible objects, the 3D error of the matched
+// precision over the true and false positives (percepts of real objects the ground truth leaves
+// out are neither), recall over the visible objects, the 3D error of the matched
 // percepts by distance band, and the time per stereo pair.
 #pragma once
 
@@ -28,12 +29,26 @@ struct ClassTally {
   // (recognition::whole_in_both_images: not cut by the image border).
   int ground_truth_whole = 0;
   int true_positives_whole = 0;
-  // False positives within the match distance of a real object of the type that is not in the
-  // ground truth (farther than the limit, or less than half visible): not wrong, just not counted.
+  // Unmatched percepts within the match distance of a real object of the type that is not in
+  // the ground truth (farther than the limit, or less than half visible): a correct percept of an
+  // object the ground truth leaves out, neither a true nor a false positive (as detections of
+  // "difficult" or "don't care" objects in the PASCAL VOC and KITTI benchmarks).
   int false_positives_on_other_objects = 0;
   std::array<std::vector<double>, kDistanceBands> errors_m;  // matched percepts' 3D errors
 
-  double precision() const { return percepts == 0 ? 1.0 : double(true_positives) / percepts; }
+  int false_positives() const {
+    return percepts - true_positives - false_positives_on_other_objects;
+  }
+  // Over the percepts that are true or false positives (the others left out, as above).
+  double precision() const {
+    const int judged = true_positives + false_positives();
+    return judged == 0 ? 1.0 : double(true_positives) / judged;
+  }
+  // Over every percept in range: the correct percepts of objects outside the ground truth count
+  // as false positives.
+  double precision_strict() const {
+    return percepts == 0 ? 1.0 : double(true_positives) / percepts;
+  }
   double recall() const { return ground_truth == 0 ? 1.0 : double(true_positives) / ground_truth; }
   double recall_whole() const {
     return ground_truth_whole == 0 ? 1.0 : double(true_positives_whole) / ground_truth_whole;

@@ -42,22 +42,27 @@ TEST(RecognitionEvaluation, TalliesPrecisionRecallErrorsAndRange) {
     out.confidence = 0.5f;
     return out;
   };
-  result.percepts = {percept({2.52, 0.0, 1.0}),   // true positive, 2 cm, band 2-3 m
-                     percept({1.0, -1.0, 0.52}),  // on the hidden door
-                     percept({6.0, 0.0, 1.0}),    // beyond range: not counted
-                     percept({0.5, 0.5, 1.0})};   // on nothing
+  result.percepts = {percept({2.52, 0.0, 1.0}),    // true positive, 2 cm, band 2-3 m
+                     percept({1.0, -1.0, 0.52}),   // on the hidden door
+                     percept({6.0, 0.0, 1.0}),     // beyond range: not counted
+                     percept({0.5, 0.5, 1.0}),     // on nothing
+                     percept({1.0, -1.0, 0.48})};  // the hidden door again: a false positive
   EvaluationTally tally;
   tally.classes.emplace_back().type = "door";
   const auto matches = tally_frame(truth, result, 12.0, 4.0, 0.1, tally);
-  ASSERT_EQ(matches.size(), 4u);
+  ASSERT_EQ(matches.size(), 5u);
   EXPECT_EQ(matches[0].ground_truth, 0);
   const ClassTally& c = tally.classes[0];
   EXPECT_EQ(c.ground_truth, 2);
-  EXPECT_EQ(c.percepts, 3);
+  EXPECT_EQ(c.percepts, 4);
   EXPECT_EQ(c.true_positives, 1);
+  // The first percept of the hidden door is neither true nor false; the second is false, as is
+  // the one on nothing.
   EXPECT_EQ(c.false_positives_on_other_objects, 1);
+  EXPECT_EQ(c.false_positives(), 2);
   EXPECT_EQ(c.out_of_range, 1);
   EXPECT_NEAR(c.precision(), 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(c.precision_strict(), 1.0 / 4.0, 1e-12);
   EXPECT_NEAR(c.recall(), 0.5, 1e-12);
   ASSERT_EQ(c.errors_m[2].size(), 1u);
   EXPECT_NEAR(c.errors_m[2][0], 0.02, 1e-12);

@@ -158,24 +158,27 @@ void print_table(const Options& options, const tools::EvaluationTally& tally) {
       "visible in both images\n",
       options.world_file.c_str(), tally.frames, static_cast<unsigned long long>(options.seed),
       options.max_distance_m);
-  std::printf("%-8s %8s %8s %8s %8s %10s %8s %14s %10s %10s\n", "class", "objects", "percepts",
-              "true+", "false+", "precision", "recall", "recall whole", "false+ on", "beyond");
-  std::printf("%-8s %8s %8s %8s %8s %10s %8s %14s %10s %10s\n", "", "", "", "", "", "", "",
-              "(objects)", "non-truth", "range");
+  std::printf("%-8s %8s %8s %8s %8s %10s %8s %14s %10s %10s %10s\n", "class", "objects", "percepts",
+              "true+", "false+", "precision", "recall", "recall whole", "on non-", "precision",
+              "beyond");
+  std::printf("%-8s %8s %8s %8s %8s %10s %8s %14s %10s %10s %10s\n", "", "", "", "", "", "", "",
+              "(objects)", "truth", "strict", "range");
   for (const tools::ClassTally& c : tally.classes) {
-    std::printf("%-8s %8d %8d %8d %8d %9.1f%% %7.1f%% %7.1f%% %5d %10d %10d\n", c.type.c_str(),
-                c.ground_truth, c.percepts, c.true_positives, c.percepts - c.true_positives,
+    std::printf("%-8s %8d %8d %8d %8d %9.1f%% %7.1f%% %7.1f%% %5d %10d %9.1f%% %10d\n",
+                c.type.c_str(), c.ground_truth, c.percepts, c.true_positives, c.false_positives(),
                 100.0 * c.precision(), 100.0 * c.recall(), 100.0 * c.recall_whole(),
-                c.ground_truth_whole, c.false_positives_on_other_objects, c.out_of_range);
+                c.ground_truth_whole, c.false_positives_on_other_objects,
+                100.0 * c.precision_strict(), c.out_of_range);
   }
   std::printf(
       "(recall whole: over the ground-truth objects whose whole outline lies inside both images, "
       "not cut by the image border)\n");
   std::printf(
-      "(false+ on non-truth: false positives within the match distance of a real object of "
-      "the type that is not ground truth, i.e. less than half visible; beyond range: "
-      "percepts farther than %.2f m, not counted)\n",
-      options.max_distance_m + options.match_distance_m);
+      "(on non-truth: percepts within the match distance of a real object of the type that is "
+      "not ground truth (farther than %.1f m or less than half visible), neither true nor false "
+      "positives; precision strict counts them as false positives; beyond range: percepts "
+      "farther than %.2f m, not counted)\n",
+      options.max_distance_m, options.max_distance_m + options.match_distance_m);
   std::printf("3D error of matched percepts by distance from the left camera (cm):\n");
   std::printf("%-8s %-7s %6s %8s %8s\n", "class", "band", "n", "median", "p90");
   for (const tools::ClassTally& c : tally.classes) {
@@ -212,11 +215,11 @@ void write_json(std::ostream& out, const Options& options, const tools::Evaluati
     json.key("ground_truth_objects").number(c.ground_truth);
     json.key("percepts").number(c.percepts);
     json.key("true_positives").number(c.true_positives);
-    json.key("false_positives").number(c.percepts - c.true_positives);
-    json.key("false_positives_on_objects_outside_ground_truth")
-        .number(c.false_positives_on_other_objects);
+    json.key("false_positives").number(c.false_positives());
+    json.key("percepts_on_objects_outside_ground_truth").number(c.false_positives_on_other_objects);
     json.key("percepts_beyond_range").number(c.out_of_range);
     json.key("precision").number(c.precision());
+    json.key("precision_strict").number(c.precision_strict());
     json.key("recall").number(c.recall());
     json.key("ground_truth_objects_whole_in_both_images").number(c.ground_truth_whole);
     json.key("true_positives_whole_in_both_images").number(c.true_positives_whole);
