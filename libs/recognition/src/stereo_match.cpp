@@ -323,6 +323,15 @@ std::vector<StereoPercept> match_and_triangulate(
                               ? one_side_centre
                               : triangulator.rectangle_centre(corner_array(left_corners[l]),
                                                               corner_array(right_corners[r]));
+      // Both sides measured: the edges between their ends must be level.
+      if (centre && !one_side_centre && options.max_edge_slope_rad > 0.0 &&
+          up_in_left_camera.norm() > 0.0) {
+        const std::optional<double> slope = triangulator.rectangle_edge_slope(
+            corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera);
+        if (slope && std::atan(*slope) > options.max_edge_slope_rad) {
+          return refuse(StereoGate::kEdgeSlope, std::atan(*slope), options.max_edge_slope_rad);
+        }
+      }
       if (centre) {
         point = *centre;
         triangulation->left_camera_position_m = *centre + offset * centre->normalized();
@@ -420,6 +429,8 @@ const char* stereo_gate_name(StereoGate gate) {
       return "extent";
     case StereoGate::kHeight:
       return "height";
+    case StereoGate::kEdgeSlope:
+      return "edge_slope";
   }
   return "?";
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vsl::recognition::detail {
 namespace {
@@ -73,10 +74,11 @@ double Triangulator::max_side_tilt(const std::array<Eigen::Vector2d, 4>& left,
   return tilt;
 }
 
-std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
+std::optional<std::array<Eigen::Vector3d, 4>> Triangulator::rectangle_ends(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right) const {
   const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  std::array<Eigen::Vector3d, 4> ends;
+  int e = 0;
   for (const auto& [i, j] : sides) {
     if (verticality(left, i, j) < std::sqrt(0.5) || verticality(right, i, j) < std::sqrt(0.5)) {
       return std::nullopt;
@@ -89,10 +91,36 @@ std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
       if (!(std::abs(na) > 1e-3 * n.norm() * a.norm())) return std::nullopt;
       const double s = n.dot(right_centre_m_) / na;
       if (!(s > 0.0)) return std::nullopt;
-      sum += s * a;
+      ends[static_cast<std::size_t>(e++)] = s * a;
     }
   }
-  return Eigen::Vector3d(sum / 4.0);
+  return ends;
+}
+
+std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
+    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right) const {
+  const auto ends = rectangle_ends(left, right);
+  if (!ends) return std::nullopt;
+  return Eigen::Vector3d(((*ends)[0] + (*ends)[1] + (*ends)[2] + (*ends)[3]) / 4.0);
+}
+
+std::optional<double> Triangulator::rectangle_edge_slope(
+    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
+    const Eigen::Vector3d& up) const {
+  const auto ends = rectangle_ends(left, right);
+  if (!ends || !(up.norm() > 0.0)) return std::nullopt;
+  const Eigen::Vector3d u = up.normalized();
+  double slope = 0.0;
+  // The edges join the first ends of the two sides, and the second ends.
+  for (const auto& [a, b] : {std::pair{0, 2}, std::pair{1, 3}}) {
+    const Eigen::Vector3d edge =
+        (*ends)[static_cast<std::size_t>(b)] - (*ends)[static_cast<std::size_t>(a)];
+    const double rise = std::abs(edge.dot(u));
+    const double run = (edge - edge.dot(u) * u).norm();
+    if (!(run > 0.0)) return std::nullopt;
+    slope = std::max(slope, rise / run);
+  }
+  return slope;
 }
 
 std::optional<Eigen::Vector3d> Triangulator::rectangle_centre_from_one_side(

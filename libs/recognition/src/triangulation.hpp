@@ -57,6 +57,24 @@ class Triangulator {
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
 
+  // The four ends of the two vertical sides, as rectangle_centre finds them (left camera frame,
+  // metres): the first side's two ends, then the second's, each side's ends in the order of its
+  // corners (so ends 0 and 2 bound one horizontal edge, 1 and 3 the other).
+  std::optional<std::array<Eigen::Vector3d, 4>> rectangle_ends(
+      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
+      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
+
+  // The larger slope (rise over run, `up` a vector in the left camera frame) of the rectangle's
+  // two other edges between those ends. A door's top and bottom edges are level; where one side's
+  // horizontal position disagrees between the images (a stile lost in one image, a strip of the
+  // neighbour added), that side's depth is wrong, and its ends, on the left rays through its
+  // corners, move up or down with it: the edges slope. nullopt as rectangle_centre, or when an
+  // edge is vertical.
+  std::optional<double> rectangle_edge_slope(
+      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
+      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
+      const Eigen::Vector3d& up_in_left_camera) const;
+
   // The centre of the same rectangle when only one of its vertical sides (`good_side`, in the
   // order of side_tilts) is a door edge in both images, and the other only in image
   // `other_side_image` (0 left, 1 right): the other image's outline has an occluder's contour or

@@ -194,6 +194,41 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
             1u);
 }
 
+TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
+  // The camera pitched 0.4 rad down, the door below the eyes: its top and bottom edges between
+  // the sides' 3D ends are level for exact outlines.
+  const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
+  const Eigen::Vector3d up = -down;
+  const Pair p = door_pair({0.1, 0.6, 2.5}, calibration_, left_T_right_, down);
+  options_.max_edge_slope_rad = 0.3;
+  std::vector<StereoPairTrace> trace;
+  EXPECT_EQ(match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
+                                  left_T_right_, options_, up, &trace)
+                .size(),
+            1u);
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
+  // The right outline lost the stile of the door's right side (8 px): that side's disparity, so
+  // its depth, is wrong, and its ends on the left rays move down with the depth.
+  Pair lost = p;
+  lost.right.corners_px[1].x() -= 8.0;
+  lost.right.corners_px[2].x() -= 8.0;
+  EXPECT_TRUE(match_and_triangulate({lost.left}, {lost.right}, calibration_.left,
+                                    calibration_.right, left_T_right_, options_, up, &trace)
+                  .empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
+  EXPECT_GT(trace[0].value, 0.3);
+  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "edge_slope");
+  // Off, or without the up direction: not checked.
+  EXPECT_EQ(match({lost.left}, {lost.right}).size(), 1u);
+  options_.max_edge_slope_rad = 0.0;
+  EXPECT_EQ(match_and_triangulate({lost.left}, {lost.right}, calibration_.left, calibration_.right,
+                                  left_T_right_, options_, up)
+                .size(),
+            1u);
+}
+
 TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
   // Two left detections of one door compete for its right detection. The cheaper pair (its
   // reference points exactly on one epipolar line) has a left reference point 60 px to the left:
@@ -395,6 +430,7 @@ stereo:
   major_extent_range_m: {handle: [0.12, 0.25]}
   height_range_m: {door: [0.5, 2.5]}
   max_side_tilt_rad: 0.05
+  max_edge_slope_rad: 0.3
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -417,6 +453,7 @@ stereo:
   EXPECT_EQ(o.height_range_m[0].min_m, 0.5);
   EXPECT_EQ(o.height_range_m[0].max_m, 2.5);
   EXPECT_EQ(o.max_side_tilt_rad, 0.05);
+  EXPECT_EQ(o.max_edge_slope_rad, 0.3);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -435,6 +472,8 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_NE(stereo_error("  pixel_sigma_px: -1\n").find("s.yaml:2: stereo.pixel_sigma_px"),
             std::string::npos);
   EXPECT_NE(stereo_error("  max_area_ratio: .nan\n").find("max_area_ratio"), std::string::npos);
+  EXPECT_NE(stereo_error("  max_edge_slope_rad: 2\n").find("s.yaml:2: stereo.max_edge_slope_rad"),
+            std::string::npos);
   EXPECT_NE(stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n").find("must exceed"),
             std::string::npos);
   EXPECT_NE(stereo_error("  reference_depth_offset_m: {door: 2}\n")

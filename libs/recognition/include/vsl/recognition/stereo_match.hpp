@@ -58,6 +58,12 @@ struct StereoMatchOptions {
   // the good side's ends); otherwise the pair is refused. Needs the up direction
   // (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
+  // Rectangle outlines whose centre comes from both vertical sides (Triangulator::
+  // rectangle_centre) are refused when the top or bottom edge between the sides' 3D ends slopes
+  // by more than this angle: a door's are level, and a side whose horizontal position differs
+  // between the images (a stile lost, a neighbour's strip added in one image) has a wrong depth
+  // that tilts them. Needs the up direction; 0 turns it off.
+  double max_edge_slope_rad = 0.0;
 };
 
 // Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
@@ -83,6 +89,7 @@ enum class StereoGate {
   kAreaRatio,
   kOrientation,
   kTriangulation,
+  kEdgeSlope,
   kDepth,
   kExtent,
   kHeight
