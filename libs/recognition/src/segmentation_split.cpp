@@ -56,43 +56,100 @@ bool among(const SlitLine& line, const std::vector<SlitLine>& rejected, int v_mi
   });
 }
 
-// The slit line through the most slit points, other than the `rejected` ones.
-std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
-                                  const SegmentationOptions& options,
-                                  const std::vector<SlitLine>& rejected) {
-  const int v_min = runs.front().v;
-  const int v_max = runs.back().v;
-  const int rows = v_max - v_min + 1;
-  if (rows < kMinSlitRows) return std::nullopt;
-  // Per row, the blob's first and last column; slit points between runs.
-  std::vector<int> row_first(static_cast<std::size_t>(rows), 0);
-  std::vector<int> row_end(static_cast<std::size_t>(rows), 0);  // 0 = no pixel in the row
+// What the slit search looks at, in a frame where the slits sought are near-vertical: per row
+// (v_min + k) the blob's first column and one past its last (0: no pixel in the row), and the slit
+// points, sorted by (v, u).
+struct SlitEvidence {
+  int v_min = 0;
+  int rows = 0;
+  std::vector<int> row_first;
+  std::vector<int> row_end;
   std::vector<SlitPoint> points;
+};
+
+// Vertical slits: gaps of 1..max_slit_width_px between two runs of one row.
+SlitEvidence vertical_slit_evidence(const std::vector<PixelRun>& runs,
+                                    const SegmentationOptions& options) {
+  SlitEvidence e;
+  e.v_min = runs.front().v;
+  e.rows = runs.back().v - e.v_min + 1;
+  e.row_first.assign(static_cast<std::size_t>(e.rows), 0);
+  e.row_end.assign(static_cast<std::size_t>(e.rows), 0);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const PixelRun& r = runs[i];
-    const auto row = static_cast<std::size_t>(r.v - v_min);
-    if (row_end[row] == 0) row_first[row] = r.u_begin;
-    row_end[row] = r.u_end;
+    const auto row = static_cast<std::size_t>(r.v - e.v_min);
+    if (e.row_end[row] == 0) e.row_first[row] = r.u_begin;
+    e.row_end[row] = r.u_end;
     if (i + 1 < runs.size() && runs[i + 1].v == r.v) {
       const int gap = runs[i + 1].u_begin - r.u_end;
       if (gap >= 1 && gap <= options.max_slit_width_px) {
-        points.push_back({r.v, 0.5 * (r.u_end + runs[i + 1].u_begin - 1)});
+        e.points.push_back({r.v, 0.5 * (r.u_end + runs[i + 1].u_begin - 1)});
       }
     }
   }
+  return e;
+}
+
+// Horizontal slits, in the blob mirrored about its diagonal ((u, v) -> (v, u)): gaps of
+// 1..max_slit_width_px between two pixels of one column, found in one pass over the rows (without
+// building the mirrored blob, which is only needed when a slit is found).
+SlitEvidence horizontal_slit_evidence(const std::vector<PixelRun>& runs,
+                                      const SegmentationOptions& options) {
+  int u_min = runs.front().u_begin, u_max = runs.front().u_end;
+  for (const PixelRun& r : runs) {
+    u_min = std::min(u_min, r.u_begin);
+    u_max = std::max(u_max, r.u_end);
+  }
+  SlitEvidence e;
+  e.v_min = u_min;
+  e.rows = u_max - u_min;
+  e.row_first.assign(static_cast<std::size_t>(e.rows), 0);
+  e.row_end.assign(static_cast<std::size_t>(e.rows), 0);
+  std::vector<int> last_v(static_cast<std::size_t>(e.rows), -1);
+  for (const PixelRun& r : runs) {
+    for (int u = r.u_begin; u < r.u_end; ++u) {
+      const auto column = static_cast<std::size_t>(u - u_min);
+      const int last = last_v[column];
+      if (last < 0) {
+        e.row_first[column] = r.v;
+      } else {
+        const int gap = r.v - last - 1;
+        if (gap >= 1 && gap <= options.max_slit_width_px)
+          e.points.push_back({u, 0.5 * (last + r.v)});
+      }
+      last_v[column] = r.v;
+      e.row_end[column] = r.v + 1;
+    }
+  }
+  std::sort(e.points.begin(), e.points.end(), [](const SlitPoint& a, const SlitPoint& b) {
+    return a.v != b.v ? a.v < b.v : a.u < b.u;
+  });
+  return e;
+}
+
+// The slit lines, best first (through the most slit points), up to kMaxSlitsTried: each the
+// best candidate line that is not (about) one already found, refitted; the search stops at the
+// first that fails the support test.
+std::vector<SlitLine> find_slits(const SlitEvidence& evidence, const SegmentationOptions& options) {
+  const int v_min = evidence.v_min;
+  const int rows = evidence.rows;
+  const int v_max = v_min + rows - 1;
+  if (rows < kMinSlitRows) return {};
+  const std::vector<int>& row_first = evidence.row_first;
+  const std::vector<int>& row_end = evidence.row_end;
+  const std::vector<SlitPoint>& points = evidence.points;
   const double min_support = options.min_slit_support;
   // A line needs two points (and the index arithmetic below n >= 2).
   if (points.size() < 2 || static_cast<double>(points.size()) < min_support * kMinSlitRows) {
-    return std::nullopt;
+    return {};
   }
 
   // Candidate lines through pairs of slit points from the two ends of the blob (a slit along
-  // most of the blob has points near both ends); the one through the most points.
+  // most of the blob has points near both ends), with the number of points on each.
   const std::size_t n = points.size();
   const std::size_t third = std::max<std::size_t>(1, n / 3);
   const std::size_t step = std::max<std::size_t>(1, third / kCandidatesPerEnd);
-  std::optional<SlitLine> best;
-  int best_count = 0;
+  std::vector<std::pair<int, SlitLine>> candidates;
   for (std::size_t i = 0; i < third; i += step) {
     for (std::size_t k = 0; k < third; k += step) {
       const std::size_t j = n - 1 - k;
@@ -101,54 +158,57 @@ std::optional<SlitLine> find_slit(const std::vector<PixelRun>& runs,
       const SlitPoint& b = points[j];
       if (4 * (b.v - a.v) < rows) continue;
       const SlitLine line{double(a.v), a.u, (b.u - a.u) / double(b.v - a.v)};
-      if (std::abs(line.slope) > kMaxSlope || among(line, rejected, v_min, v_max)) continue;
-      const int count = count_on_line(points, line, [](const SlitPoint&) {});
-      if (count > best_count) {
-        best_count = count;
-        best = line;
+      if (std::abs(line.slope) > kMaxSlope) continue;
+      candidates.emplace_back(count_on_line(points, line, [](const SlitPoint&) {}), line);
+    }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+
+  std::vector<SlitLine> found;
+  for (const auto& [count, candidate] : candidates) {
+    if (static_cast<int>(found.size()) >= kMaxSlitsTried) break;
+    if (among(candidate, found, v_min, v_max)) continue;
+    if (count < min_support * kMinSlitRows) break;
+    // Least-squares refit to the points on it.
+    double sv = 0.0, su = 0.0, svv = 0.0, svu = 0.0;
+    int m = 0;
+    count_on_line(points, candidate, [&](const SlitPoint& p) {
+      sv += p.v;
+      su += p.u;
+      ++m;
+    });
+    const double mv = sv / m, mu = su / m;
+    count_on_line(points, candidate, [&](const SlitPoint& p) {
+      svv += (p.v - mv) * (p.v - mv);
+      svu += (p.v - mv) * (p.u - mu);
+    });
+    const SlitLine line{mv, mu, svv > 0.0 ? svu / svv : 0.0};
+    if (std::abs(line.slope) > kMaxSlope) break;
+    const int on_line = count_on_line(points, line, [](const SlitPoint&) {});
+    int crossing = 0;
+    for (int row = 0; row < rows; ++row) {
+      const double u = line.at(v_min + row);
+      if (row_end[static_cast<std::size_t>(row)] > 0 &&
+          u > row_first[static_cast<std::size_t>(row)] &&
+          u < row_end[static_cast<std::size_t>(row)] - 1) {
+        ++crossing;
       }
     }
+    if (crossing < kMinSlitRows || on_line < min_support * crossing) break;
+    found.push_back(line);
   }
-  if (!best || best_count < min_support * kMinSlitRows) return std::nullopt;
-
-  // Least-squares refit to the points on it.
-  double sv = 0.0, su = 0.0, svv = 0.0, svu = 0.0;
-  int m = 0;
-  count_on_line(points, *best, [&](const SlitPoint& p) {
-    sv += p.v;
-    su += p.u;
-    ++m;
-  });
-  const double mv = sv / m, mu = su / m;
-  count_on_line(points, *best, [&](const SlitPoint& p) {
-    svv += (p.v - mv) * (p.v - mv);
-    svu += (p.v - mv) * (p.u - mu);
-  });
-  SlitLine line{mv, mu, svv > 0.0 ? svu / svv : 0.0};
-  if (std::abs(line.slope) > kMaxSlope) return std::nullopt;
-  const int on_line = count_on_line(points, line, [](const SlitPoint&) {});
-  int crossing = 0;
-  for (int row = 0; row < rows; ++row) {
-    const double u = line.at(v_min + row);
-    if (row_end[static_cast<std::size_t>(row)] > 0 &&
-        u > row_first[static_cast<std::size_t>(row)] &&
-        u < row_end[static_cast<std::size_t>(row)] - 1) {
-      ++crossing;
-    }
-  }
-  if (crossing < kMinSlitRows || on_line < min_support * crossing) return std::nullopt;
-  return line;
+  return found;
 }
 
 // The blob cut in two along its best slit whose pieces are both fronts (below), trying up to
 // kMaxSlitsTried lines: the groove of a shaker door's stile often has more support than the
 // reveal beside it, which a handle interrupts. Nothing when no slit gives two fronts.
 std::optional<std::pair<std::vector<PixelRun>, std::vector<PixelRun>>> cut_at_slit(
-    const std::vector<PixelRun>& runs, long area, const SegmentationOptions& options) {
-  std::vector<SlitLine> rejected;
-  for (int attempt = 0; attempt < kMaxSlitsTried; ++attempt) {
-    const std::optional<SlitLine> line = find_slit(runs, options, rejected);
-    if (!line) break;
+    const std::vector<PixelRun>& runs, const std::vector<SlitLine>& slits, long area,
+    const SegmentationOptions& options) {
+  for (const SlitLine& slit : slits) {
+    const SlitLine* const line = &slit;
     std::vector<PixelRun> left, right;
     long left_area = 0, right_area = 0;
     for (const PixelRun& r : runs) {
@@ -168,7 +228,6 @@ std::optional<std::pair<std::vector<PixelRun>, std::vector<PixelRun>>> cut_at_sl
     if (left_area < options.min_blob_px || right_area < options.min_blob_px ||
         static_cast<double>(std::min(left_area, right_area)) <
             options.min_split_piece_fraction * static_cast<double>(area)) {
-      rejected.push_back(*line);
       continue;
     }
     return std::make_pair(std::move(left), std::move(right));
@@ -216,12 +275,17 @@ void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int l
     out.push_back(std::move(runs));
     return;
   }
-  auto pieces = cut_at_slit(runs, area, options);
+  auto pieces =
+      cut_at_slit(runs, find_slits(vertical_slit_evidence(runs, options), options), area, options);
   // A horizontal slit: the reveal between the drawer fronts of a stack, or between a drawer and
   // the door below it, found as a vertical slit of the transposed blob.
   if (!pieces && options.split_horizontal_slits) {
-    pieces = cut_at_slit(transposed(runs), area, options);
-    if (pieces) *pieces = {transposed(pieces->first), transposed(pieces->second)};
+    const std::vector<SlitLine> slits =
+        find_slits(horizontal_slit_evidence(runs, options), options);
+    if (!slits.empty()) {
+      pieces = cut_at_slit(transposed(runs), slits, area, options);
+      if (pieces) *pieces = {transposed(pieces->first), transposed(pieces->second)};
+    }
   }
   if (!pieces) {
     out.push_back(std::move(runs));
