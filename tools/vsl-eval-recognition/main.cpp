@@ -42,8 +42,9 @@ constexpr const char* kUsage =
 
 Evaluates recognition (docs/recognition.md): renders noisy stereo frames from seeded robot poses in
 the world (the head looking at the cupboards), runs the recognition pipeline with the settings of
-the recognition config, and prints per class the precision (over every percept within range) and the recall
-(over the objects within 4 m of the left camera and at least half visible in both images; beside it
+the recognition config, and prints per class the precision (over the true and false positives
+within range: a correct percept of a real object the ground truth leaves out is neither; "precision
+strict" counts it as false) and the recall (over the objects within 4 m of the left camera and at least half visible in both images; beside it
 the recall over those whose whole outline lies inside both images, not cut by the border), the 3D
 error of the matched percepts (within 10 cm of their object's reference point) by distance band,
 and the time per stereo pair.
