@@ -37,6 +37,20 @@ std::vector<detail::IdealPixel> undistorted_corners(const Detection& d,
   return detail::undistort(d.corners_px, intrinsics);
 }
 
+// The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the
+// bar's ends along the major axis, handle_recognizer.cpp) plus and minus half the major extent.
+std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {
+  const Eigen::Vector2d half =
+      0.5 * d.major_extent_px *
+      Eigen::Vector2d(std::cos(d.major_axis_angle_rad), std::sin(d.major_axis_angle_rad));
+  return {d.reference_px - half, d.reference_px + half};
+}
+
+bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
+  return std::find(options.bar_types.begin(), options.bar_types.end(), type) !=
+         options.bar_types.end();
+}
+
 // Leaving a left detection unmatched costs more than any set of admissible pairs can, so that the
 // assignment first maximizes the number of matches, then minimizes their total cost.
 double unmatched_cost(std::size_t pairs) {
@@ -223,6 +237,22 @@ std::vector<StereoPercept> match_and_triangulate(
   for (const Detection& d : right) {
     right_corners.push_back(undistorted_corners(d, right_intrinsics));
   }
+  // Undistorted ends of the bar-type detections (empty for the others).
+  const auto bar_ends = [&](const std::vector<Detection>& detections,
+                            const head::CameraIntrinsics& intrinsics) {
+    std::vector<std::vector<detail::IdealPixel>> out(detections.size());
+    for (std::size_t i = 0; i < detections.size(); ++i) {
+      const Detection& d = detections[i];
+      if (d.corners_px.empty() && d.major_extent_px > 0.0 && is_bar_type(options, d.type)) {
+        out[i] = detail::undistort(bar_ends_raw(d), intrinsics);
+      }
+    }
+    return out;
+  };
+  const std::vector<std::vector<detail::IdealPixel>> left_bar_ends =
+      bar_ends(left, left_intrinsics);
+  const std::vector<std::vector<detail::IdealPixel>> right_bar_ends =
+      bar_ends(right, right_intrinsics);
   const auto corner_array = [](const std::vector<detail::IdealPixel>& corners) {
     std::array<Eigen::Vector2d, 4> out;
     for (int k = 0; k < 4; ++k) out[k] = corners[k].ideal_px;
@@ -248,8 +278,26 @@ std::vector<StereoPercept> match_and_triangulate(
     // the outline's height when segmentation adds a strip along the top or the bottom in one
     // image only: the gate widens to kRectangleCentreFraction of the height.
     const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
+    // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in
+    // 3D, and the position gate as the containment of the shorter segment in the longer.
+    std::optional<detail::Triangulator::BarSpan> bar;
+    if (!left_bar_ends[l].empty() && !right_bar_ends[r].empty() &&
+        elongation(dl) >= options.min_elongation_for_orientation &&
+        elongation(dr) >= options.min_elongation_for_orientation) {
+      const Eigen::Vector2d a = right_bar_ends[r][0].ideal_px, b = right_bar_ends[r][1].ideal_px;
+      const Eigen::Vector3d line = epipolar.right_line(left_ideal[l].ideal_px);  // a^2+b^2 = 1
+      const double length = (b - a).norm();
+      // |cos| of the angle between the bar and the line's normal: sin of the angle to the line.
+      if (length > 0.0 && std::abs((b - a).dot(line.head<2>())) >= std::sqrt(0.5) * length) {
+        bar = triangulator.bar_span({left_bar_ends[l][0].ideal_px, left_bar_ends[l][1].ideal_px},
+                                    {a, b}, up_in_left_camera);
+        if (!bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+      }
+    }
+    const double mean_f_px = 0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px);
     const double epipolar_px =
-        epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
+        bar ? bar->containment_excess_px
+            : epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
     const double max_epipolar_px =
         rectangles ? std::max(options.max_epipolar_distance_px,
                               kRectangleCentreFraction * 0.5 * (dl.height_px + dr.height_px))
@@ -288,9 +336,12 @@ std::vector<StereoPercept> match_and_triangulate(
       }
     }
     // Size: both cameras are about equally far from the object, so the areas agree.
+    // Two views of a bar: their mean widths (one may be a fragment of the other).
     double area_term = 0.0;
     if (dl.area_px > 0.0 && dr.area_px > 0.0) {
-      const double log_ratio = std::abs(std::log(dl.area_px / dr.area_px));
+      const double log_ratio = bar ? std::abs(std::log((dl.area_px / dl.major_extent_px) /
+                                                       (dr.area_px / dr.major_extent_px)))
+                                   : std::abs(std::log(dl.area_px / dr.area_px));
       if (log_ratio > log_max_area_ratio) {
         return refuse(StereoGate::kAreaRatio, std::exp(log_ratio), options.max_area_ratio);
       }
@@ -317,6 +368,10 @@ std::vector<StereoPercept> match_and_triangulate(
     // The gates below measure the visible surface, before the reference point's offset.
     Eigen::Vector3d point = triangulation->left_camera_position_m -
                             offset * triangulation->left_camera_position_m.normalized();
+    if (bar) {
+      point = bar->centre_m;
+      triangulation->left_camera_position_m = point + offset * point.normalized();
+    }
     bool rectangle = false;
     if (rectangles) {
       const auto centre = one_side_centre
@@ -349,8 +404,9 @@ std::vector<StereoPercept> match_and_triangulate(
     // Size at that depth: a fronto-parallel length L spans f L / z pixels.
     const auto* range = extent_range(options, dl.type);
     if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
-      const double length_m = 0.5 * (dl.major_extent_px + dr.major_extent_px) * point.z() /
-                              (0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px));
+      const double length_m =
+          bar ? bar->length_m
+              : 0.5 * (dl.major_extent_px + dr.major_extent_px) * point.z() / mean_f_px;
       if (length_m < range->min_m) return refuse(StereoGate::kExtent, length_m, range->min_m);
       if (length_m > range->max_m) return refuse(StereoGate::kExtent, length_m, range->max_m);
     }

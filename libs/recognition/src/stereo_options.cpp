@@ -16,7 +16,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   section.expect_keys({"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
                        "max_orientation_difference_rad", "min_elongation_for_orientation",
                        "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m",
-                       "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad"});
+                       "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad", "bar_types"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -51,6 +51,12 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     for (const std::string& type : offsets->keys()) {
       // Half the depth of any object a robot recognizes: a metre either way is far beyond that.
       out.reference_depth_offset_m.emplace_back(type, offsets->at(type).as_double_in(-1.0, 1.0));
+    }
+  }
+  if (const auto types = section.find("bar_types")) {
+    if (!types->is_sequence()) types->fail("expected a list of object types, e.g. [handle]");
+    for (std::size_t i = 0; i < types->size(); ++i) {
+      out.bar_types.push_back((*types)[i].as_string());
     }
   }
   for (const char* key : {"major_extent_range_m", "height_range_m"}) {

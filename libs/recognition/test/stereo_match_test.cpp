@@ -431,6 +431,7 @@ stereo:
   height_range_m: {door: [0.5, 2.5]}
   max_side_tilt_rad: 0.05
   max_edge_slope_rad: 0.3
+  bar_types: [handle]
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -454,6 +455,7 @@ stereo:
   EXPECT_EQ(o.height_range_m[0].max_m, 2.5);
   EXPECT_EQ(o.max_side_tilt_rad, 0.05);
   EXPECT_EQ(o.max_edge_slope_rad, 0.3);
+  EXPECT_EQ(o.bar_types, std::vector<std::string>{"handle"});
 }
 
 std::string stereo_error(const std::string& body) {
@@ -487,6 +489,12 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       << stereo_error("  major_extent_range_m: {handle: [0.3, 0.2]}\n");
   EXPECT_NE(stereo_error("  major_extent_range_m: {handle: [0.3]}\n").find("handle"),
             std::string::npos);
+  EXPECT_NE(
+      stereo_error("  bar_types: handle\n").find("s.yaml:2: stereo.bar_types: expected a list"),
+      std::string::npos)
+      << stereo_error("  bar_types: handle\n");
+  EXPECT_NE(stereo_error("  bar_types: [[handle]]\n").find("bar_types[0]"), std::string::npos)
+      << stereo_error("  bar_types: [[handle]]\n");
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;

@@ -64,11 +64,23 @@ struct StereoMatchOptions {
   // between the images (a stile lost, a neighbour's strip added in one image) has a wrong depth
   // that tilts them. Needs the up direction; 0 turns it off.
   double max_edge_slope_rad = 0.0;
+  // Types whose detections are bars (handles): a pair of such elongated detections (both at
+  // least min_elongation_for_orientation, their axis at least 45 degrees from the epipolar line)
+  // is matched as two views of one bar segment (Triangulator::bar_span) rather than by its
+  // reference points. Segmentation often loses a part of a thin bar in one image: that image's
+  // segment is then a fragment, its midpoint moves along the bar by half the part lost, and the
+  // reference-point gates (epipolar distance, area ratio) refuse the pair. As bars, the
+  // epipolar gate tests that the shorter segment, lifted into 3D by the other image's segment,
+  // lies within the longer (to within max_epipolar_distance_px at its depth); the area ratio
+  // compares the mean widths (area over length); the centre is the middle of the union of both
+  // lifted segments, and the class length (major_extent_range_m) is the union's.
+  std::vector<std::string> bar_types;
 };
 
 // Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
-// a type to metres, major_extent_range_m a type to [min_m, max_m]). Unknown keys, non-finite or
-// out-of-range values are errors: vsl::config::Error "file:line: key: what".
+// a type to metres, major_extent_range_m a type to [min_m, max_m], bar_types is a list of types).
+// Unknown keys, non-finite or out-of-range values are errors: vsl::config::Error "file:line: key:
+// what".
 StereoMatchOptions stereo_match_options_from(const config::Node& section);
 
 // A matched, triangulated pair.
