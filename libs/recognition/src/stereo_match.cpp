@@ -30,6 +30,10 @@ struct Candidate {
 // when more than StereoMatchOptions::max_epipolar_distance_px.
 constexpr double kRectangleCentreFraction = 0.05;
 
+// Added to each bar's mean width (pixels) before their ratio is compared: the quantization of a
+// thin bar's two edges.
+constexpr double kBarWidthQuantizationPx = 1.0;
+
 // Undistorted corners of a detection's outline (empty unless it has four).
 std::vector<detail::IdealPixel> undistorted_corners(const Detection& d,
                                                     const head::CameraIntrinsics& intrinsics) {
@@ -213,6 +217,48 @@ std::vector<Candidate> assign(const std::vector<Candidate>& candidates, int left
   return out;
 }
 
+// The image rows a detection spans (its extents along the blob axes, projected on the vertical).
+double vertical_extent_px(const Detection& d) {
+  return std::abs(d.major_extent_px * std::sin(d.major_axis_angle_rad)) +
+         std::abs(d.minor_extent_px * std::cos(d.major_axis_angle_rad));
+}
+
+// The ordering constraint of stereo: two objects side by side (the two handles of a double door)
+// appear in the same left-to-right order in both images; crossed matches put one of them far in
+// front of the other, where nothing is. The assignment's costs (area, orientation; the position
+// gate of bars is 0 for every pair within the other) cannot tell two such twins apart, so two
+// assigned pairs of one type whose detections overlap in rows in the left image and that cross
+// are replaced by the uncrossed pairs, when both of those are candidates too.
+void uncross(std::vector<Candidate>& assigned, const std::vector<Candidate>& candidates,
+             const std::vector<Detection>& left, const std::vector<detail::IdealPixel>& left_ideal,
+             const std::vector<detail::IdealPixel>& right_ideal) {
+  const auto candidate = [&](int l, int r) -> const Candidate* {
+    for (const Candidate& c : candidates) {
+      if (c.left == l && c.right == r) return &c;
+    }
+    return nullptr;
+  };
+  for (std::size_t i = 0; i < assigned.size(); ++i) {
+    for (std::size_t j = i + 1; j < assigned.size(); ++j) {
+      const int l1 = assigned[i].left, r1 = assigned[i].right;
+      const int l2 = assigned[j].left, r2 = assigned[j].right;
+      if (left[l1].type != left[l2].type) continue;
+      const Eigen::Vector2d dl = left_ideal[l1].ideal_px - left_ideal[l2].ideal_px;
+      const Eigen::Vector2d dr = right_ideal[r1].ideal_px - right_ideal[r2].ideal_px;
+      const bool side_by_side =
+          std::abs(dl.y()) < 0.5 * (vertical_extent_px(left[l1]) + vertical_extent_px(left[l2]));
+      if (!side_by_side || !(dl.x() * dr.x() < 0.0)) continue;
+      const Candidate* a = candidate(l1, r2);
+      const Candidate* b = candidate(l2, r1);
+      if (!a || !b) continue;
+      assigned[i] = *a;
+      assigned[j] = *b;
+    }
+  }
+  std::sort(assigned.begin(), assigned.end(),
+            [](const Candidate& a, const Candidate& b) { return a.left < b.left; });
+}
+
 }  // namespace
 
 std::vector<StereoPercept> match_and_triangulate(
@@ -336,12 +382,15 @@ std::vector<StereoPercept> match_and_triangulate(
       }
     }
     // Size: both cameras are about equally far from the object, so the areas agree.
-    // Two views of a bar: their mean widths (one may be a fragment of the other).
+    // Two views of a bar: their mean widths (one may be a fragment of the other), each with a
+    // pixel of quantization added: a bar 2-3 px wide that loses one column of pixels in one image
+    // would otherwise differ by a ratio of 1.5.
     double area_term = 0.0;
     if (dl.area_px > 0.0 && dr.area_px > 0.0) {
-      const double log_ratio = bar ? std::abs(std::log((dl.area_px / dl.major_extent_px) /
-                                                       (dr.area_px / dr.major_extent_px)))
-                                   : std::abs(std::log(dl.area_px / dr.area_px));
+      const double log_ratio =
+          bar ? std::abs(std::log((dl.area_px / dl.major_extent_px + kBarWidthQuantizationPx) /
+                                  (dr.area_px / dr.major_extent_px + kBarWidthQuantizationPx)))
+              : std::abs(std::log(dl.area_px / dr.area_px));
       if (log_ratio > log_max_area_ratio) {
         return refuse(StereoGate::kAreaRatio, std::exp(log_ratio), options.max_area_ratio);
       }
@@ -443,9 +492,11 @@ std::vector<StereoPercept> match_and_triangulate(
     }
   }
 
+  std::vector<Candidate> assigned =
+      assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()));
+  uncross(assigned, candidates, left, left_ideal, right_ideal);
   std::vector<StereoPercept> out;
-  for (const Candidate& c :
-       assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()))) {
+  for (const Candidate& c : assigned) {
     StereoPercept percept;
     percept.left_detection = c.left;
     percept.right_detection = c.right;

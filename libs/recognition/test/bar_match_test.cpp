@@ -151,5 +151,44 @@ TEST_F(BarMatchTest, HorizontalBarsAlongTheEpipolarLinesKeepTheReferencePoints) 
   EXPECT_TRUE(match(left_end, right_end, 0.0, 0.5).empty());
 }
 
+TEST_F(BarMatchTest, TwinHandlesAreNotMatchedCrosswise) {
+  // The two handles of a double door, 7 cm apart at 2 m. Each image sees one bar thinner than
+  // the other, crosswise, so the costs (mean widths) prefer the crossed pairs, which put one
+  // handle 1.3 m and the other 3.3 m away; the ordering constraint undoes that.
+  const Eigen::Vector3d a_bottom(0.0, 0.1, 2.0), a_top(0.0, -0.06, 2.0);
+  const Eigen::Vector3d b_bottom(0.07, 0.1, 2.0), b_top(0.07, -0.06, 2.0);
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  const auto seen = [&](const Eigen::Vector3d& bottom, const Eigen::Vector3d& top,
+                        const head::CameraIntrinsics& camera, const Eigen::Isometry3d& pose,
+                        double width_px) {
+    Detection d = bar_between(project(bottom, camera, pose), project(top, camera, pose));
+    d.minor_extent_px = width_px;
+    d.area_px = d.major_extent_px * width_px;
+    return d;
+  };
+  const std::vector<Detection> left = {seen(a_bottom, a_top, calibration_.left, identity, 3.0),
+                                       seen(b_bottom, b_top, calibration_.left, identity, 5.0)};
+  const std::vector<Detection> right = {
+      seen(a_bottom, a_top, calibration_.right, left_T_right_, 5.0),
+      seen(b_bottom, b_top, calibration_.right, left_T_right_, 3.0)};
+  options_.max_depth_m = 10.0;
+  std::vector<StereoPairTrace> trace;
+  const auto percepts =
+      match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_,
+                            options_, Eigen::Vector3d::Zero(), &trace);
+  // The crossed pairs are admissible (and cheaper): without the ordering constraint they would
+  // have been kept.
+  int candidates = 0;
+  for (const StereoPairTrace& t : trace) candidates += t.refused_by == StereoGate::kNone;
+  EXPECT_EQ(candidates, 4);
+  ASSERT_EQ(percepts.size(), 2u);
+  EXPECT_EQ(percepts[0].right_detection, 0);
+  EXPECT_EQ(percepts[1].right_detection, 1);
+  EXPECT_LT((percepts[0].left_camera_position_m - 0.5 * (a_bottom + a_top)).norm(), 1e-6);
+  EXPECT_LT((percepts[1].left_camera_position_m - 0.5 * (b_bottom + b_top)).norm(), 1e-6);
+  for (const StereoPairTrace& t : trace)
+    EXPECT_EQ(t.assigned, t.left_detection == t.right_detection);
+}
+
 }  // namespace
 }  // namespace vsl::recognition

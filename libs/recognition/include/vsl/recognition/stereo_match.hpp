@@ -127,7 +127,11 @@ struct StereoPairTrace {
 // assignment makes as many matches as possible and, among those, the ones of least total cost
 // (Hungarian method): with repeated identical objects (the two handles of a double door are 7 cm
 // apart, a disparity of 20 px at 2 m), taking the cheapest pair first can pair one object's left
-// image with its neighbour's right image and leave both true partners unmatched. `left_T_right` is
+// image with its neighbour's right image and leave both true partners unmatched. Two assigned
+// pairs of one type side by side (overlapping rows) that cross, the left-to-right order of their
+// detections differing between the images, are then uncrossed when the uncrossed pairs are
+// admissible (the ordering constraint of stereo: crossed, one would be far in front of the
+// other). `left_T_right` is
 // the right camera's pose in the left camera frame at capture time (from the head kinematics, so
 // verging eyes are handled). Raw pixels are undistorted with each camera's intrinsics first.
 // Percepts come sorted by left detection. The confidence of a percept is the geometric mean of its
