@@ -135,6 +135,35 @@ TEST_F(StereoMatchTest, RectangleCentreFromTheVerticalSides) {
   EXPECT_GT((from_points[0].left_camera_position_m - centre).norm(), 0.1);
 }
 
+TEST_F(StereoMatchTest, RectangleSidesMustNestAlongTheEpipolarDirection) {
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const Pair p = door_pair(centre, calibration_, left_T_right_);
+  const double height_px = p.right.height_px;
+  std::vector<StereoPairTrace> trace;
+  const auto refused_by = [&](const Detection& right) {
+    match_and_triangulate({p.left}, {right}, calibration_.left, calibration_.right, left_T_right_,
+                          options_, Eigen::Vector3d::Zero(), &trace);
+    return trace.at(0).refused_by;
+  };
+  // A strip of 12% of the height along the top of the right outline: its centre is 6% of the
+  // height off the left one's epipolar line, but its sides still hold the left sides.
+  Detection strip = p.right;
+  strip.corners_px[0].y() -= 0.12 * height_px;
+  strip.corners_px[1].y() -= 0.12 * height_px;
+  strip.reference_px.y() -= 0.06 * height_px;  // where the diagonals now cross
+  EXPECT_EQ(refused_by(strip), StereoGate::kNone);
+  // The whole outline 6% of the height lower: no nesting, another object.
+  Detection shifted = p.right;
+  for (Eigen::Vector2d& c : shifted.corners_px) c.y() += 0.06 * height_px;
+  EXPECT_EQ(refused_by(shifted), StereoGate::kEpipolar);
+  EXPECT_NEAR(trace[0].value, 0.06 * height_px, 0.5);
+  // 40% longer at the bottom: a drawer merged below the door in one image.
+  Detection merged = p.right;
+  merged.corners_px[2].y() += 0.4 * height_px;
+  merged.corners_px[3].y() += 0.4 * height_px;
+  EXPECT_EQ(refused_by(merged), StereoGate::kEpipolar);
+}
+
 TEST_F(StereoMatchTest, HeightRangeGate) {
   const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_);
   options_.height_range_m.push_back({"door", 0.5, 2.5});

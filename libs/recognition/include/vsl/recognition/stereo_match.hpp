@@ -70,8 +70,8 @@ struct StereoMatchOptions {
   // reference points. Segmentation often loses a part of a thin bar in one image: that image's
   // segment is then a fragment, its midpoint moves along the bar by half the part lost, and the
   // reference-point gates (epipolar distance, area ratio) refuse the pair. As bars, the
-  // epipolar gate tests that the shorter segment, lifted into 3D by the other image's segment,
-  // lies within the longer (to within max_epipolar_distance_px at its depth); the area ratio
+  // epipolar gate tests that the shorter segment, projected into the longer one's image, lies
+  // within it (to max_epipolar_distance_px); the area ratio
   // compares the mean widths (area over length); the centre is the middle of the union of both
   // lifted segments, and the class length (major_extent_range_m) is the union's.
   std::vector<std::string> bar_types;
@@ -122,11 +122,13 @@ struct StereoPairTrace {
 // Matches detections of the same type one to one (each left detection to at most one right
 // detection and vice versa) and triangulates each pair. A pair is admissible when it passes every
 // gate (same type, epipolar distance, depth range, area ratio, orientation of elongated blobs,
-// the class's length range); its normalized cost is the sum of the squared epipolar distance,
-// log area ratio and orientation difference, each over its limit. Among the admissible pairs the
-// assignment makes as many matches as possible and, among those, the ones of least total cost
-// (Hungarian method): with repeated identical objects (the two handles of a double door are 7 cm
-// apart, a disparity of 20 px at 2 m), taking the cheapest pair first can pair one object's left
+// the class's length range; for two rectangle outlines the epipolar gate is that their vertical
+// sides nest along the epipolar direction, one image's outline possibly a strip longer at the top
+// or the bottom, up to 15% of the side); its normalized cost is the sum of the squared epipolar
+// distance, log area ratio and orientation difference, each over its limit. Among the admissible
+// pairs the assignment makes as many matches as possible and, among those, the ones of least total
+// cost (Hungarian method): with repeated identical objects (the two handles of a double door are 7
+// cm apart, a disparity of 20 px at 2 m), taking the cheapest pair first can pair one object's left
 // image with its neighbour's right image and leave both true partners unmatched. Two assigned
 // pairs of one type side by side (overlapping rows) that cross, the left-to-right order of their
 // detections differing between the images, are then uncrossed when the uncrossed pairs are
