@@ -1,5 +1,6 @@
-// Left-right cross match and triangulation (paper §2.1). Geometry: epipolar.hpp (gate) and
-// triangulation.hpp (point and covariance); the assignment is below.
+// Left-right cross match and triangulation (paper §2.1): the gates of each pair are here.
+// Geometry: epipolar.hpp (gate) and triangulation.hpp (point and covariance); the one-to-one
+// assignment: stereo_assignment.hpp.
 #include "vsl/recognition/stereo_match.hpp"
 
 #include <algorithm>
@@ -10,21 +11,11 @@
 #include <optional>
 
 #include "epipolar.hpp"
+#include "stereo_assignment.hpp"
 #include "triangulation.hpp"
 
 namespace vsl::recognition {
 namespace {
-
-// An admissible left-right pair.
-struct Candidate {
-  int left = -1;
-  int right = -1;
-  double cost = 0.0;  // normalized: sum of (gate quantity / its limit)^2, each term <= 1
-  // True when the pair is two rectangle outlines whose centre comes from their vertical sides
-  // (Triangulator::rectangle_centre); false when from the reference points.
-  bool rectangle = false;
-  detail::Triangulation triangulation;
-};
 
 // The epipolar gate of two rectangle outlines (rectangle_containment_excess_px): this fraction of
 // their height (pixels), when more than StereoMatchOptions::max_epipolar_distance_px.
@@ -59,12 +50,6 @@ std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {
 bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
   return std::find(options.bar_types.begin(), options.bar_types.end(), type) !=
          options.bar_types.end();
-}
-
-// Leaving a left detection unmatched costs more than any set of admissible pairs can, so that the
-// assignment first maximizes the number of matches, then minimizes their total cost.
-double unmatched_cost(std::size_t pairs) {
-  return 4.0 * static_cast<double>(pairs + 1);
 }
 
 // Orientation difference of two undirected axes (angles in [0, pi)), in [0, pi / 2].
@@ -103,132 +88,6 @@ const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& op
   return nullptr;
 }
 
-// Minimum-cost assignment of rows to columns (rows <= columns), Hungarian method with potentials
-// (Kuhn-Munkres, O(rows^2 columns)). cost is row-major rows x columns; returns the column of each
-// row.
-std::vector<int> hungarian(const std::vector<double>& cost, int rows, int columns) {
-  const double inf = std::numeric_limits<double>::infinity();
-  // 1-based as in the textbook formulation; column 0 is the virtual start.
-  std::vector<double> u(rows + 1, 0.0), v(columns + 1, 0.0);
-  std::vector<int> row_of(columns + 1, 0), way(columns + 1, 0);
-  for (int i = 1; i <= rows; ++i) {
-    row_of[0] = i;
-    int j0 = 0;
-    std::vector<double> min_slack(columns + 1, inf);
-    std::vector<char> used(columns + 1, 0);
-    do {
-      used[j0] = 1;
-      const int i0 = row_of[j0];
-      double delta = inf;
-      int j1 = 0;
-      for (int j = 1; j <= columns; ++j) {
-        if (used[j]) continue;
-        const double slack = cost[(i0 - 1) * columns + (j - 1)] - u[i0] - v[j];
-        if (slack < min_slack[j]) {
-          min_slack[j] = slack;
-          way[j] = j0;
-        }
-        if (min_slack[j] < delta) {
-          delta = min_slack[j];
-          j1 = j;
-        }
-      }
-      for (int j = 0; j <= columns; ++j) {
-        if (used[j]) {
-          u[row_of[j]] += delta;
-          v[j] -= delta;
-        } else {
-          min_slack[j] -= delta;
-        }
-      }
-      j0 = j1;
-    } while (row_of[j0] != 0);
-    do {
-      const int j1 = way[j0];
-      row_of[j0] = row_of[j1];
-      j0 = j1;
-    } while (j0 != 0);
-  }
-  std::vector<int> column_of(rows, -1);
-  for (int j = 1; j <= columns; ++j) {
-    if (row_of[j] != 0) column_of[row_of[j] - 1] = j - 1;
-  }
-  return column_of;
-}
-
-// One-to-one assignment over the candidate pairs: per connected component of the candidate graph
-// (components are independent and usually small), the Hungarian method on the component's
-// admissible costs plus one "unmatched" column per left detection.
-std::vector<Candidate> assign(const std::vector<Candidate>& candidates, int left_count,
-                              int right_count) {
-  // Components by union-find over left nodes 0..L-1 and right nodes L..L+R-1.
-  std::vector<int> parent(left_count + right_count);
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (const Candidate& c : candidates) parent[find(c.left)] = find(left_count + c.right);
-
-  std::vector<std::vector<int>> by_component(left_count + right_count);
-  for (int k = 0; k < static_cast<int>(candidates.size()); ++k) {
-    by_component[find(candidates[k].left)].push_back(k);
-  }
-  std::vector<Candidate> out;
-  for (const std::vector<int>& members : by_component) {
-    if (members.empty()) continue;
-    if (members.size() == 1) {
-      out.push_back(candidates[members[0]]);
-      continue;
-    }
-    // Local indices of the component's left and right detections.
-    std::vector<int> lefts, rights;
-    for (int k : members) {
-      lefts.push_back(candidates[k].left);
-      rights.push_back(candidates[k].right);
-    }
-    for (auto* v : {&lefts, &rights}) {
-      std::sort(v->begin(), v->end());
-      v->erase(std::unique(v->begin(), v->end()), v->end());
-    }
-    const int rows = static_cast<int>(lefts.size());
-    const int columns = static_cast<int>(rights.size()) + rows;
-    const double unmatched = unmatched_cost(members.size());
-    // Inadmissible pairs cost more than leaving every row unmatched.
-    const double forbidden = 2.0 * unmatched * (rows + 1);
-    std::vector<double> cost(static_cast<std::size_t>(rows) * columns, forbidden);
-    for (int i = 0; i < rows; ++i) {
-      for (int j = static_cast<int>(rights.size()); j < columns; ++j)
-        cost[i * columns + j] = unmatched;
-    }
-    for (int k : members) {
-      const int i = static_cast<int>(
-          std::lower_bound(lefts.begin(), lefts.end(), candidates[k].left) - lefts.begin());
-      const int j = static_cast<int>(
-          std::lower_bound(rights.begin(), rights.end(), candidates[k].right) - rights.begin());
-      cost[i * columns + j] = candidates[k].cost;
-    }
-    const std::vector<int> column_of = hungarian(cost, rows, columns);
-    for (int k : members) {
-      const int i = static_cast<int>(
-          std::lower_bound(lefts.begin(), lefts.end(), candidates[k].left) - lefts.begin());
-      const int j = column_of[i];
-      if (j >= 0 && j < static_cast<int>(rights.size()) && rights[j] == candidates[k].right) {
-        out.push_back(candidates[k]);
-      }
-    }
-  }
-  std::sort(out.begin(), out.end(),
-            [](const Candidate& a, const Candidate& b) { return a.left < b.left; });
-  return out;
-}
-
-// The image rows a detection spans (its extents along the blob axes, projected on the vertical).
-double vertical_extent_px(const Detection& d) {
-  return std::abs(d.major_extent_px * std::sin(d.major_axis_angle_rad)) +
-         std::abs(d.minor_extent_px * std::cos(d.major_axis_angle_rad));
-}
-
 // How far two views of a rectangle's vertical sides fail to nest along the epipolar direction
 // (pixels): for each side (corners 0-3 and 1-2, clockwise from the top left), the signed
 // distances of the right image's top and bottom ends from the epipolar lines of the left image's
@@ -259,42 +118,6 @@ double rectangle_containment_excess_px(const std::vector<detail::IdealPixel>& le
                                   kMaxRectangleSideMismatch * std::max(left_px, right_px));
   }
   return excess;
-}
-
-// The ordering constraint of stereo: two objects side by side (the two handles of a double door)
-// appear in the same left-to-right order in both images; crossed matches put one of them far in
-// front of the other, where nothing is. The assignment's costs (area, orientation; the position
-// gate of bars is 0 for every pair within the other) cannot tell two such twins apart, so two
-// assigned pairs of one type whose detections overlap in rows in the left image and that cross
-// are replaced by the uncrossed pairs, when both of those are candidates too.
-void uncross(std::vector<Candidate>& assigned, const std::vector<Candidate>& candidates,
-             const std::vector<Detection>& left, const std::vector<detail::IdealPixel>& left_ideal,
-             const std::vector<detail::IdealPixel>& right_ideal) {
-  const auto candidate = [&](int l, int r) -> const Candidate* {
-    for (const Candidate& c : candidates) {
-      if (c.left == l && c.right == r) return &c;
-    }
-    return nullptr;
-  };
-  for (std::size_t i = 0; i < assigned.size(); ++i) {
-    for (std::size_t j = i + 1; j < assigned.size(); ++j) {
-      const int l1 = assigned[i].left, r1 = assigned[i].right;
-      const int l2 = assigned[j].left, r2 = assigned[j].right;
-      if (left[l1].type != left[l2].type) continue;
-      const Eigen::Vector2d dl = left_ideal[l1].ideal_px - left_ideal[l2].ideal_px;
-      const Eigen::Vector2d dr = right_ideal[r1].ideal_px - right_ideal[r2].ideal_px;
-      const bool side_by_side =
-          std::abs(dl.y()) < 0.5 * (vertical_extent_px(left[l1]) + vertical_extent_px(left[l2]));
-      if (!side_by_side || !(dl.x() * dr.x() < 0.0)) continue;
-      const Candidate* a = candidate(l1, r2);
-      const Candidate* b = candidate(l2, r1);
-      if (!a || !b) continue;
-      assigned[i] = *a;
-      assigned[j] = *b;
-    }
-  }
-  std::sort(assigned.begin(), assigned.end(),
-            [](const Candidate& a, const Candidate& b) { return a.left < b.left; });
 }
 
 }  // namespace
@@ -348,7 +171,7 @@ std::vector<StereoPercept> match_and_triangulate(
   // with its triangulation. Triangulating here rather than after the assignment means that a
   // pair which cannot be triangulated is never assigned, and its detections stay free for other
   // pairs.
-  const auto judge = [&](int l, int r, StereoPairTrace& trace) -> std::optional<Candidate> {
+  const auto judge = [&](int l, int r, StereoPairTrace& trace) -> std::optional<detail::Candidate> {
     const Detection& dl = left[l];
     const Detection& dr = right[r];
     const auto refuse = [&](StereoGate gate, double value, double limit) {
@@ -508,7 +331,7 @@ std::vector<StereoPercept> match_and_triangulate(
       if (height_m > height->max_m) return refuse(StereoGate::kHeight, height_m, height->max_m);
     }
     const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
-    Candidate c;
+    detail::Candidate c;
     c.left = l;
     c.right = r;
     c.cost =
@@ -519,7 +342,7 @@ std::vector<StereoPercept> match_and_triangulate(
     return c;
   };
 
-  std::vector<Candidate> candidates;
+  std::vector<detail::Candidate> candidates;
   std::vector<StereoPairTrace> traces;
   for (int l = 0; l < static_cast<int>(left.size()); ++l) {
     for (int r = 0; r < static_cast<int>(right.size()); ++r) {
@@ -527,16 +350,17 @@ std::vector<StereoPercept> match_and_triangulate(
       StereoPairTrace trace;
       trace.left_detection = l;
       trace.right_detection = r;
-      if (std::optional<Candidate> c = judge(l, r, trace)) candidates.push_back(std::move(*c));
+      if (std::optional<detail::Candidate> c = judge(l, r, trace))
+        candidates.push_back(std::move(*c));
       if (pair_trace) traces.push_back(trace);
     }
   }
 
-  std::vector<Candidate> assigned =
-      assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()));
-  uncross(assigned, candidates, left, left_ideal, right_ideal);
+  std::vector<detail::Candidate> assigned =
+      detail::assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()));
+  detail::uncross(assigned, candidates, left, left_ideal, right_ideal);
   std::vector<StereoPercept> out;
-  for (const Candidate& c : assigned) {
+  for (const detail::Candidate& c : assigned) {
     StereoPercept percept;
     percept.left_detection = c.left;
     percept.right_detection = c.right;
