@@ -4,13 +4,16 @@
 #include "vsl/recognition/blob.hpp"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace vsl::recognition {
 namespace {
@@ -34,28 +37,148 @@ void check_runs(const std::vector<PixelRun>& runs, const cv::Mat& bgr_image) {
   }
 }
 
-// Length of the outer boundary in pixel edges ("crack length"): holes (a handle inside a door)
-// are filled first, so that L_i describes the blob's outline, not its contents.
-double outer_crack_length(const Blob& blob) {
-  const int width = blob.u_max - blob.u_min + 3;  // one pixel of margin on every side
-  const int height = blob.v_max - blob.v_min + 3;
-  cv::Mat mask(height, width, CV_8U, cv::Scalar(0));
-  for (const PixelRun& run : blob.runs) {
-    std::uint8_t* row = mask.ptr<std::uint8_t>(run.v - blob.v_min + 1);
-    std::fill(row + run.u_begin - blob.u_min + 1, row + run.u_end - blob.u_min + 1,
-              std::uint8_t{1});
+// Sums and extremes of R, G, B in integer grey levels.
+struct ColourStatistics {
+  std::array<std::int64_t, 3> sum{};
+  std::array<int, 3> min{255, 255, 255};
+  std::array<int, 3> max{0, 0, 0};
+};
+
+// Adds the pixels u_begin .. u_end - 1 of a BGR row. The run's statistics are kept in scalars
+// (per-channel arrays indexed in the loop stay in memory, and the loop was most of make_blob).
+void add_colours(const std::uint8_t* row, int u_begin, int u_end, ColourStatistics& colours) {
+  std::int64_t sum_r = 0, sum_g = 0, sum_b = 0;
+  int min_r = colours.min[0], min_g = colours.min[1], min_b = colours.min[2];
+  int max_r = colours.max[0], max_g = colours.max[1], max_b = colours.max[2];
+  for (const std::uint8_t* bgr = row + 3 * u_begin; bgr != row + 3 * u_end; bgr += 3) {
+    const int r = bgr[2], g = bgr[1], b = bgr[0];
+    sum_r += r;
+    sum_g += g;
+    sum_b += b;
+    min_r = std::min(min_r, r);
+    min_g = std::min(min_g, g);
+    min_b = std::min(min_b, b);
+    max_r = std::max(max_r, r);
+    max_g = std::max(max_g, g);
+    max_b = std::max(max_b, b);
   }
-  // Everything 4-connected to the margin is outside (2); the rest is the blob or its holes.
-  cv::floodFill(mask, cv::Point(0, 0), cv::Scalar(2), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
-  // A crack between two neighbouring cells of which one is outside: count the cells that differ
-  // from their right and from their lower neighbour (whole-image operations, vectorized by
-  // OpenCV; per cell this loop was the largest part of make_blob for wall-sized blobs).
-  cv::Mat outside, differ;
-  cv::compare(mask, cv::Scalar(2), outside, cv::CMP_EQ);
-  cv::compare(outside.colRange(0, width - 1), outside.colRange(1, width), differ, cv::CMP_NE);
-  double length = cv::countNonZero(differ);
-  cv::compare(outside.rowRange(0, height - 1), outside.rowRange(1, height), differ, cv::CMP_NE);
-  length += cv::countNonZero(differ);
+  colours.sum[0] += sum_r;
+  colours.sum[1] += sum_g;
+  colours.sum[2] += sum_b;
+  colours.min = {min_r, min_g, min_b};
+  colours.max = {max_r, max_g, max_b};
+}
+
+// Union-find over the indices 0 .. n - 1.
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int i) {
+    while (parent_[i] != i) {
+      parent_[i] = parent_[parent_[i]];  // path halving
+      i = parent_[i];
+    }
+    return i;
+  }
+  void unite(int a, int b) { parent_[find(a)] = find(b); }
+
+ private:
+  std::vector<int> parent_;
+};
+
+using Interval = std::pair<int, int>;  // columns first .. second - 1
+
+int total_length(const std::vector<Interval>& intervals) {
+  int length = 0;
+  for (const Interval& i : intervals) length += i.second - i.first;
+  return length;
+}
+
+// Columns two sorted lists of disjoint intervals have in common.
+int common_length(const std::vector<Interval>& a, const std::vector<Interval>& b) {
+  int length = 0;
+  for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+    length += std::max(0, std::min(a[i].second, b[j].second) - std::max(a[i].first, b[j].first));
+    if (a[i].second < b[j].second) {
+      ++i;
+    } else {
+      ++j;
+    }
+  }
+  return length;
+}
+
+// Length of the outer boundary in pixel edges ("crack length"): holes (a handle inside a door)
+// are filled first, so that L_i describes the blob's outline, not its contents. On the runs (a
+// flood fill of a mask of the bounding box was most of make_blob for wall-sized blobs): the gaps
+// between a row's runs are outside when they reach the bounding box's border or, 4-connected,
+// an outside gap of the row above or below; the others are holes. A row's filled set (its runs
+// and holes) has two vertical cracks per interval, and two consecutive rows (the rows beyond the
+// box are empty) have a horizontal crack in each column in which one of them is filled.
+double outer_crack_length(const Blob& blob) {
+  const int rows = blob.v_max - blob.v_min + 1;
+  const int box_end = blob.u_max + 1;
+  // Row r's runs are blob.runs[run_begin[r] .. run_begin[r + 1]), its gaps (within the box)
+  // gaps[gap_begin[r] .. gap_begin[r + 1]), both in column order.
+  std::vector<int> run_begin(static_cast<std::size_t>(rows) + 1);
+  std::vector<int> gap_begin(static_cast<std::size_t>(rows) + 1);
+  std::vector<PixelRun> gaps;
+  std::size_t i = 0;
+  for (int r = 0; r < rows; ++r) {
+    run_begin[r] = static_cast<int>(i);
+    gap_begin[r] = static_cast<int>(gaps.size());
+    const int v = blob.v_min + r;
+    int u = blob.u_min;
+    for (; i < blob.runs.size() && blob.runs[i].v == v; ++i) {
+      if (blob.runs[i].u_begin > u) gaps.push_back({v, u, blob.runs[i].u_begin});
+      u = blob.runs[i].u_end;
+    }
+    if (u < box_end) gaps.push_back({v, u, box_end});
+  }
+  run_begin[rows] = static_cast<int>(i);
+  gap_begin[rows] = static_cast<int>(gaps.size());
+
+  UnionFind connected(gaps.size());
+  for (int r = 1; r < rows; ++r) {
+    for (int a = gap_begin[r - 1], b = gap_begin[r]; a < gap_begin[r] && b < gap_begin[r + 1];) {
+      if (gaps[a].u_begin < gaps[b].u_end && gaps[b].u_begin < gaps[a].u_end) connected.unite(a, b);
+      if (gaps[a].u_end < gaps[b].u_end) {
+        ++a;
+      } else {
+        ++b;
+      }
+    }
+  }
+  std::vector<char> outside_root(gaps.size(), 0);
+  for (std::size_t g = 0; g < gaps.size(); ++g) {
+    if (gaps[g].v == blob.v_min || gaps[g].v == blob.v_max || gaps[g].u_begin == blob.u_min ||
+        gaps[g].u_end == box_end) {
+      outside_root[connected.find(static_cast<int>(g))] = 1;
+    }
+  }
+
+  double length = 0.0;
+  std::vector<Interval> filled, filled_above;  // the rows beyond the box: empty
+  for (int r = 0; r < rows; ++r) {
+    filled.clear();
+    // The gap before run k (k > the row's first) is the row's (k - first)-th interior gap; the
+    // row's gaps start with one before its first run unless that run starts at the box's border.
+    const int first = run_begin[r];
+    const int leading = first < run_begin[r + 1] && blob.runs[first].u_begin > blob.u_min ? 1 : 0;
+    for (int k = first; k < run_begin[r + 1]; ++k) {
+      const PixelRun& run = blob.runs[k];
+      if (k > first && !outside_root[connected.find(gap_begin[r] + leading + k - first - 1)]) {
+        filled.back().second = run.u_end;  // across a hole
+      } else {
+        filled.emplace_back(run.u_begin, run.u_end);
+      }
+    }
+    length += 2.0 * static_cast<double>(filled.size());
+    length +=
+        total_length(filled_above) + total_length(filled) - 2 * common_length(filled_above, filled);
+    std::swap(filled, filled_above);
+  }
+  length += total_length(filled_above);
   return length;
 }
 
@@ -87,9 +210,7 @@ Blob make_blob(std::vector<PixelRun> runs, const cv::Mat& bgr_image) {
   // in integer grey levels.
   double count = 0.0;
   double su = 0.0, sv = 0.0, suu = 0.0, suv = 0.0, svv = 0.0;
-  std::int64_t colour_sum_grey[3] = {0, 0, 0};  // R, G, B
-  int colour_min_grey[3] = {255, 255, 255};
-  int colour_max_grey[3] = {0, 0, 0};
+  ColourStatistics colours;
   blob.u_min = blob.runs.front().u_begin;
   blob.u_max = blob.runs.front().u_end - 1;
   blob.v_min = blob.runs.front().v;
@@ -109,28 +230,19 @@ Blob make_blob(std::vector<PixelRun> runs, const cv::Mat& bgr_image) {
     suu += squares(last) - squares(first - 1.0);
     suv += sum_u * v;
     svv += n * v * v;
-    const std::uint8_t* row = bgr_image.ptr<std::uint8_t>(run.v);
-    for (int u = run.u_begin; u < run.u_end; ++u) {
-      const std::uint8_t* bgr = row + 3 * u;
-      for (int c = 0; c < 3; ++c) {
-        const int value = bgr[2 - c];
-        colour_sum_grey[c] += value;
-        colour_min_grey[c] = std::min(colour_min_grey[c], value);
-        colour_max_grey[c] = std::max(colour_max_grey[c], value);
-      }
-    }
+    add_colours(bgr_image.ptr<std::uint8_t>(run.v), run.u_begin, run.u_end, colours);
     count += n;
   }
   const Eigen::Vector2d sum(su, sv);
   Eigen::Matrix2d sum_squares;
   sum_squares << suu, suv, suv, svv;
-  const Eigen::Vector3d colour_sum(static_cast<double>(colour_sum_grey[0]) / 255.0,
-                                   static_cast<double>(colour_sum_grey[1]) / 255.0,
-                                   static_cast<double>(colour_sum_grey[2]) / 255.0);
-  const Eigen::Vector3d colour_min(colour_min_grey[0] / 255.0, colour_min_grey[1] / 255.0,
-                                   colour_min_grey[2] / 255.0);
-  const Eigen::Vector3d colour_max(colour_max_grey[0] / 255.0, colour_max_grey[1] / 255.0,
-                                   colour_max_grey[2] / 255.0);
+  const Eigen::Vector3d colour_sum(static_cast<double>(colours.sum[0]) / 255.0,
+                                   static_cast<double>(colours.sum[1]) / 255.0,
+                                   static_cast<double>(colours.sum[2]) / 255.0);
+  const Eigen::Vector3d colour_min(colours.min[0] / 255.0, colours.min[1] / 255.0,
+                                   colours.min[2] / 255.0);
+  const Eigen::Vector3d colour_max(colours.max[0] / 255.0, colours.max[1] / 255.0,
+                                   colours.max[2] / 255.0);
   blob.area_px = count;
   blob.centroid_px = sum / count;
   blob.covariance_px2 = sum_squares / count - blob.centroid_px * blob.centroid_px.transpose();

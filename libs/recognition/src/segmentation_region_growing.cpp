@@ -18,13 +18,15 @@
 #include "segmentation_region_growing.hpp"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core/hal/intrin.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
+#include "segmentation_line_barrier.hpp"
 #include "vsl/recognition/segmentation.hpp"
 
 namespace vsl::recognition {
@@ -42,12 +44,87 @@ double colour_ellipsoid_volume_grey3(const std::array<double, 3>& mean_grey,
 
 namespace {
 
-double volume_of(const GrownRegion& region) {
-  const double n = region.pixel_count;
-  return colour_ellipsoid_volume_grey3(
-      {region.rgb_sum[0] / n, region.rgb_sum[1] / n, region.rgb_sum[2] / n}, region.rgb_min,
-      region.rgb_max);
-}
+// The test V_i < V_max, asked whenever a run's or a region's K_min or K_max widens: at about a
+// third of a run's pixels (the sensor noise), mostly far from V_max, so that the mean's three
+// divisions (a third of the row pass's time when done every time) are rarely needed. Each semi-axis
+// lies between half the channel's range K_max - K_min and the range, as K_mean lies between K_min
+// and K_max, and the rounded arithmetic of colour_ellipsoid_volume_grey3 is monotonic in the
+// semi-axes (and off by far less than 1e-9). So the volumes of the ranges and of the half ranges,
+// as exact integer products (8 prod (range + 1/2), 8 prod (range / 2 + 1/2)) against limits 1e-9
+// inside V_max, decide the test whenever they lie on one side of V_max; the volume itself only
+// between them.
+class VolumeLimit {
+ public:
+  explicit VolumeLimit(double max_volume_grey3)
+      : max_volume_(max_volume_grey3),
+        admit_below_(integer_limit(max_volume_grey3 * 8.0 / kFourThirdsPi * (1.0 - 1e-9))),
+        refuse_from_(integer_limit(max_volume_grey3 * 8.0 / kFourThirdsPi * (1.0 + 1e-9))) {}
+
+  enum class Verdict { admitted, refused, undecided };
+
+  // The bounds' verdict on the region with these K_min, K_max (R, G, B).
+  Verdict bounds(const std::array<int, 3>& rgb_min, const std::array<int, 3>& rgb_max) const {
+    std::int64_t upper = 1, lower = 1;
+    for (int c = 0; c < 3; ++c) {
+      const int range = rgb_max[c] - rgb_min[c];
+      upper *= 2 * range + 1;
+      lower *= range + 1;
+    }
+    if (upper < admit_below_) return Verdict::admitted;
+    if (lower >= refuse_from_) return Verdict::refused;
+    return Verdict::undecided;
+  }
+
+  // V_i < V_max itself, for the region of n pixels with these sums (R, G, B).
+  bool admits_exactly(const std::array<std::int64_t, 3>& rgb_sum, int n,
+                      const std::array<int, 3>& rgb_min, const std::array<int, 3>& rgb_max) const {
+    const double count = n;
+    const auto grey = [](const std::array<int, 3>& x) {
+      return std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(x[0]),
+                                         static_cast<std::uint8_t>(x[1]),
+                                         static_cast<std::uint8_t>(x[2])};
+    };
+    return colour_ellipsoid_volume_grey3(
+               {rgb_sum[0] / count, rgb_sum[1] / count, rgb_sum[2] / count}, grey(rgb_min),
+               grey(rgb_max)) < max_volume_;
+  }
+
+  bool admits(const GrownRegion& region) const {
+    const std::array<int, 3> rgb_min{region.rgb_min[0], region.rgb_min[1], region.rgb_min[2]};
+    const std::array<int, 3> rgb_max{region.rgb_max[0], region.rgb_max[1], region.rgb_max[2]};
+    const Verdict verdict = bounds(rgb_min, rgb_max);
+    return verdict == Verdict::admitted ||
+           (verdict == Verdict::undecided &&
+            admits_exactly(region.rgb_sum, region.pixel_count, rgb_min, rgb_max));
+  }
+
+  // Ranges K_max - K_min, at least the region's, within which V_i < V_max is certain: the
+  // region's widened by the most of 8, 4, 2 or 1 grey levels that the bound allows (or not at
+  // all). Only a pixel that leaves them needs the test; most pixels do not.
+  std::array<int, 3> allowed_ranges(const std::array<int, 3>& rgb_min,
+                                    const std::array<int, 3>& rgb_max) const {
+    const std::array<int, 3> range{rgb_max[0] - rgb_min[0], rgb_max[1] - rgb_min[1],
+                                   rgb_max[2] - rgb_min[2]};
+    for (const int slack : {8, 4, 2, 1}) {
+      std::int64_t upper = 1;
+      for (int c = 0; c < 3; ++c) upper *= 2 * (range[c] + slack) + 1;
+      if (upper < admit_below_) return {range[0] + slack, range[1] + slack, range[2] + slack};
+    }
+    return range;
+  }
+
+ private:
+  static constexpr double kFourThirdsPi = 4.0 / 3.0 * std::numbers::pi;  // as in the volume
+  // The least integer not below x; past every product of ranges (below 2^27) when x is huge or
+  // not a number (then every volume compares below V_max, as in the test itself).
+  static std::int64_t integer_limit(double x) {
+    if (!(x < 1e18)) return std::numeric_limits<std::int64_t>::max();
+    return x <= 0.0 ? 0 : static_cast<std::int64_t>(std::ceil(x));
+  }
+  double max_volume_;
+  std::int64_t admit_below_;  // 8 prod (range + 1/2) below this: V_i < V_max
+  std::int64_t refuse_from_;  // 8 prod (range / 2 + 1/2) from this on: V_i >= V_max
+};
 
 // The region of both (sums added, extremes widened).
 GrownRegion joined(const GrownRegion& a, const GrownRegion& b) {
@@ -70,191 +147,95 @@ inline bool admitted_step(const std::uint8_t* p, const std::uint8_t* q, int max_
          std::abs(int{p[1]} - int{q[1]}) <= max_step && std::abs(int{p[2]} - int{q[2]}) <= max_step;
 }
 
-// Thin-line barrier (SegmentationOptions::min_line_contrast_rgb): the reveal between two flush
-// doors or drawer fronts renders as a faint line 0.5-2 px wide, brighter or darker than the fronts
-// on both sides but of their hue (the shaded side face of a front, or the carcass behind the gap),
-// and only a few grey levels above the sensor noise. A pixel (or a pair of pixels, when the line
-// straddles two columns) is on such a line when its brightness R + G + B stands out from BOTH
-// neighbours across the line by at least 3 c (in the same direction: a line, not a step), and no
-// channel moves against the others by more than the noise (a change of brightness, not of hue: a
-// 2 px brass handle bar on a blue door is a colour edge that criterion (1) of region growing
-// handles, and must stay a region of its own, not become barrier). Tested across rows (vertical
-// lines) and across columns (horizontal lines).
-constexpr int kHueNoiseGrey = 6;     // about 3 sigma of the renderer's and a webcam's sensor noise
-constexpr int kMinLinePx = 9;        // see line_barrier
-constexpr int kLineExtensionPx = 4;  // see line_barrier
-constexpr int kFlatGrey = 9;         // about 3 sigma of the difference of two noisy pixels
-
-struct LineTest {
-  int threshold;  // on the brightness difference to each side, grey levels summed over R, G, B
-  // `step` is the distance in bytes from one pixel to the next across the line: the surface two
-  // pixels beyond the line's neighbours must be flat (within kFlatGrey of them per channel) on
-  // both sides. A reveal runs through a flat front; the highlight along a handle bar (a bright
-  // line of the bar's own hue) has the bar's shaded facets and then the door beside it, and must
-  // not become barrier that cuts the bar apart. (Where a handle stands within 3 px of a reveal
-  // the line breaks; line_bridge_px closes short breaks.)
-  std::ptrdiff_t step;
-  bool operator()(const std::uint8_t* before, const std::uint8_t* line_a,
-                  const std::uint8_t* line_b, const std::uint8_t* after) const {
-    bool flat_before = true, flat_after = true;
-    for (int c = 0; c < 3; ++c) {
-      flat_before =
-          flat_before && std::abs(int{before[c]} - int{before[c - 2 * step]}) <= kFlatGrey;
-      flat_after = flat_after && std::abs(int{after[c]} - int{after[c + 2 * step]}) <= kFlatGrey;
-    }
-    if (!flat_before || !flat_after) return false;
-    // line_a == line_b: a 1 px line; otherwise the pair straddled by a thinner one (weights 1/2).
-    int side_1 = 0, side_2 = 0;
-    int deviation[3];
-    for (int c = 0; c < 3; ++c) {
-      const int line2 = int{line_a[c]} + int{line_b[c]};
-      side_1 += line2 - 2 * int{before[c]};
-      side_2 += line2 - 2 * int{after[c]};
-      deviation[c] = 2 * line2 - 2 * int{before[c]} - 2 * int{after[c]};  // 4 x per-channel
-    }
-    const int t2 = 2 * threshold;
-    if (!((side_1 >= t2 && side_2 >= t2) || (side_1 <= -t2 && side_2 <= -t2))) return false;
-    // Same hue: the deviation is the surroundings' colour scaled, deviation ~ k (before + after),
-    // within the noise plus a third of it per channel.
-    double surround[3];
-    double surround_sum = 0.0, deviation_sum = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      surround[c] = 2.0 * (int{before[c]} + int{after[c]});  // 4 x mean surroundings
-      surround_sum += surround[c];
-      deviation_sum += deviation[c];
-    }
-    if (surround_sum <= 0.0) return true;  // black surroundings: no hue to compare
-    const double k = deviation_sum / surround_sum;
-    for (int c = 0; c < 3; ++c) {
-      const double expected = k * surround[c];
-      if (std::abs(deviation[c] - expected) > 4.0 * kHueNoiseGrey + std::abs(expected) / 3.0) {
-        return false;
-      }
-    }
-    return true;
+// refused[3 u] (u = 1 .. width - 1) is non-zero where the step from pixel u - 1 to pixel u of a
+// BGR row is refused (a channel differs by more than max_step_grey), as admitted_step; the other
+// bytes are scratch. 16 bytes (5 1/3 pixels) at a time: byte i compares row[i] with row[i - 3],
+// and bytes i, i + 1, i + 2 together make pixel i / 3's verdict.
+void mark_refused_steps(const std::uint8_t* row, int width, int max_step_grey,
+                        std::uint8_t* refused) {
+  const int bytes = 3 * width;
+  if (max_step_grey < 0) {
+    std::fill(refused, refused + bytes, std::uint8_t{1});
+    return;
   }
-};
-
-// Clears the barrier pixels whose chromaticity RGB / (R + G + B) differs from that of the mean of
-// the pixels 3 px away on both sides across the line (`step` bytes per pixel across) by more
-// than kMaxBarrierChromaticity (max over channels).
-constexpr double kMaxBarrierChromaticity = 0.06;
-void keep_same_hue(const cv::Mat& bgr, std::ptrdiff_t step, cv::Mat& map) {
-  const int margin = 3;
-  for (int v = 0; v < map.rows; ++v) {
-    std::uint8_t* row = map.ptr<std::uint8_t>(v);
-    const std::uint8_t* pixels = bgr.ptr<std::uint8_t>(v);
-    for (int u = 0; u < map.cols; ++u) {
-      if (row[u] == 0) continue;
-      const bool across_columns = step == 3;
-      if (across_columns ? (u < margin || u + margin >= map.cols)
-                         : (v < margin || v + margin >= map.rows)) {
-        continue;
-      }
-      const std::uint8_t* p = pixels + 3 * u;
-      const std::uint8_t* a = p - margin * step;
-      const std::uint8_t* b = p + margin * step;
-      const double own = int{p[0]} + int{p[1]} + int{p[2]};
-      const double around = int{a[0]} + int{a[1]} + int{a[2]} + int{b[0]} + int{b[1]} + int{b[2]};
-      if (own <= 0.0 || around <= 0.0) continue;
-      for (int c = 0; c < 3; ++c) {
-        if (std::abs(p[c] / own - (int{a[c]} + int{b[c]}) / around) > kMaxBarrierChromaticity) {
-          row[u] = 0;
-          break;
-        }
-      }
-    }
+  const cv::v_uint8x16 max_step =
+      cv::v_setall_u8(static_cast<std::uint8_t>(std::min(max_step_grey, 255)));
+  const auto differs = [&](int i) {
+    return cv::v_absdiff(cv::v_load(row + i), cv::v_load(row + i - 3)) > max_step;
+  };
+  int i = 3;
+  for (; i + 18 <= bytes; i += 16) {
+    cv::v_store(refused + i, differs(i) | differs(i + 1) | differs(i + 2));
+  }
+  for (int u = (i + 2) / 3; u < width; ++u) {
+    refused[3 * u] = admitted_step(row + 3 * u - 3, row + 3 * u, max_step_grey) ? 0 : 1;
   }
 }
 
-// The barrier map (CV_8U, 1 on line pixels). Lines found across rows are bridged along the columns
-// (and those found across columns along the rows) over breaks of up to 2 bridge_px pixels: where
-// the reveal is narrower than the renderer's sample spacing, or the noise hides it, for a few rows,
-// one row without barrier would let the two doors grow into one region. The lines are widened by a
-// pixel across before bridging, so that the pieces of a slanted line (a vertical seen with the
-// neck pitched) still overlap across their break.
-cv::Mat line_barrier(const cv::Mat& bgr, const SegmentationOptions& options) {
-  const int width = bgr.cols;
-  const int height = bgr.rows;
-  cv::Mat across_rows(height, width, CV_8U, cv::Scalar(0));     // vertical lines
-  cv::Mat across_columns(height, width, CV_8U, cv::Scalar(0));  // horizontal lines
-  if (options.min_line_contrast_rgb <= 0.0) return across_rows;
-  const int threshold = static_cast<int>(std::ceil(3.0 * options.min_line_contrast_rgb * 255.0));
-  const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(bgr.step[0]);
-  const LineTest across_row{threshold, 3};
-  const LineTest across_column{threshold, step};
-  // Three pixels of margin: the test reads the line's neighbours and two pixels beyond them.
-  // Brightness R + G + B once: the cheap part of the test (the line stands out from both sides)
-  // rejects almost every pixel before the per-channel hue and flatness checks run.
-  std::vector<std::int16_t> brightness(static_cast<std::size_t>(width) * height);
-  for (int v = 0; v < height; ++v) {
-    const std::uint8_t* row = bgr.ptr<std::uint8_t>(v);
-    std::int16_t* out = brightness.data() + static_cast<std::size_t>(v) * width;
-    for (int u = 0; u < width; ++u)
-      out[u] = std::int16_t(row[3 * u] + row[3 * u + 1] + row[3 * u + 2]);
+// Sums of R, G, B over the pixels begin .. end - 1 of a BGR row.
+std::array<std::int64_t, 3> rgb_sum(const std::uint8_t* row, int begin, int end) {
+  std::int64_t r = 0, g = 0, b = 0;
+  for (const std::uint8_t* q = row + 3 * begin; q != row + 3 * end; q += 3) {
+    r += q[2];
+    g += q[1];
+    b += q[0];
   }
-  // Both sides of a line of brightness `line2` (twice the line's mean) beyond the threshold.
-  const auto stands_out = [threshold](int before, int line2, int after) {
-    const int side_1 = line2 - 2 * before;
-    const int side_2 = line2 - 2 * after;
-    const int t2 = 2 * threshold;
-    return (side_1 >= t2 && side_2 >= t2) || (side_1 <= -t2 && side_2 <= -t2);
-  };
-  for (int v = 0; v < height; ++v) {
-    const std::uint8_t* row = bgr.ptr<std::uint8_t>(v);
-    const std::int16_t* b = brightness.data() + static_cast<std::size_t>(v) * width;
-    std::uint8_t* vertical = across_rows.ptr<std::uint8_t>(v);
-    for (int u = 3; u + 4 < width; ++u) {
-      const std::uint8_t* p = row + 3 * u;
-      if (stands_out(b[u - 1], 2 * b[u], b[u + 1]) && across_row(p - 3, p, p, p + 3)) {
-        vertical[u] = 1;
+  return {r, g, b};
+}
+
+// The row pass over one run of pixels off the barrier from column `begin`: the run ends before
+// the first pixel that is on the barrier, whose step from its left neighbour is refused
+// (refused_step, of mark_refused_steps), or with which the run's colour ellipsoid would reach
+// V_max (then cut_by_edge is false). Returns the end and sets the run's colour sums and extremes.
+int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
+             const std::uint8_t* refused_step, int begin, int width,
+             const VolumeLimit& volume_limit, GrownRegion& run, bool& cut_by_edge) {
+  // K_min, K_max (R, G, B) and the allowed ranges as scalars: arrays in the loop end up in memory.
+  const std::uint8_t* p = row + 3 * begin;
+  int lo_r = p[2], lo_g = p[1], lo_b = p[0];
+  int hi_r = lo_r, hi_g = lo_g, hi_b = lo_b;
+  std::array<int, 3> allowed = volume_limit.allowed_ranges({lo_r, lo_g, lo_b}, {hi_r, hi_g, hi_b});
+  int allowed_r = allowed[0], allowed_g = allowed[1], allowed_b = allowed[2];
+  cut_by_edge = true;
+  int u = begin + 1;
+  for (; u < width; ++u) {
+    if (on_barrier[u] != 0 || refused_step[3 * u] != 0) break;
+    const std::uint8_t* q = row + 3 * u;
+    const int r = q[2], g = q[1], b = q[0];
+    const int widened_lo_r = std::min(lo_r, r), widened_hi_r = std::max(hi_r, r);
+    const int widened_lo_g = std::min(lo_g, g), widened_hi_g = std::max(hi_g, g);
+    const int widened_lo_b = std::min(lo_b, b), widened_hi_b = std::max(hi_b, b);
+    // Past the allowed ranges (so K_min or K_max widened): the test.
+    if (widened_hi_r - widened_lo_r > allowed_r || widened_hi_g - widened_lo_g > allowed_g ||
+        widened_hi_b - widened_lo_b > allowed_b) {
+      const std::array<int, 3> widened_lo{widened_lo_r, widened_lo_g, widened_lo_b};
+      const std::array<int, 3> widened_hi{widened_hi_r, widened_hi_g, widened_hi_b};
+      const VolumeLimit::Verdict verdict = volume_limit.bounds(widened_lo, widened_hi);
+      if (verdict == VolumeLimit::Verdict::refused ||
+          (verdict == VolumeLimit::Verdict::undecided &&
+           !volume_limit.admits_exactly(rgb_sum(row, begin, u + 1), u + 1 - begin, widened_lo,
+                                        widened_hi))) {
+        cut_by_edge = false;
+        break;
       }
-      if (stands_out(b[u - 1], b[u] + b[u + 1], b[u + 2]) && across_row(p - 3, p, p + 3, p + 6)) {
-        vertical[u] = vertical[u + 1] = 1;
-      }
+      allowed = volume_limit.allowed_ranges(widened_lo, widened_hi);
+      allowed_r = allowed[0];
+      allowed_g = allowed[1];
+      allowed_b = allowed[2];
     }
-    if (v < 3 || v + 4 >= height) continue;
-    std::uint8_t* horizontal = across_columns.ptr<std::uint8_t>(v);
-    std::uint8_t* horizontal_below = across_columns.ptr<std::uint8_t>(v + 1);
-    const std::int16_t* up = b - width;
-    const std::int16_t* down = b + width;
-    const std::int16_t* down2 = b + 2 * width;
-    for (int u = 0; u < width; ++u) {
-      const std::uint8_t* p = row + 3 * u;
-      if (stands_out(up[u], 2 * b[u], down[u]) && across_column(p - step, p, p, p + step)) {
-        horizontal[u] = 1;
-      }
-      if (stands_out(up[u], b[u] + down[u], down2[u]) &&
-          across_column(p - step, p, p + step, p + 2 * step)) {
-        horizontal[u] = horizontal_below[u] = 1;
-      }
-    }
+    lo_r = widened_lo_r;
+    lo_g = widened_lo_g;
+    lo_b = widened_lo_b;
+    hi_r = widened_hi_r;
+    hi_g = widened_hi_g;
+    hi_b = widened_hi_b;
   }
-  // Along each line direction: a closing bridges breaks of up to 2 bridge pixels; an opening of
-  // kMinLinePx drops what is still shorter (noise, a corner's blend), which is no reveal; then the
-  // lines grow by kLineExtensionPx at their ends, where the reveal meets the front's outline and
-  // the flatness test (which reads 3 px across) loses its last pixels: without the extension the
-  // two fronts join around the line's end.
-  const int bridge = options.line_bridge_px;
-  if (bridge > 0) {
-    for (cv::Mat* map : {&across_rows, &across_columns}) {
-      const bool vertical = map == &across_rows;
-      const auto along = [vertical](int half_length) {
-        return cv::getStructuringElement(cv::MORPH_RECT, vertical
-                                                             ? cv::Size(1, 2 * half_length + 1)
-                                                             : cv::Size(2 * half_length + 1, 1));
-      };
-      cv::morphologyEx(*map, *map, cv::MORPH_CLOSE, along(bridge));
-      cv::morphologyEx(*map, *map, cv::MORPH_OPEN, along(kMinLinePx / 2));
-      cv::dilate(*map, *map, along(kLineExtensionPx));
-      // Bridging and extension paint over whatever the line passes; only pixels of the hue
-      // around them (reveal, front) stay barrier. A handle bar beside a reveal (often within a
-      // pixel or two of it) stays the handle's: it is a colour edge that the step criterion cuts.
-      keep_same_hue(bgr, vertical ? 3 : static_cast<std::ptrdiff_t>(bgr.step[0]), *map);
-    }
-  }
-  across_rows |= across_columns;
-  return across_rows;
+  run.rgb_sum = rgb_sum(row, begin, u);
+  run.rgb_min = {static_cast<std::uint8_t>(lo_r), static_cast<std::uint8_t>(lo_g),
+                 static_cast<std::uint8_t>(lo_b)};
+  run.rgb_max = {static_cast<std::uint8_t>(hi_r), static_cast<std::uint8_t>(hi_g),
+                 static_cast<std::uint8_t>(hi_b)};
+  return u;
 }
 
 int find_root(std::vector<int>& parent, int i) {
@@ -283,7 +264,7 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
   // Computed once per image: pixels on thin lines neither join nor let regions grow across them.
   const cv::Mat barrier = line_barrier(bgr_image, options);
 
-  const double max_volume_grey3 = options.max_colour_volume_rgb3 * 255.0 * 255.0 * 255.0;
+  const VolumeLimit volume_limit(options.max_colour_volume_rgb3 * 255.0 * 255.0 * 255.0);
   const int max_region_px = options.max_region_px;
 
   // Per run: its statistics while it is a region root; parent for the
@@ -294,60 +275,41 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
   parent.reserve(stats.capacity());
   map.runs.reserve(stats.capacity());
   std::vector<TouchingRegions> touching_runs;  // a, b: run indices until the end
+  std::vector<std::uint8_t> refused_step(3 * static_cast<std::size_t>(width));  // of one row
 
   for (int v = 0; v < map.height; ++v) {
     map.row_begin[v] = static_cast<int>(map.runs.size());
     const std::uint8_t* row = bgr_image.ptr<std::uint8_t>(v);
     const std::uint8_t* on_barrier = barrier.ptr<std::uint8_t>(v);
+    mark_refused_steps(row, width, max_step_grey, refused_step.data());
     // Row pass: cut where the step is refused, the barrier starts or ends, or the run's own
-    // ellipsoid would reach V_max. The volume is recomputed only when K_min or K_max widens (a
-    // few times per run). A run of barrier pixels is a run of its own that joins nothing.
+    // ellipsoid would reach V_max (grow_run). A run of barrier pixels is a run of its own that
+    // joins nothing.
     int u = 0;
     while (u < width) {
       GrownRegion run;
-      const std::uint8_t* p = row + 3 * u;
-      for (int c = 0; c < 3; ++c) run.rgb_min[c] = run.rgb_max[c] = p[2 - c];
-      std::array<std::int64_t, 3> sum{p[2], p[1], p[0]};
       const int begin = u;
       const bool is_barrier = on_barrier[u] != 0;
       bool cut_by_edge = true;
-      for (++u; u < width; ++u) {
-        const std::uint8_t* q = row + 3 * u;
-        if ((on_barrier[u] != 0) != is_barrier) break;
-        if (!is_barrier) {
-          if (!admitted_step(q - 3, q, max_step_grey)) break;
-          const std::uint8_t r = q[2], g = q[1], b = q[0];
-          if (r < run.rgb_min[0] || r > run.rgb_max[0] || g < run.rgb_min[1] ||
-              g > run.rgb_max[1] || b < run.rgb_min[2] || b > run.rgb_max[2]) {
-            GrownRegion widened = run;
-            widened.pixel_count = u - begin + 1;
-            widened.rgb_sum = {sum[0] + r, sum[1] + g, sum[2] + b};
-            widened.rgb_min = {std::min(run.rgb_min[0], r), std::min(run.rgb_min[1], g),
-                               std::min(run.rgb_min[2], b)};
-            widened.rgb_max = {std::max(run.rgb_max[0], r), std::max(run.rgb_max[1], g),
-                               std::max(run.rgb_max[2], b)};
-            if (volume_of(widened) >= max_volume_grey3) {
-              cut_by_edge = false;
-              break;
-            }
-            run.rgb_min = widened.rgb_min;
-            run.rgb_max = widened.rgb_max;
-          }
-        } else {
+      if (is_barrier) {
+        const std::uint8_t* p = row + 3 * u;
+        run.rgb_min = run.rgb_max = {p[2], p[1], p[0]};
+        for (++u; u < width && on_barrier[u] != 0; ++u) {
+          const std::uint8_t* q = row + 3 * u;
           for (int c = 0; c < 3; ++c) {
             run.rgb_min[c] = std::min(run.rgb_min[c], q[2 - c]);
             run.rgb_max[c] = std::max(run.rgb_max[c], q[2 - c]);
           }
         }
-        sum[0] += q[2];
-        sum[1] += q[1];
-        sum[2] += q[0];
+        run.rgb_sum = rgb_sum(row, begin, u);
+      } else {
+        u = grow_run(row, on_barrier, refused_step.data(), begin, width, volume_limit, run,
+                     cut_by_edge);
       }
       const int n = u - begin;
       run.pixel_count = n;
       run.u_sum_px = static_cast<std::int64_t>(begin + u - 1) * n / 2;
       run.v_sum_px = static_cast<std::int64_t>(v) * n;
-      run.rgb_sum = sum;
       run.barrier = is_barrier;
       const int index = static_cast<int>(map.runs.size());
       map.runs.push_back({v, begin, u, index});
@@ -384,7 +346,7 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
         const int root_here = find_root(parent, b);
         if (root_above == root_here) continue;
         const GrownRegion both = joined(stats[root_above], stats[root_here]);
-        if (both.pixel_count > max_region_px || volume_of(both) >= max_volume_grey3) {
+        if (both.pixel_count > max_region_px || !volume_limit.admits(both)) {
           touching_runs.push_back({k_above, b, false});
           continue;
         }
