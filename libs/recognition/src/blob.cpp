@@ -15,6 +15,8 @@
 #include <string>
 #include <utility>
 
+#include "union_find.hpp"
+
 namespace vsl::recognition {
 namespace {
 
@@ -69,23 +71,6 @@ void add_colours(const std::uint8_t* row, int u_begin, int u_end, ColourStatisti
   colours.max = {max_r, max_g, max_b};
 }
 
-// Union-find over the indices 0 .. n - 1.
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int find(int i) {
-    while (parent_[i] != i) {
-      parent_[i] = parent_[parent_[i]];  // path halving
-      i = parent_[i];
-    }
-    return i;
-  }
-  void unite(int a, int b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<int> parent_;
-};
-
 using Interval = std::pair<int, int>;  // columns first .. second - 1
 
 int total_length(const std::vector<Interval>& intervals) {
@@ -138,7 +123,7 @@ double outer_crack_length(const Blob& blob) {
   run_begin[rows] = static_cast<int>(i);
   gap_begin[rows] = static_cast<int>(gaps.size());
 
-  UnionFind connected(gaps.size());
+  detail::UnionFind connected(gaps.size());
   for (int r = 1; r < rows; ++r) {
     for (int a = gap_begin[r - 1], b = gap_begin[r]; a < gap_begin[r] && b < gap_begin[r + 1];) {
       if (gaps[a].u_begin < gaps[b].u_end && gaps[b].u_begin < gaps[a].u_end) connected.unite(a, b);

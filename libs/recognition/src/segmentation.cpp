@@ -11,32 +11,11 @@
 
 #include "segmentation_mean_shift.hpp"
 #include "segmentation_region_growing.hpp"
+#include "union_find.hpp"
 #include "vsl/recognition/segmentation.hpp"
 
 namespace vsl::recognition {
-namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int find(int i) {
-    while (parent_[i] != i) {
-      parent_[i] = parent_[parent_[i]];  // path halving
-      i = parent_[i];
-    }
-    return i;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& options) {
   const RegionMap map = grow_regions(bgr_image, options);
@@ -83,7 +62,7 @@ std::vector<Blob> segment(const cv::Mat& bgr_image, const SegmentationOptions& o
   // criterion at the scale of pixels, and the spatial kernel keeps each colour
   // mode local to its neighbourhood.
   const double max_mode_distance2 = options.max_mode_distance * options.max_mode_distance;
-  UnionFind blobs_of(features.size());
+  detail::UnionFind blobs_of(features.size());
   std::vector<Eigen::Vector3d> chromaticity(features.size());
   std::vector<double> brightness(features.size());
   for (std::size_t k = 0; k < features.size(); ++k) {

@@ -2,27 +2,18 @@
 // segment is only a fragment in one image is still paired, its centre is the whole bar's, and a
 // pair whose segments do not overlap along the bar is refused.
 #include <gtest/gtest.h>
-#include <opencv2/calib3d.hpp>
 
 #include <cmath>
 #include <vector>
 
+#include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
 namespace vsl::recognition {
 namespace {
 
-Eigen::Vector2d project(const Eigen::Vector3d& left_point_m, const head::CameraIntrinsics& camera,
-                        const Eigen::Isometry3d& left_T_camera) {
-  const Eigen::Vector3d p = left_T_camera.inverse() * left_point_m;
-  const std::vector<cv::Point3d> object{{p.x(), p.y(), p.z()}};
-  const cv::Matx33d k(camera.fx_px, 0, camera.cx_px, 0, camera.fy_px, camera.cy_px, 0, 0, 1);
-  const cv::Matx<double, 1, 5> d(camera.distortion.data());
-  std::vector<cv::Point2d> image;
-  cv::projectPoints(object, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), k, d, image);
-  return {image[0].x, image[0].y};
-}
+using test::project;
 
 // A handle detection whose segment runs between two image points (what the handle recognizer
 // reports: the middle of the ends, the axis angle in [0, pi), the length), 4 px wide.

@@ -1,13 +1,13 @@
 // Cross match (paper §2.1): the gates (epipolar distance, disparity range, size, orientation),
 // the one-to-one assignment, verging eyes, and the `stereo:` config section.
 #include <gtest/gtest.h>
-#include <opencv2/calib3d.hpp>
 
 #include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "support/projection.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/frame_recognizer.hpp"
@@ -21,17 +21,7 @@ head::StereoCalibration sim_calibration() {
   return head::load_stereo_calibration("calib/armar3_sim.yaml");
 }
 
-// Raw pixel of a point given in the left camera frame, seen by a camera at left_T_camera.
-Eigen::Vector2d project(const Eigen::Vector3d& left_point_m, const head::CameraIntrinsics& camera,
-                        const Eigen::Isometry3d& left_T_camera) {
-  const Eigen::Vector3d p = left_T_camera.inverse() * left_point_m;
-  const std::vector<cv::Point3d> object{{p.x(), p.y(), p.z()}};
-  const cv::Matx33d k(camera.fx_px, 0, camera.cx_px, 0, camera.fy_px, camera.cy_px, 0, 0, 1);
-  const cv::Matx<double, 1, 5> d(camera.distortion.data());
-  std::vector<cv::Point2d> image;
-  cv::projectPoints(object, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), k, d, image);
-  return {image[0].x, image[0].y};
-}
+using test::project;
 
 // A vertical handle-like detection (elongated along v) at a pixel.
 Detection detection(const std::string& type, const Eigen::Vector2d& px, double area_px = 120.0,

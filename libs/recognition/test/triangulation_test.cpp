@@ -2,7 +2,6 @@
 // predicted covariance matches the scatter of seeded Monte Carlo noise (NEES), and lens
 // distortion is undone before triangulating.
 #include <gtest/gtest.h>
-#include <opencv2/calib3d.hpp>
 
 #include <Eigen/Cholesky>
 
@@ -10,22 +9,14 @@
 #include <random>
 #include <vector>
 
+#include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
 namespace vsl::recognition {
 namespace {
 
-Eigen::Vector2d project(const Eigen::Vector3d& left_point_m, const head::CameraIntrinsics& camera,
-                        const Eigen::Isometry3d& left_T_camera) {
-  const Eigen::Vector3d p = left_T_camera.inverse() * left_point_m;
-  const std::vector<cv::Point3d> object{{p.x(), p.y(), p.z()}};
-  const cv::Matx33d k(camera.fx_px, 0, camera.cx_px, 0, camera.fy_px, camera.cy_px, 0, 0, 1);
-  const cv::Matx<double, 1, 5> d(camera.distortion.data());
-  std::vector<cv::Point2d> image;
-  cv::projectPoints(object, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), k, d, image);
-  return {image[0].x, image[0].y};
-}
+using test::project;
 
 Detection at(const Eigen::Vector2d& px) {
   Detection d;
