@@ -2,8 +2,13 @@
 // kitchen, as a table and as JSON; bad input exits 2 with one line.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "run_command.hpp"
 
@@ -37,6 +42,29 @@ TEST(VslEvalRecognition, JsonOnStandardOutput) {
         "\"error_by_distance_band\":", "\"median_error_m\":", "\"time_per_stereo_pair_ms\":"}) {
     EXPECT_NE(result.out.find(key), std::string::npos) << key << "\n" << result.out;
   }
+}
+
+TEST(VslEvalRecognition, DumpWritesPicturesFunnelLinesAndTheFunnelTable) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("vsl_eval_dump_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto result =
+      run_command({VSL_EVAL_RECOGNITION_BIN, "--world", "config/worlds/kitchen_galley.yaml",
+                   "--views", "2", "-q", "--dump", dir.string()},
+                  300.0);
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  EXPECT_NE(result.out.find("where the ground-truth objects were lost"), std::string::npos)
+      << result.out;
+  for (const char* file : {"frame_0000.png", "frame_0000_raw.png", "frame_0000_right.png",
+                           "frame_0001.txt", "funnel.txt"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  std::ifstream frame(dir / "frame_0000.txt");
+  std::stringstream text;
+  text << frame.rdbuf();
+  EXPECT_NE(text.str().find("\nfunnel "), std::string::npos) << text.str();
+  std::filesystem::remove_all(dir);
 }
 
 TEST(VslEvalRecognition, BadInputExitsTwoWithOneLine) {

@@ -23,6 +23,7 @@
 
 #include "evaluation.hpp"
 #include "frame_dump.hpp"
+#include "funnel.hpp"
 #include "json_writer.hpp"
 #include "recognition_config.hpp"
 #include "recognition_views.hpp"
@@ -61,8 +62,11 @@ options:
                         (grey), detections (yellow), visible ground truth (blue circles) and
                         percepts (green crosses: true positives, red: false ones); and
                         DIR/frame_NNNN.txt: the objects in view, their pixel counts, distances
-                        and whether they count as ground truth; DIR/frame_NNNN_raw.png: the
-                        left image as the recognizer saw it
+                        and whether they count as ground truth, and where each was lost
+                        (funnel lines); DIR/frame_NNNN_raw.png: the left image as the
+                        recognizer saw it; and a table of where the ground-truth objects were
+                        lost (no blob, merged, fragment, refused at stereo by which gate,
+                        undetected), printed and written to DIR/funnel.txt
   --json FILE           also write the results as JSON (- for standard output, then no table)
   -q, --quiet           no status line
 exit codes: 0 ok, 1 an output file could not be written, 2 bad usage or input file
@@ -269,6 +273,7 @@ int main(int argc, char** argv) {
       model_contents.push_back(recognition::read_recognizer_file(file));
     }
     tools::EvaluationTally tally;
+    tools::FunnelTally funnel;  // with --dump
     std::vector<std::string> types;
     for (const auto& recognizer : recognizers) {
       types.push_back(recognizer->type());
@@ -353,6 +358,7 @@ int main(int argc, char** argv) {
                << (recognition::whole_in_both_images(object) ? " whole" : " cut");
           int left_best = -1;
           std::array<int, 2> detection_index{-1, -1};
+          std::array<tools::FunnelSide, 2> funnel_sides;
           for (int side = 0; side < 2; ++side) {
             const auto& blobs = side == 0 ? result.left_blobs : result.right_blobs;
             const auto& detections = side == 0 ? result.left_detections : result.right_detections;
@@ -395,6 +401,16 @@ int main(int argc, char** argv) {
               }
             }
             if (side == 0) left_best = best;
+            tools::FunnelSide& funnel_side = funnel_sides[static_cast<std::size_t>(side)];
+            funnel_side.blob = best;
+            funnel_side.purity = best_area > 0 ? double(best_on) / best_area : 0.0;
+            funnel_side.coverage = total > 0 ? double(best_on) / total : 0.0;
+            funnel_side.detected = detected;
+            if (best >= 0) {
+              const recognition::Blob& blob = blobs[static_cast<std::size_t>(best)];
+              funnel_side.at_border = blob.u_min <= 1 || blob.v_min <= 1 ||
+                                      blob.u_max >= ids.cols - 2 || blob.v_max >= ids.rows - 2;
+            }
             text << " | " << best << " " << (best_area > 0 ? double(best_on) / best_area : 0.0)
                  << " " << (total > 0 ? double(best_on) / total : 0.0) << " "
                  << (detected ? "det" : "-") << " " << d2;
@@ -434,18 +450,24 @@ int main(int argc, char** argv) {
               text << " " << (p.ego_position_m - object.ego_position_m).norm();
             }
           }
+          std::string stereo = "no_pair";
           for (const recognition::StereoPairTrace& trace : pair_trace) {
             if (trace.left_detection == detection_index[0] &&
                 trace.right_detection == detection_index[1]) {
               text << " | stereo " << recognition::stereo_gate_name(trace.refused_by);
               if (trace.refused_by != recognition::StereoGate::kNone) {
                 text << " " << trace.value << " limit " << trace.limit;
+                stereo = recognition::stereo_gate_name(trace.refused_by);
               } else {
                 text << (trace.assigned ? " assigned" : " not_assigned");
+                stereo = trace.assigned ? "assigned" : "not_assigned";
               }
             }
           }
           text << "\n";
+          funnel.add(object.type, recognition::whole_in_both_images(object),
+                     tools::funnel_stage(funnel_sides[0], funnel_sides[1], object_matched[t] != 0),
+                     stereo);
         }
         text << "# percept type left_px right_px distance_m matched_object error_m\n";
         for (std::size_t i = 0; i < result.percepts.size(); ++i) {
@@ -494,6 +516,16 @@ int main(int argc, char** argv) {
     }
 
     if (options.json_file != "-") print_table(options, tally);
+    if (!options.dump_dir.empty()) {
+      if (options.json_file != "-") funnel.print(std::cout);
+      const std::string path = (std::filesystem::path(options.dump_dir) / "funnel.txt").string();
+      std::ofstream out(path);
+      if (out) funnel.print(out);
+      if (!out) {
+        std::cerr << "vsl-eval-recognition: cannot write " << path << "\n";
+        return 1;
+      }
+    }
     if (options.json_file == "-") {
       write_json(std::cout, options, tally);
     } else if (!options.json_file.empty()) {
