@@ -19,7 +19,7 @@ namespace {
 
 // The epipolar gate of two rectangle outlines (rectangle_containment_excess_px): this fraction of
 // their height (pixels), when more than StereoMatchOptions::max_epipolar_distance_px.
-constexpr double kRectangleCentreFraction = 0.05;
+constexpr double kRectangleEpipolarFraction = 0.05;
 
 // rectangle_containment_excess_px: a strip that segmentation adds in one image only is at most
 // this fraction of the longer side (top edge face, shadow: a few pixels). Without the bound the
@@ -182,7 +182,7 @@ std::vector<StereoPercept> match_and_triangulate(
     };
     // Position: the right reference point on (near) the left one's epipolar line. For two
     // rectangle outlines, their vertical sides nest along the epipolar direction
-    // (rectangle_containment_excess_px), to kRectangleCentreFraction of the height.
+    // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height.
     const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
     // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in
     // 3D, and the position gate as the containment of the shorter segment in the longer.
@@ -209,7 +209,7 @@ std::vector<StereoPercept> match_and_triangulate(
     }
     const double max_epipolar_px =
         rectangles ? std::max(options.max_epipolar_distance_px,
-                              kRectangleCentreFraction * 0.5 * (dl.height_px + dr.height_px))
+                              kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px))
                    : options.max_epipolar_distance_px;
     if (!(epipolar_px <= max_epipolar_px)) {
       return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
