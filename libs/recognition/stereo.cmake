@@ -3,6 +3,7 @@
 list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/epipolar.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/triangulation.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/side_correlation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_assignment.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_options.cpp
@@ -11,6 +12,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/stereo_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/side_correlation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)
 list(APPEND VSL_RECOGNITION_BENCHES ${CMAKE_CURRENT_SOURCE_DIR}/bench/stereo_bench.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/bench/frame_bench.cpp)

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <array>
 #include <chrono>
@@ -346,10 +347,14 @@ int main(int argc, char** argv) {
         {
           Eigen::Isometry3d ego_T_left, ego_T_right;
           head.ego_T_cameras(view.joints.positions_rad, ego_T_left, ego_T_right);
+          cv::Mat left_grey, right_grey;
+          cv::cvtColor(frame.left.image, left_grey, cv::COLOR_BGR2GRAY);
+          cv::cvtColor(frame.right.image, right_grey, cv::COLOR_BGR2GRAY);
           recognition::match_and_triangulate(
               result.left_detections, result.right_detections, head.calibration().left,
               head.calibration().right, ego_T_left.inverse() * ego_T_right, config.options.stereo,
-              ego_T_left.linear().transpose() * Eigen::Vector3d::UnitZ(), &pair_trace);
+              ego_T_left.linear().transpose() * Eigen::Vector3d::UnitZ(), &pair_trace,
+              {&left_grey, &right_grey});
         }
         for (std::size_t t = 0; t < truth.size(); ++t) {
           const recognition::GroundTruthObject& object = truth[t];

@@ -3,7 +3,9 @@
 #include "vsl/recognition/frame_recognizer.hpp"
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -68,11 +70,25 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
   }
   const Clock::time_point classified = Clock::now();
 
+  // Grey images only for the gates that look at them (door sides correlated), and only when
+  // both images have an outline to correlate.
+  cv::Mat left_grey, right_grey;
+  StereoImages images;
+  const auto has_outline = [](const std::vector<Detection>& detections) {
+    return std::any_of(detections.begin(), detections.end(),
+                       [](const Detection& d) { return d.corners_px.size() == 4; });
+  };
+  if (options_.stereo.min_side_correlation > 0.0 && has_outline(result.left_detections) &&
+      has_outline(result.right_detections)) {
+    cv::cvtColor(left_bgr, left_grey, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(right_bgr, right_grey, cv::COLOR_BGR2GRAY);
+    images = {&left_grey, &right_grey};
+  }
   const std::vector<StereoPercept> stereo = match_and_triangulate(
       result.left_detections, result.right_detections, calibration.left, calibration.right,
       left_T_right, options_.stereo,
       // The ego frame's z is up (head_kinematics.hpp).
-      result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ());
+      result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ(), nullptr, images);
   // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
   const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
   result.percepts.reserve(stereo.size());

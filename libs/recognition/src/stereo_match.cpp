@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "epipolar.hpp"
+#include "side_correlation.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
 
@@ -26,6 +27,12 @@ constexpr double kRectangleEpipolarFraction = 0.05;
 // galley gained 3 true and 5 false door percepts (drawer stacks merged in one image); the kitchen
 // was the same for any bound from 0.15 to 1 and lost recall at 0.1.
 constexpr double kMaxRectangleSideMismatch = 0.15;
+
+// The side correlation's search (pixels of image motion either way of the outlines' depth): a
+// margin, plus this fraction of the outline's width, which covers a stile (60 mm of a 0.3-0.6 m
+// door) that one image's outline lacks.
+constexpr double kSideSearchPx = 6.0;
+constexpr double kSideSearchWidthFraction = 0.25;
 
 // Added to each bar's mean width (pixels) before their ratio is compared: the quantization of a
 // thin bar's two edges.
@@ -126,7 +133,8 @@ std::vector<StereoPercept> match_and_triangulate(
     const std::vector<Detection>& left, const std::vector<Detection>& right,
     const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
     const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
-    const Eigen::Vector3d& up_in_left_camera, std::vector<StereoPairTrace>* pair_trace) {
+    const Eigen::Vector3d& up_in_left_camera, std::vector<StereoPairTrace>* pair_trace,
+    const StereoImages& images) {
   if (pair_trace) pair_trace->clear();
   if (left.empty() || right.empty()) return {};
   std::vector<Eigen::Vector2d> left_raw, right_raw;
@@ -139,6 +147,12 @@ std::vector<StereoPercept> match_and_triangulate(
       detail::undistort(right_raw, right_intrinsics);
   const detail::EpipolarGeometry epipolar(left_intrinsics, right_intrinsics, left_T_right);
   const detail::Triangulator triangulator(left_intrinsics, right_intrinsics, left_T_right);
+  std::optional<detail::SideCorrelator> correlator;
+  if (options.min_side_correlation > 0.0 && images.left_grey && images.right_grey &&
+      up_in_left_camera.norm() > 0.0) {
+    correlator.emplace(*images.left_grey, *images.right_grey, left_intrinsics, right_intrinsics,
+                       left_T_right, up_in_left_camera);
+  }
   std::vector<std::vector<detail::IdealPixel>> left_corners, right_corners;
   for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
   for (const Detection& d : right) {
@@ -286,17 +300,44 @@ std::vector<StereoPercept> match_and_triangulate(
     }
     bool rectangle = false;
     if (rectangles) {
-      const auto centre = one_side_centre
-                              ? one_side_centre
-                              : triangulator.rectangle_centre(corner_array(left_corners[l]),
-                                                              corner_array(right_corners[r]));
-      // Both sides measured: the edges between their ends must be level.
-      if (centre && !one_side_centre && options.max_edge_slope_rad > 0.0 &&
-          up_in_left_camera.norm() > 0.0) {
-        const std::optional<double> slope = triangulator.rectangle_edge_slope(
-            corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera);
-        if (slope && std::atan(*slope) > options.max_edge_slope_rad) {
-          return refuse(StereoGate::kEdgeSlope, std::atan(*slope), options.max_edge_slope_rad);
+      std::optional<Eigen::Vector3d> centre = one_side_centre;
+      if (!one_side_centre) {
+        std::optional<std::array<Eigen::Vector3d, 4>> ends = triangulator.rectangle_ends(
+            corner_array(left_corners[l]), corner_array(right_corners[r]));
+        // Each side's depth from the images around it (side_correlation.hpp), searched around
+        // the outlines' depth by a margin that covers a stile lost in one image.
+        if (ends && correlator) {
+          const std::array<Eigen::Vector2d, 4> corners = corner_array(left_corners[l]);
+          const auto sides = detail::Triangulator::vertical_sides(corners);
+          const double width_px = 0.5 * (corners[sides[0][0]] + corners[sides[0][1]] -
+                                         corners[sides[1][0]] - corners[sides[1][1]])
+                                            .norm();
+          const double search_px = kSideSearchPx + kSideSearchWidthFraction * width_px;
+          for (int s = 0; s < 2; ++s) {
+            const auto [i, j] = sides[static_cast<std::size_t>(s)];
+            const double initial_m = 0.5 * (correlator->horizontal_distance((*ends)[2 * s]) +
+                                            correlator->horizontal_distance((*ends)[2 * s + 1]));
+            const auto depth = correlator->correlate(corners[i], corners[j], initial_m, search_px,
+                                                     options.min_depth_m, options.max_depth_m);
+            const double correlation = depth ? depth->correlation : -1.0;
+            if (!depth || correlation < options.min_side_correlation) continue;
+            const auto top = correlator->point_at(corners[i], depth->horizontal_distance_m);
+            const auto bottom = correlator->point_at(corners[j], depth->horizontal_distance_m);
+            if (!top || !bottom) continue;
+            (*ends)[2 * s] = *top;
+            (*ends)[2 * s + 1] = *bottom;
+          }
+        }
+        if (ends) {
+          centre = Eigen::Vector3d(((*ends)[0] + (*ends)[1] + (*ends)[2] + (*ends)[3]) / 4.0);
+          // Both sides measured: the edges between their ends must be level.
+          if (options.max_edge_slope_rad > 0.0) {
+            const std::optional<double> slope =
+                detail::Triangulator::edge_slope(*ends, up_in_left_camera);
+            if (slope && std::atan(*slope) > options.max_edge_slope_rad) {
+              return refuse(StereoGate::kEdgeSlope, std::atan(*slope), options.max_edge_slope_rad);
+            }
+          }
         }
       }
       if (centre) {

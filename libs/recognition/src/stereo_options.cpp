@@ -16,7 +16,8 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   section.expect_keys({"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
                        "max_orientation_difference_rad", "min_elongation_for_orientation",
                        "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m",
-                       "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad", "bar_types"});
+                       "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad", "bar_types",
+                       "min_side_correlation"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -39,6 +40,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   }
   if (const auto v = section.find("max_edge_slope_rad")) {
     out.max_edge_slope_rad = v->as_double_in(0.0, 1.5);
+  }
+  if (const auto v = section.find("min_side_correlation")) {
+    out.min_side_correlation = v->as_double_in(0.0, 1.0);
   }
   if (const auto v = section.find("max_side_tilt_rad")) {
     out.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2: sin() still grows

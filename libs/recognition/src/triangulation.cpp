@@ -37,15 +37,15 @@ double verticality(const std::array<Eigen::Vector2d, 4>& c, int i, int j) {
   return n > 0.0 ? std::abs(d.y()) / n : 0.0;
 }
 
-// The two sides nearer the image vertical: (0, 3) and (1, 2), or (0, 1) and (3, 2).
-std::array<std::array<int, 2>, 2> vertical_sides(const std::array<Eigen::Vector2d, 4>& c) {
+}  // namespace
+
+std::array<std::array<int, 2>, 2> Triangulator::vertical_sides(
+    const std::array<Eigen::Vector2d, 4>& c) {
   if (verticality(c, 0, 1) + verticality(c, 3, 2) > verticality(c, 0, 3) + verticality(c, 1, 2)) {
     return {{{0, 1}, {3, 2}}};
   }
   return {{{0, 3}, {1, 2}}};
 }
-
-}  // namespace
 
 std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
@@ -111,13 +111,19 @@ std::optional<double> Triangulator::rectangle_edge_slope(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
     const Eigen::Vector3d& up) const {
   const auto ends = rectangle_ends(left, right);
-  if (!ends || !(up.norm() > 0.0)) return std::nullopt;
+  if (!ends) return std::nullopt;
+  return edge_slope(*ends, up);
+}
+
+std::optional<double> Triangulator::edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
+                                               const Eigen::Vector3d& up) {
+  if (!(up.norm() > 0.0)) return std::nullopt;
   const Eigen::Vector3d u = up.normalized();
   double slope = 0.0;
   // The edges join the first ends of the two sides, and the second ends.
   for (const auto& [a, b] : {std::pair{0, 2}, std::pair{1, 3}}) {
     const Eigen::Vector3d edge =
-        (*ends)[static_cast<std::size_t>(b)] - (*ends)[static_cast<std::size_t>(a)];
+        ends[static_cast<std::size_t>(b)] - ends[static_cast<std::size_t>(a)];
     const double rise = std::abs(edge.dot(u));
     const double run = (edge - edge.dot(u) * u).norm();
     if (!(run > 0.0)) return std::nullopt;

@@ -74,6 +74,14 @@ class Triangulator {
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
       const Eigen::Vector3d& up_in_left_camera) const;
+  // The same slope for four ends in the order of rectangle_ends; nullopt when an edge is
+  // vertical or `up` is zero.
+  static std::optional<double> edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
+                                          const Eigen::Vector3d& up_in_left_camera);
+  // The corner indices of the two sides nearer the image vertical, in the order rectangle_ends
+  // takes them: {0, 3} and {1, 2}, or {0, 1} and {3, 2}.
+  static std::array<std::array<int, 2>, 2> vertical_sides(
+      const std::array<Eigen::Vector2d, 4>& corners_px);
 
   // The centre of the same rectangle when only one of its vertical sides (`good_side`, in the
   // order of side_tilts) is a door edge in both images, and the other only in image

@@ -451,6 +451,7 @@ stereo:
   max_side_tilt_rad: 0.05
   max_edge_slope_rad: 0.3
   bar_types: [handle]
+  min_side_correlation: 0.7
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -475,6 +476,7 @@ stereo:
   EXPECT_EQ(o.max_side_tilt_rad, 0.05);
   EXPECT_EQ(o.max_edge_slope_rad, 0.3);
   EXPECT_EQ(o.bar_types, std::vector<std::string>{"handle"});
+  EXPECT_EQ(o.min_side_correlation, 0.7);
 }
 
 std::string stereo_error(const std::string& body) {

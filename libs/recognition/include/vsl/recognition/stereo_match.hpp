@@ -16,6 +16,9 @@
 namespace vsl::config {
 class Node;
 }
+namespace cv {
+class Mat;
+}
 
 namespace vsl::recognition {
 
@@ -75,6 +78,26 @@ struct StereoMatchOptions {
   // compares the mean widths (area over length); the centre is the middle of the union of both
   // lifted segments, and the class length (major_extent_range_m) is the union's.
   std::vector<std::string> bar_types;
+  // Rectangle outlines (doors) measured in the images themselves: the depth of each vertical
+  // side of the left outline is where the image around it is found again in the right image
+  // (side_correlation.hpp: a plane sweep of the vertical side along the epipolar lines, scored by
+  // 2 cov / (var_l + var_r), a normalized cross-correlation that also wants equal contrast),
+  // searched within 6 px plus a quarter of the outline's width of the outlines' depth; not where
+  // the right outline's side is. One image's outline often lacks a stile or a rail that the
+  // other keeps, and that side's disparity from the outlines is then off by the stile's width.
+  // A side whose best score is below this keeps the outlines' depth (a side without texture to
+  // correlate: the middle of a double door, a reveal of sub-pixel width). The edge-slope gate
+  // (max_edge_slope_rad) then tests the sides so placed. Needs the images
+  // (match_and_triangulate's `images`) and the up direction; 0 turns it off.
+  double min_side_correlation = 0.0;
+};
+
+// The frame's grey images (CV_8UC1, raw pixels, the intrinsics' size), for the gates that look
+// at the images themselves (StereoMatchOptions::min_side_correlation); without them those are
+// off.
+struct StereoImages {
+  const cv::Mat* left_grey = nullptr;
+  const cv::Mat* right_grey = nullptr;
 };
 
 // Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
@@ -149,6 +172,6 @@ std::vector<StereoPercept> match_and_triangulate(
     const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
     const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
     const Eigen::Vector3d& up_in_left_camera = Eigen::Vector3d::Zero(),
-    std::vector<StereoPairTrace>* pair_trace = nullptr);
+    std::vector<StereoPairTrace>* pair_trace = nullptr, const StereoImages& images = {});
 
 }  // namespace vsl::recognition

@@ -1,0 +1,191 @@
+#include "side_correlation.hpp"
+
+#include <opencv2/core/mat.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "epipolar.hpp"
+
+namespace vsl::recognition::detail {
+namespace {
+
+// The window: half its width across the side (pixels), the fraction of the side's length left
+// out at each end, its number of samples along the side (at most, and at least), and the
+// shortest side correlated (pixels).
+constexpr int kAcrossHalfWidthPx = 4;
+constexpr double kEndMargin = 0.1;
+constexpr int kMaxSamplesAlong = 32;
+constexpr int kMinSamplesAlong = 6;
+constexpr double kMinSideLengthPx = 8.0;
+// A window whose grey values vary by less than this (standard deviation, grey levels) has no
+// edge to correlate.
+constexpr double kMinWindowStdDev = 2.0;
+
+bool has_distortion(const head::CameraIntrinsics& intrinsics) {
+  return std::any_of(intrinsics.distortion.begin(), intrinsics.distortion.end(),
+                     [](double k) { return k != 0.0; });
+}
+
+// Bilinear grey value at raw pixel (x, y); false outside the image.
+bool sample(const cv::Mat& grey, double x, double y, double& value) {
+  if (!(x >= 0.0 && y >= 0.0 && x < grey.cols - 1 && y < grey.rows - 1)) return false;
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const double fx = x - x0, fy = y - y0;
+  const unsigned char* row0 = grey.ptr<unsigned char>(y0) + x0;
+  const unsigned char* row1 = grey.ptr<unsigned char>(y0 + 1) + x0;
+  value = (1.0 - fy) * ((1.0 - fx) * row0[0] + fx * row0[1]) +
+          fy * ((1.0 - fx) * row1[0] + fx * row1[1]);
+  return true;
+}
+
+}  // namespace
+
+Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntrinsics& k) {
+  const double x = (ideal_px.x() - k.cx_px) / k.fx_px;
+  const double y = (ideal_px.y() - k.cy_px) / k.fy_px;
+  const double r2 = x * x + y * y;
+  const auto& d = k.distortion;  // k1, k2, p1, p2, k3
+  const double radial = 1.0 + r2 * (d[0] + r2 * (d[1] + r2 * d[4]));
+  const double xd = x * radial + 2.0 * d[2] * x * y + d[3] * (r2 + 2.0 * x * x);
+  const double yd = y * radial + d[2] * (r2 + 2.0 * y * y) + 2.0 * d[3] * x * y;
+  return {k.fx_px * xd + k.cx_px, k.fy_px * yd + k.cy_px};
+}
+
+SideCorrelator::SideCorrelator(const cv::Mat& left_grey, const cv::Mat& right_grey,
+                               const head::CameraIntrinsics& left,
+                               const head::CameraIntrinsics& right,
+                               const Eigen::Isometry3d& left_T_right,
+                               const Eigen::Vector3d& up_in_left_camera)
+    : left_grey_(left_grey),
+      right_grey_(right_grey),
+      left_(left),
+      right_(right),
+      right_distorted_(has_distortion(right)),
+      left_distorted_(has_distortion(left)),
+      left_k_inverse_(camera_matrix(left).inverse()),
+      right_k_r_transpose_(camera_matrix(right) * left_T_right.linear().transpose()),
+      c_right_(right_k_r_transpose_ * left_T_right.translation()),
+      up_(up_in_left_camera.norm() > 0.0 ? up_in_left_camera.normalized()
+                                         : Eigen::Vector3d::Zero()) {}
+
+double SideCorrelator::horizontal_distance(const Eigen::Vector3d& p) const {
+  return (p - p.dot(up_) * up_).norm();
+}
+
+std::optional<Eigen::Vector3d> SideCorrelator::point_at(const Eigen::Vector2d& q,
+                                                        double distance_m) const {
+  const Eigen::Vector3d ray = left_k_inverse_ * q.homogeneous();
+  const double h = horizontal_distance(ray);
+  if (!(h > 1e-9)) return std::nullopt;
+  return Eigen::Vector3d(distance_m / h * ray);
+}
+
+std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
+    const Eigen::Vector2d& a, const Eigen::Vector2d& b, double initial_distance_m, double search_px,
+    double min_distance_m, double max_distance_m) const {
+  const Eigen::Vector2d along = b - a;
+  const double length = along.norm();
+  if (!(length >= kMinSideLengthPx) || !(up_.norm() > 0.0) || !(initial_distance_m > 0.0)) {
+    return std::nullopt;
+  }
+  const Eigen::Vector2d across(-along.y() / length, along.x() / length);
+  const int n_along = std::clamp(static_cast<int>(length * (1.0 - 2.0 * kEndMargin) / 3.0),
+                                 kMinSamplesAlong, kMaxSamplesAlong);
+  // The left window and, per pixel, A = K_r R^T r / |h(r)|.
+  std::vector<double> left_values;
+  std::vector<Eigen::Vector3d> right_a;
+  left_values.reserve(static_cast<std::size_t>(n_along * (2 * kAcrossHalfWidthPx + 1)));
+  right_a.reserve(left_values.capacity());
+  for (int i = 0; i < n_along; ++i) {
+    const double s = kEndMargin + (1.0 - 2.0 * kEndMargin) * (i + 0.5) / n_along;
+    for (int o = -kAcrossHalfWidthPx; o <= kAcrossHalfWidthPx; ++o) {
+      const Eigen::Vector2d q = a + s * along + o * across;
+      const Eigen::Vector2d raw = left_distorted_ ? distort(q, left_) : q;
+      double value = 0.0;
+      if (!sample(left_grey_, raw.x(), raw.y(), value)) continue;
+      const Eigen::Vector3d ray = left_k_inverse_ * q.homogeneous();
+      const double h = horizontal_distance(ray);
+      if (!(h > 1e-9)) return std::nullopt;
+      left_values.push_back(value);
+      right_a.push_back(right_k_r_transpose_ * ray / h);
+    }
+  }
+  const std::size_t n = left_values.size();
+  if (n < static_cast<std::size_t>(kMinSamplesAlong * (2 * kAcrossHalfWidthPx + 1))) {
+    return std::nullopt;
+  }
+  double mean = 0.0;
+  for (const double v : left_values) mean += v;
+  mean /= static_cast<double>(n);
+  double norm2 = 0.0;
+  for (double& v : left_values) {
+    v -= mean;
+    norm2 += v * v;
+  }
+  if (!(norm2 > kMinWindowStdDev * kMinWindowStdDev * static_cast<double>(n))) return std::nullopt;
+  const double left_norm = std::sqrt(norm2);
+
+  // lambda steps of one pixel of the window's motion in the right image, measured at the
+  // middle of the window around the initial distance.
+  const auto project = [&](const Eigen::Vector3d& big_a, double lambda, Eigen::Vector2d& px) {
+    const Eigen::Vector3d p = big_a - lambda * c_right_;
+    if (!(p.z() > 1e-9)) return false;
+    px = p.head<2>() / p.z();
+    if (right_distorted_) px = distort(px, right_);
+    return true;
+  };
+  const double lambda0 = 1.0 / initial_distance_m;
+  const Eigen::Vector3d& middle = right_a[n / 2];
+  Eigen::Vector2d p0, p1;
+  const double probe = 1e-3 * lambda0;
+  if (!project(middle, lambda0, p0) || !project(middle, lambda0 + probe, p1)) return std::nullopt;
+  const double px_per_lambda = (p1 - p0).norm() / probe;
+  if (!(px_per_lambda > 0.0)) return std::nullopt;
+  const double step = 1.0 / px_per_lambda;
+  const int half_steps = std::max(1, static_cast<int>(std::ceil(search_px)));
+  const double lambda_min = std::max(1.0 / max_distance_m, lambda0 - half_steps * step);
+  const double lambda_max = std::min(1.0 / min_distance_m, lambda0 + half_steps * step);
+  if (!(lambda_max > lambda_min)) return std::nullopt;
+  const int steps = static_cast<int>(std::floor((lambda_max - lambda_min) / step)) + 1;
+
+  std::vector<double> scores(static_cast<std::size_t>(steps), -2.0);  // -2: window left the image
+  std::vector<double> right_values(n);
+  for (int k = 0; k < steps; ++k) {
+    const double lambda = lambda_min + k * step;
+    bool inside = true;
+    double right_mean = 0.0;
+    for (std::size_t i = 0; i < n && inside; ++i) {
+      Eigen::Vector2d px;
+      inside =
+          project(right_a[i], lambda, px) && sample(right_grey_, px.x(), px.y(), right_values[i]);
+      right_mean += right_values[i];
+    }
+    if (!inside) continue;
+    right_mean /= static_cast<double>(n);
+    double dot = 0.0, right_norm2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = right_values[i] - right_mean;
+      dot += v * left_values[i];
+      right_norm2 += v * v;
+    }
+    // 2 cov / (var_l + var_r): the correlation, times 2 k / (1 + k^2) for a contrast ratio k of
+    // the two windows, so that a faint groove does not match a door's outer edge.
+    scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm * left_norm + right_norm2);
+  }
+  const auto best = std::max_element(scores.begin(), scores.end());
+  if (*best < -1.5) return std::nullopt;
+  const int k = static_cast<int>(best - scores.begin());
+  double offset = 0.0;  // parabola through the peak and its neighbours, in steps
+  if (k > 0 && k + 1 < steps && scores[k - 1] > -1.5 && scores[k + 1] > -1.5) {
+    const double l = scores[k - 1], c = scores[k], r = scores[k + 1];
+    const double curvature = l - 2.0 * c + r;
+    if (curvature < 0.0) offset = std::clamp(0.5 * (l - r) / curvature, -0.5, 0.5);
+  }
+  SideDepth out;
+  out.horizontal_distance_m = 1.0 / (lambda_min + (k + offset) * step);
+  out.correlation = *best;
+  return out;
+}
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,241 @@
+// Door sides placed by correlation along the epipolar lines (side_correlation.hpp), on images
+// rendered here from a shaker door's front face: the raw-pixel model forward against OpenCV's,
+// the plane sweep of one side, and the cross match of a pair whose right outline lost a stile.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "../src/side_correlation.hpp"
+#include "../src/triangulation.hpp"
+#include "support/projection.hpp"
+#include "vsl/head/stereo_calibration.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+using test::project;
+
+// A door's front face 0.5 x 0.7 m with a 60 mm stile on each side and a 4 mm groove inside each
+// stile, in front of a bright flat wall; frames and units: the left camera frame, metres.
+struct DoorScene {
+  Eigen::Vector3d centre_m;
+  Eigen::Vector3d across;  // unit, horizontal, in the face
+  Eigen::Vector3d down;    // unit, the gravity direction
+  static constexpr double kHalfWidthM = 0.25;
+  static constexpr double kHalfHeightM = 0.35;
+  static constexpr double kStileM = 0.06;
+  static constexpr double kGrooveM = 0.004;
+
+  // Corners clockwise from the top left (as the door recognizer orders them).
+  std::array<Eigen::Vector3d, 4> corners(double right_side_inset_m = 0.0) const {
+    const double right = kHalfWidthM - right_side_inset_m;
+    return {centre_m - kHalfWidthM * across - kHalfHeightM * down,
+            centre_m + right * across - kHalfHeightM * down,
+            centre_m + right * across + kHalfHeightM * down,
+            centre_m - kHalfWidthM * across + kHalfHeightM * down};
+  }
+
+  // Grey image of the scene by a camera at left_T_camera (ideal pinhole), 3 x 3 samples a pixel.
+  cv::Mat render(const head::CameraIntrinsics& camera,
+                 const Eigen::Isometry3d& left_T_camera) const {
+    const Eigen::Vector3d normal = across.cross(down);
+    const Eigen::Vector3d origin = left_T_camera.translation();
+    cv::Mat grey(camera.height_px, camera.width_px, CV_8UC1);
+    for (int v = 0; v < camera.height_px; ++v) {
+      for (int u = 0; u < camera.width_px; ++u) {
+        double sum = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) {
+            const Eigen::Vector3d ray =
+                left_T_camera.linear() *
+                Eigen::Vector3d((u + (i - 1) / 3.0 - camera.cx_px) / camera.fx_px,
+                                (v + (j - 1) / 3.0 - camera.cy_px) / camera.fy_px, 1.0);
+            const Eigen::Vector3d p =
+                origin + normal.dot(centre_m - origin) / normal.dot(ray) * ray;
+            const double a = std::abs(across.dot(p - centre_m));
+            const double b = std::abs(down.dot(p - centre_m));
+            double value = 190.0;  // the wall
+            if (a <= kHalfWidthM && b <= kHalfHeightM) {
+              const double groove = kHalfWidthM - kStileM;
+              value = a > groove - kGrooveM && a <= groove ? 45.0 : 70.0;
+            }
+            sum += value;
+          }
+        }
+        grey.at<unsigned char>(v, u) = static_cast<unsigned char>(std::lround(sum / 9.0));
+      }
+    }
+    return grey;
+  }
+};
+
+class SideCorrelationTest : public ::testing::Test {
+ protected:
+  // The head pitched 0.4 rad down, the door below the eyes, turned 40 deg about the vertical.
+  SideCorrelationTest() {
+    const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));
+    door_.centre_m = Eigen::Vector3d(0.1, 0.6, 2.5);
+    door_.down = Eigen::Vector3d(0.0, std::cos(0.4), -std::sin(0.4));
+    door_.across = (turned - turned.dot(door_.down) * door_.down).normalized();
+    left_grey_ = door_.render(calibration_.left, Eigen::Isometry3d::Identity());
+    right_grey_ = door_.render(calibration_.right, left_T_right_);
+  }
+  Eigen::Vector3d up() const { return -door_.down; }
+  Eigen::Vector2d left_px(const Eigen::Vector3d& p) const {
+    return project(p, calibration_.left, Eigen::Isometry3d::Identity());
+  }
+  Eigen::Vector2d right_px(const Eigen::Vector3d& p) const {
+    return project(p, calibration_.right, left_T_right_);
+  }
+  // A door detection from projected corners.
+  Detection door_detection(const std::array<Eigen::Vector2d, 4>& corners) const {
+    Detection d;
+    d.type = "door";
+    d.reference_px = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
+    d.area_px = 9000.0;
+    d.major_axis_angle_rad = M_PI / 2;
+    d.major_extent_px = 150.0;
+    d.minor_extent_px = 90.0;
+    d.confidence = 0.9f;
+    d.corners_px.assign(corners.begin(), corners.end());
+    d.height_px = 0.5 * ((corners[3] - corners[0]).norm() + (corners[2] - corners[1]).norm());
+    return d;
+  }
+
+  head::StereoCalibration calibration_ = head::load_stereo_calibration("calib/armar3_sim.yaml");
+  Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
+  DoorScene door_;
+  cv::Mat left_grey_, right_grey_;
+};
+
+TEST(DistortTest, IsOpenCvsModelForward) {
+  head::CameraIntrinsics camera;
+  camera.distortion = {-0.21, 0.05, 0.0012, -0.0008, 0.01};
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0.0, 0.0, 2.0), Eigen::Vector3d(0.9, -0.6, 2.0),
+                                   Eigen::Vector3d(-1.0, 0.7, 1.5)}) {
+    const Eigen::Vector2d ideal(camera.fx_px * p.x() / p.z() + camera.cx_px,
+                                camera.fy_px * p.y() / p.z() + camera.cy_px);
+    EXPECT_LT(
+        (detail::distort(ideal, camera) - project(p, camera, Eigen::Isometry3d::Identity())).norm(),
+        1e-9);
+  }
+  // An ideal pinhole: the identity.
+  camera.distortion = {};
+  EXPECT_EQ(detail::distort({100.25, 40.5}, camera), Eigen::Vector2d(100.25, 40.5));
+}
+
+TEST_F(SideCorrelationTest, FindsTheSideFromAWrongStart) {
+  const detail::SideCorrelator correlator(left_grey_, right_grey_, calibration_.left,
+                                          calibration_.right, left_T_right_, up());
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  for (const auto& [top, bottom] : {std::pair{0, 3}, std::pair{1, 2}}) {
+    const double truth_m = correlator.horizontal_distance(c[top]);
+    ASSERT_NEAR(truth_m, correlator.horizontal_distance(c[bottom]), 1e-9);  // a vertical side
+    // Starting 10% off either way (about 6 px of disparity at this distance).
+    for (const double start : {0.9, 1.1}) {
+      const auto depth = correlator.correlate(left_px(c[top]), left_px(c[bottom]), start * truth_m,
+                                              12.0, 0.3, 6.0);
+      ASSERT_TRUE(depth.has_value());
+      EXPECT_NEAR(depth->horizontal_distance_m, truth_m, 0.005 * truth_m);
+      EXPECT_GT(depth->correlation, 0.9);
+      // The side's ends at that distance are the door's corners.
+      EXPECT_LT(
+          (*correlator.point_at(left_px(c[top]), depth->horizontal_distance_m) - c[top]).norm(),
+          0.01);
+    }
+  }
+}
+
+TEST_F(SideCorrelationTest, TheOuterEdgeIsNotTakenForTheGroove) {
+  // The groove inside the right stile is a line of the door's own colour, 25 grey levels darker;
+  // the side, door against wall, has 120. Started where the groove is (the disparity of a right
+  // outline that lost the stile), the sweep still finds the side.
+  const detail::SideCorrelator correlator(left_grey_, right_grey_, calibration_.left,
+                                          calibration_.right, left_T_right_, up());
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const std::array<Eigen::Vector3d, 4> groove = door_.corners(DoorScene::kStileM);
+  // The depth at which the left side's rays meet the right image's groove line.
+  const detail::Triangulator triangulator(calibration_.left, calibration_.right, left_T_right_);
+  const std::array<Eigen::Vector2d, 4> left{left_px(c[0]), left_px(c[1]), left_px(c[2]),
+                                            left_px(c[3])};
+  const std::array<Eigen::Vector2d, 4> right_lost{right_px(groove[0]), right_px(groove[1]),
+                                                  right_px(groove[2]), right_px(groove[3])};
+  const auto ends = triangulator.rectangle_ends(left, right_lost);
+  ASSERT_TRUE(ends.has_value());
+  const double start_m = correlator.horizontal_distance((*ends)[2]);
+  const double truth_m = correlator.horizontal_distance(c[1]);
+  EXPECT_GT(std::abs(start_m - truth_m), 0.1);  // the outlines' depth is decimetres off
+  const auto depth = correlator.correlate(left[1], left[2], start_m, 25.0, 0.3, 6.0);
+  ASSERT_TRUE(depth.has_value());
+  EXPECT_NEAR(depth->horizontal_distance_m, truth_m, 0.005 * truth_m);
+}
+
+TEST_F(SideCorrelationTest, NothingToCorrelateOnAFlatWindowOrAShortSide) {
+  const cv::Mat flat(calibration_.left.height_px, calibration_.left.width_px, CV_8UC1,
+                     cv::Scalar(128));
+  const detail::SideCorrelator correlator(flat, flat, calibration_.left, calibration_.right,
+                                          left_T_right_, up());
+  EXPECT_FALSE(correlator.correlate({300.0, 100.0}, {302.0, 300.0}, 2.0, 10.0, 0.3, 6.0));
+  const detail::SideCorrelator textured(left_grey_, right_grey_, calibration_.left,
+                                        calibration_.right, left_T_right_, up());
+  EXPECT_FALSE(textured.correlate({300.0, 100.0}, {300.0, 105.0}, 2.0, 10.0, 0.3, 6.0));
+}
+
+TEST_F(SideCorrelationTest, CrossMatchPlacesADoorWhoseRightOutlineLostAStile) {
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const std::array<Eigen::Vector3d, 4> lost = door_.corners(DoorScene::kStileM);
+  const Detection left =
+      door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
+  const Detection right_lost =
+      door_detection({right_px(lost[0]), right_px(lost[1]), right_px(lost[2]), right_px(lost[3])});
+  StereoMatchOptions options;
+  options.max_edge_slope_rad = 0.3;
+  options.min_side_correlation = 0.7;
+  std::vector<StereoPairTrace> trace;
+  // From the outlines alone the right side's depth is wrong, its edges slope: refused.
+  EXPECT_TRUE(match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
+                                    left_T_right_, options, up(), &trace)
+                  .empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
+  // With the images, both sides come from the correlation: the door's centre.
+  const StereoImages images{&left_grey_, &right_grey_};
+  const auto percepts =
+      match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
+                            left_T_right_, options, up(), &trace, images);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
+  // Off (0): the outlines' depth again, with the images or without.
+  options.min_side_correlation = 0.0;
+  EXPECT_TRUE(match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
+                                    left_T_right_, options, up(), nullptr, images)
+                  .empty());
+}
+
+TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {
+  // The right image is the wall alone: no side scores 0.7, so the outlines' depth stands, and
+  // exact outlines give the door's centre.
+  const cv::Mat wall(right_grey_.size(), CV_8UC1, cv::Scalar(190));
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const Detection left =
+      door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
+  const Detection right =
+      door_detection({right_px(c[0]), right_px(c[1]), right_px(c[2]), right_px(c[3])});
+  StereoMatchOptions options;
+  options.max_edge_slope_rad = 0.3;
+  options.min_side_correlation = 0.7;
+  const StereoImages images{&left_grey_, &wall};
+  const auto percepts =
+      match_and_triangulate({left}, {right}, calibration_.left, calibration_.right, left_T_right_,
+                            options, up(), nullptr, images);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 1e-3);
+}
+
+}  // namespace
+}  // namespace vsl::recognition
