@@ -1,5 +1,6 @@
 // BM_FrameRecognizer: the whole pipeline (segmentation of both images, door and handle
-// recognizers with the shipped models, cross match, triangulation, registration) per 640x480
+// recognizers with the shipped models and the shipped options of config/recognition.yaml, cross
+// match with its door-side correlation, triangulation, registration) per 640x480
 // stereo pair of the kitchen (issue 5: at most 20 ms on one core). Counters: the stages' mean
 // wall times (FrameResult) and the percepts found. No main here: the fragments share one.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench --benchmark_filter=BM_Frame
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "support/stereo_views.hpp"
+#include "vsl/config/node.hpp"
 #include "vsl/recognition/frame_recognizer.hpp"
 #include "vsl/recognition/recognizer_factory.hpp"
 
@@ -26,9 +28,8 @@ const test::StereoViews& kitchen() {
 void BM_FrameRecognizer(benchmark::State& state) {
   const test::StereoViews& views = kitchen();
   const test::StereoView view = views.fixed_view(static_cast<int>(state.range(0)), 1);
-  FrameRecognizerOptions options;
-  options.stereo.reference_depth_offset_m = {{"door", 0.0}, {"handle", 0.006}};
-  options.stereo.major_extent_range_m = {{"door", 0.5, 1.5}, {"handle", 0.12, 0.25}};
+  const FrameRecognizerOptions options = frame_recognizer_options_from(
+      config::Node::load_file(kSource + "/config/recognition.yaml").at("recognition"));
   const FrameRecognizer recognizer(options, views.head(),
                                    load_recognizers({kSource + "/config/recognition/door.yaml",
                                                      kSource + "/config/recognition/handle.yaml"}));

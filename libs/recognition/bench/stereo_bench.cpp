@@ -1,7 +1,10 @@
 // BM_MatchAndTriangulate: match_and_triangulate for 20 left x 20 right detections of one type
 // (a grid of handles 1.5 to 4 m away, seeded pixel noise, the right list shuffled), on the
-// simulated head's calibration. No main here: the fragments share vsl_recognition_bench's.
-//   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench --benchmark_filter=BM_Match
+// simulated head's calibration. BM_SideCorrelation: one door side placed by correlation along
+// the epipolar lines (side_correlation.hpp), a 200 px side searched over +-41 px (a door 140 px
+// wide), twice per door pair. No main here: the fragments share vsl_recognition_bench's.
+//   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
+//   --benchmark_filter='BM_Match|BM_Side'
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -9,6 +12,9 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
+#include "../src/side_correlation.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -58,6 +64,26 @@ void BM_MatchAndTriangulate(benchmark::State& state) {
 }
 // 80: a frame whose segmentation breaks objects into fragments, one large ambiguous component.
 BENCHMARK(BM_MatchAndTriangulate)->Arg(20)->Arg(80)->Unit(benchmark::kMicrosecond);
+
+void BM_SideCorrelation(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR) + "/calib/armar3_sim.yaml");
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  // A vertical door edge 2 m ahead, dark door left of it, bright wall right: 25 px of disparity.
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
+  left.colRange(0, 300).setTo(70);
+  right.colRange(0, 275).setTo(70);
+  const detail::SideCorrelator correlator(left, right, calibration.left, calibration.right,
+                                          left_T_right, Eigen::Vector3d(0.0, -1.0, 0.0));
+  double distance_m = 0.0;
+  for (auto _ : state) {
+    const auto depth = correlator.correlate({300.0, 140.0}, {300.0, 340.0}, 2.2, 41.0, 0.3, 6.0);
+    distance_m = depth ? depth->horizontal_distance_m : 0.0;
+    benchmark::DoNotOptimize(distance_m);
+  }
+  state.counters["distance_m"] = distance_m;
+}
+BENCHMARK(BM_SideCorrelation)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition
