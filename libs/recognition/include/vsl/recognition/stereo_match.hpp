@@ -166,7 +166,8 @@ struct StereoPairTrace {
 //
 // `pair_trace`, when given, receives one entry per pair of detections of the same type: the first
 // gate that refused it, or none and whether the assignment kept it (a debug aid: where the
-// evaluation's ground-truth pairs were lost).
+// evaluation's ground-truth pairs were lost). `images`: the frame's grey images, for the door
+// sides' correlation (StereoMatchOptions::min_side_correlation); without them it is off.
 std::vector<StereoPercept> match_and_triangulate(
     const std::vector<Detection>& left, const std::vector<Detection>& right,
     const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
