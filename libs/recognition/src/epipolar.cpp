@@ -11,11 +11,6 @@ namespace {
 
 constexpr double kJacobianStepPx = 0.1;
 
-bool has_distortion(const head::CameraIntrinsics& intrinsics) {
-  return std::any_of(intrinsics.distortion.begin(), intrinsics.distortion.end(),
-                     [](double k) { return k != 0.0; });
-}
-
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& t) {
   Eigen::Matrix3d m;
   m << 0.0, -t.z(), t.y(), t.z(), 0.0, -t.x(), -t.y(), t.x(), 0.0;
@@ -23,6 +18,11 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& t) {
 }
 
 }  // namespace
+
+bool has_distortion(const head::CameraIntrinsics& intrinsics) {
+  return std::any_of(intrinsics.distortion.begin(), intrinsics.distortion.end(),
+                     [](double k) { return k != 0.0; });
+}
 
 Eigen::Matrix3d camera_matrix(const head::CameraIntrinsics& intrinsics) {
   Eigen::Matrix3d k;

@@ -13,6 +13,9 @@
 
 namespace vsl::recognition::detail {
 
+// Whether any distortion coefficient is non-zero (else raw pixels are ideal ones).
+bool has_distortion(const head::CameraIntrinsics& intrinsics);
+
 // K = [fx 0 cx; 0 fy cy; 0 0 1].
 Eigen::Matrix3d camera_matrix(const head::CameraIntrinsics& intrinsics);
 

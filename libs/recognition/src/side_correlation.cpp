@@ -22,11 +22,6 @@ constexpr double kMinSideLengthPx = 8.0;
 // edge to correlate.
 constexpr double kMinWindowStdDev = 2.0;
 
-bool has_distortion(const head::CameraIntrinsics& intrinsics) {
-  return std::any_of(intrinsics.distortion.begin(), intrinsics.distortion.end(),
-                     [](double k) { return k != 0.0; });
-}
-
 // Bilinear grey value at raw pixel (x, y); false outside the image.
 bool sample(const cv::Mat& grey, double x, double y, double& value) {
   if (!(x >= 0.0 && y >= 0.0 && x < grey.cols - 1 && y < grey.rows - 1)) return false;

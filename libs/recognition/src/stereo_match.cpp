@@ -329,7 +329,7 @@ std::vector<StereoPercept> match_and_triangulate(
           }
         }
         if (ends) {
-          centre = Eigen::Vector3d(((*ends)[0] + (*ends)[1] + (*ends)[2] + (*ends)[3]) / 4.0);
+          centre = detail::Triangulator::rectangle_centre(*ends);
           // Both sides measured: the edges between their ends must be level.
           if (options.max_edge_slope_rad > 0.0) {
             const std::optional<double> slope =

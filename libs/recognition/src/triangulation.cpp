@@ -100,19 +100,8 @@ std::optional<std::array<Eigen::Vector3d, 4>> Triangulator::rectangle_ends(
   return ends;
 }
 
-std::optional<Eigen::Vector3d> Triangulator::rectangle_centre(
-    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right) const {
-  const auto ends = rectangle_ends(left, right);
-  if (!ends) return std::nullopt;
-  return Eigen::Vector3d(((*ends)[0] + (*ends)[1] + (*ends)[2] + (*ends)[3]) / 4.0);
-}
-
-std::optional<double> Triangulator::rectangle_edge_slope(
-    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
-    const Eigen::Vector3d& up) const {
-  const auto ends = rectangle_ends(left, right);
-  if (!ends) return std::nullopt;
-  return edge_slope(*ends, up);
+Eigen::Vector3d Triangulator::rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends) {
+  return (ends[0] + ends[1] + ends[2] + ends[3]) / 4.0;
 }
 
 std::optional<double> Triangulator::edge_slope(const std::array<Eigen::Vector3d, 4>& ends,

@@ -52,12 +52,10 @@ class Triangulator {
   // from the left image alone, so a strip of the face that segmentation adds at the top or the
   // bottom in one image only does not move the centre. nullopt when a side is nearer the
   // horizontal than the vertical in either image, a ray runs (within 1e-3 rad) in its plane,
-  // or an end is not in front of the cameras.
-  std::optional<Eigen::Vector3d> rectangle_centre(
-      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
-      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
+  // or an end is not in front of the cameras (rectangle_ends). The centre is the mean of the ends.
+  static Eigen::Vector3d rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends);
 
-  // The four ends of the two vertical sides, as rectangle_centre finds them (left camera frame,
+  // The four ends of the two vertical sides, as described at rectangle_centre (left camera frame,
   // metres): the first side's two ends, then the second's, each side's ends in the order of its
   // corners (so ends 0 and 2 bound one horizontal edge, 1 and 3 the other).
   std::optional<std::array<Eigen::Vector3d, 4>> rectangle_ends(
@@ -65,17 +63,11 @@ class Triangulator {
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
 
   // The larger slope (rise over run, `up` a vector in the left camera frame) of the rectangle's
-  // two other edges between those ends. A door's top and bottom edges are level; where one side's
-  // horizontal position disagrees between the images (a stile lost in one image, a strip of the
-  // neighbour added), that side's depth is wrong, and its ends, on the left rays through its
-  // corners, move up or down with it: the edges slope. nullopt as rectangle_centre, or when an
-  // edge is vertical.
-  std::optional<double> rectangle_edge_slope(
-      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
-      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
-      const Eigen::Vector3d& up_in_left_camera) const;
-  // The same slope for four ends in the order of rectangle_ends; nullopt when an edge is
-  // vertical or `up` is zero.
+  // two other edges between its four ends (in the order of rectangle_ends). A door's top and
+  // bottom edges are level; where one side's horizontal position disagrees between the images (a
+  // stile lost in one image, a strip of the neighbour added), that side's depth is wrong, and its
+  // ends, on the left rays through its corners, move up or down with it: the edges slope.
+  // nullopt when an edge is vertical or `up` is zero.
   static std::optional<double> edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
                                           const Eigen::Vector3d& up_in_left_camera);
   // The corner indices of the two sides nearer the image vertical, in the order rectangle_ends
