@@ -67,6 +67,14 @@ std::optional<Eigen::Vector3d> LocalizerEngine::discriminator_target(
   return target->ego_target_m;
 }
 
+std::optional<Eigen::Vector3d> LocalizerEngine::precision_target(
+    const localization::LocalizationResult& result,
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m) const {
+  const auto target = localizer_.choose_precision_look(result, look_limits_, looked_at_ego_m);
+  if (!target) return std::nullopt;
+  return target->ego_target_m;
+}
+
 LocalizerCore::LocalizerCore(CoreOptions options, const LocalizationEngine& engine,
                              LocalizerOutputs& outputs)
     : options_(std::move(options)),
@@ -85,6 +93,7 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
   request_start_us_ = now_us;
   scan_index_ = 0;
   active_looks_ = 0;
+  precision_look_ = false;
   step_ = 0;
   num_fused_percepts_ = 0;
   num_hypotheses_ = 0;
@@ -115,7 +124,8 @@ void LocalizerCore::start_look(const Eigen::Vector3d& ego_target_m, std::int64_t
   next_gaze_repeat_us_ = after(now_us, options_.gaze_repeat_period_s);
   const bool active = active_looks_ > 0;
   detail_ = (active ? "active look " + std::to_string(active_looks_) + " of at most " +
-                          std::to_string(options_.max_active_looks)
+                          std::to_string(options_.max_active_looks) +
+                          (precision_look_ ? " (for precision)" : "")
                     : "gaze target " + std::to_string(scan_index_) + " of " +
                           std::to_string(options_.ego_gaze_targets_m.size())) +
             " at " + point_text(ego_target_m) + ": head moving";
@@ -183,10 +193,17 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
       finish(State::kDone, result, "localized", now_us);
       return;
     case localization::Status::kFailed:
-      finish(State::kFailed, result, result.message, now_us);
-      return;
+      if (!result.too_uncertain) {
+        finish(State::kFailed, result, result.message, now_us);
+        return;
+      }
+      break;
     case localization::Status::kAmbiguous:
       break;
+  }
+  if (result.status == localization::Status::kFailed) {
+    look_for_precision(result, now_us);
+    return;
   }
   if (active_looks_ >= options_.max_active_looks) {
     finish(State::kDone, result,
@@ -213,6 +230,38 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
   looking_to_resolve_ = result;
   active_look_targets_m_.push_back(*target);
   ++active_looks_;
+  precision_look_ = false;
+  start_look(*target, now_us);
+}
+
+void LocalizerCore::look_for_precision(const localization::LocalizationResult& result,
+                                       std::int64_t now_us) {
+  if (active_looks_ >= options_.max_active_looks) {
+    finish(State::kFailed, result,
+           result.message + " after " + std::to_string(active_looks_) + " active looks", now_us);
+    return;
+  }
+  if (options_.passive) {
+    // As for an ambiguous result: the recorded run's next FUSING entry, or its end, decides.
+    pending_result_ = result;
+    ++active_looks_;
+    ++step_;
+    detail_ = "too uncertain: following the recorded active look";
+    set_state(State::kActiveValidation, now_us);
+    return;
+  }
+  // Away from every gaze so far: the scan's and the active looks'.
+  std::vector<Eigen::Vector3d> looked = options_.ego_gaze_targets_m;
+  looked.insert(looked.end(), active_look_targets_m_.begin(), active_look_targets_m_.end());
+  const std::optional<Eigen::Vector3d> target = engine_.precision_target(result, looked);
+  if (!target) {
+    finish(State::kFailed, result, result.message + "; nothing new in reach to look at", now_us);
+    return;
+  }
+  looking_to_resolve_ = result;
+  active_look_targets_m_.push_back(*target);
+  ++active_looks_;
+  precision_look_ = true;
   start_look(*target, now_us);
 }
 
@@ -231,6 +280,11 @@ void LocalizerCore::followed_status(std::int64_t request_id, State state, std::i
     enter_fusing(now_us);
   } else if (state == State::kDone || state == State::kFailed) {
     if (state_ == State::kActiveValidation && pending_result_) {
+      if (pending_result_->status == localization::Status::kFailed) {
+        finish(State::kFailed, *pending_result_,
+               pending_result_->message + " (the recorded run ended)", now_us);
+        return;
+      }
       finish(State::kDone, *pending_result_,
              "ambiguous after " + std::to_string(active_looks_ - 1) +
                  " active looks (the recorded run ended): " + pending_result_->message,
@@ -251,6 +305,13 @@ void LocalizerCore::tick(std::int64_t now_us) {
         // The look could not be completed (a target the head cannot fixate, frames that do not
         // come): what was known before it still stands, and it is ambiguous, not a failure.
         const localization::LocalizationResult before = *looking_to_resolve_;
+        if (before.status == localization::Status::kFailed) {
+          finish(State::kFailed, before,
+                 before.message + "; " + what + " at " + point_text(look_target_) +
+                     " did not complete in time",
+                 now_us);
+          return;
+        }
         finish(State::kDone, before,
                "ambiguous: " + what + " at " + point_text(look_target_) +
                    " did not complete in time: " + before.message,

@@ -11,7 +11,9 @@
 //                       timeout: one SCANNING status, then FUSING again = a new entry);
 //   VALIDATING          Localizer::localize;
 //   ACTIVE_VALIDATION   while AMBIGUOUS and looks remain: gaze at choose_discriminator's target,
-//                       frames as above, then FUSING again;
+//                       frames as above, then FUSING again; likewise while FAILED only as too
+//                       uncertain (one hypothesis, imprecise): a precision look at
+//                       choose_precision_look's target, away from every earlier gaze;
 //   DONE / FAILED       POSE_ESTIMATE, one per request.
 // Passive mode (replays): no gaze commands; the FUSING entries of the original localizer's status
 // (read on another channel) mark the ends of the scan and of each active look.
@@ -110,6 +112,11 @@ class LocalizationEngine {
   virtual std::optional<Eigen::Vector3d> discriminator_target(
       const localization::LocalizationResult& result,
       const std::vector<Eigen::Vector3d>& looked_at_ego_m) const = 0;
+  // For a result too uncertain (LocalizationResult::too_uncertain): the ego point whose view
+  // makes its pose more precise; `looked_at_ego_m`: every gaze of this request, the scan's too.
+  virtual std::optional<Eigen::Vector3d> precision_target(
+      const localization::LocalizationResult& result,
+      const std::vector<Eigen::Vector3d>& looked_at_ego_m) const = 0;
 };
 
 // The real engine over vsl::localization::Localizer.
@@ -120,6 +127,9 @@ class LocalizerEngine : public LocalizationEngine {
   localization::LocalizationResult localize(
       const std::vector<localization::FusedPercept>& percepts) const override;
   std::optional<Eigen::Vector3d> discriminator_target(
+      const localization::LocalizationResult& result,
+      const std::vector<Eigen::Vector3d>& looked_at_ego_m) const override;
+  std::optional<Eigen::Vector3d> precision_target(
       const localization::LocalizationResult& result,
       const std::vector<Eigen::Vector3d>& looked_at_ego_m) const override;
 
@@ -160,6 +170,8 @@ class LocalizerCore {
   void start_look(const Eigen::Vector3d& ego_target_m, std::int64_t now_us);
   void enter_fusing(std::int64_t now_us);
   void localize(const std::vector<localization::FusedPercept>& percepts, std::int64_t now_us);
+  // A FAILED result that is only too uncertain: a precision look while looks remain.
+  void look_for_precision(const localization::LocalizationResult& result, std::int64_t now_us);
   void finish(State state, const localization::LocalizationResult& result,
               const std::string& message, std::int64_t now_us);
   void fail(const std::string& reason, std::int64_t now_us);
@@ -199,6 +211,7 @@ class LocalizerCore {
   // FAILED) when the look itself times out.
   std::optional<localization::LocalizationResult> looking_to_resolve_;
   std::vector<Eigen::Vector3d> active_look_targets_m_;  // this request's active looks (ego, m)
+  bool precision_look_ = false;  // the active look in progress is for precision, not ambiguity
   // Passive: the last ambiguous result, reported when the log's run ends.
   std::optional<localization::LocalizationResult> pending_result_;
   State followed_state_ = State::kIdle;

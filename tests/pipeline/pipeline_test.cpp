@@ -199,7 +199,10 @@ INSTANTIATE_TEST_SUITE_P(
 // hypotheses from this pose; only active validation (paper §2.4.2) resolves it. Which frames the
 // scan takes depends on the head's timing (the simulator moves in wall-clock time), so the first
 // scan's few percepts vary from run to run and not every run resolves: up to three runs, at least
-// one resolved by an active look within 5 cm and 2 degrees, and none confidently wrong.
+// one resolved by an active look within 5 cm and 2 degrees, and none confidently wrong. A run
+// whose scan already settles the place, but not precisely enough, takes precision looks
+// (docs/localizer-daemon.md), which are active looks too; one whose scan localizes at once does
+// not count, and the next run is tried.
 TEST(FullPipelineAmbiguousStart, ResolvedByActiveValidation) {
   bool resolved = false;
   std::string outputs;

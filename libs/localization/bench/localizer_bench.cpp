@@ -246,6 +246,34 @@ void BM_Validation(benchmark::State& state) {
 }
 BENCHMARK(BM_Validation)->Apply(world_args);
 
+// A precision look (validation.hpp: choose_precision_look) from seeded poses, after one gaze
+// straight ahead: what the localizer daemon computes when a pose is too uncertain.
+void BM_ChoosePrecisionLook(benchmark::State& state) {
+  const Scene& s = scene(state.range(0));
+  const LocalizerOptions& options = s.localizer->options();
+  std::vector<Eigen::Isometry3d> poses;
+  std::mt19937_64 rng(7);
+  for (int i = 0; poses.size() < kViews && i < 20 * kViews; ++i) {
+    const auto pose = state.range(0) == 0 ? std::optional(testing::random_kitchen_pose(rng))
+                                          : testing::random_building_pose(s.world, rng);
+    if (pose) poses.push_back(*pose);
+  }
+  if (poses.empty()) {
+    state.SkipWithError("no poses");
+    return;
+  }
+  const std::vector<Eigen::Vector3d> looked{Eigen::Vector3d(2.5, 0.0, 1.0)};
+  std::size_t v = 0, found = 0, runs = 0;
+  for (auto _ : state) {
+    const auto target = choose_precision_look(s.world, s.localizer->graph(), s.grid,
+                                              poses[v++ % poses.size()], options, {}, looked);
+    found += target.has_value();
+    ++runs;
+  }
+  state.counters["found"] = static_cast<double>(found) / static_cast<double>(runs);
+}
+BENCHMARK(BM_ChoosePrecisionLook)->Apply(world_args);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -411,6 +411,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       if (!refined.covariance_valid || v.precision_sigmas * p.position_m > v.required_position_m ||
           v.precision_sigmas * p.angle_rad > v.required_angle_rad) {
         result.status = Status::kFailed;
+        result.too_uncertain = refined.covariance_valid;
         result.message += refined.covariance_valid
                               ? "; pose too uncertain (sigma " + format_cm(p.position_m) + " cm, " +
                                     format_deg(p.angle_rad) + " deg)"
@@ -428,6 +429,15 @@ std::optional<ActiveValidationTarget> Localizer::choose_discriminator(
   for (const Hypothesis& h : result.hypotheses) poses.push_back(h.world_T_ego);
   return localization::choose_discriminator(*state_->world, state_->graph, state_->grid, poses,
                                             state_->options, limits, looked_at_ego_m);
+}
+
+std::optional<ActiveValidationTarget> Localizer::choose_precision_look(
+    const LocalizationResult& result, const LookLimits& limits,
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m) const {
+  if (!result.too_uncertain || result.hypotheses.empty()) return std::nullopt;
+  return localization::choose_precision_look(*state_->world, state_->graph, state_->grid,
+                                             result.hypotheses.front().world_T_ego, state_->options,
+                                             limits, looked_at_ego_m);
 }
 
 }  // namespace vsl::localization

@@ -265,4 +265,59 @@ std::optional<ActiveValidationTarget> choose_discriminator(
   return best;
 }
 
+std::optional<ActiveValidationTarget> choose_precision_look(
+    const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
+    const Eigen::Isometry3d& world_T_ego, const LocalizerOptions& options, const LookLimits& limits,
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m) {
+  const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
+  const double cos_view = std::cos(limits.view_half_angle_rad);
+  // The gaze rays of the earlier looks (ego frame, unit vectors from the camera).
+  std::vector<Eigen::Vector3d> looked_rays;
+  for (const Eigen::Vector3d& looked : looked_at_ego_m) {
+    const Eigen::Vector3d ray = looked - camera;
+    if (ray.norm() > 0.0) looked_rays.push_back(ray.normalized());
+  }
+  struct Candidate {
+    NodeIndex node;
+    Eigen::Vector3d ego_target_m;
+    Eigen::Vector3d camera_ray;  // unit, ego frame
+    double range_m;
+    double information_per_m2;  // 1 / sigma^2, Eq. 7
+  };
+  std::vector<Candidate> candidates;
+  const Eigen::Isometry3d ego_T_world = world_T_ego.inverse();
+  for (std::size_t t = 0; t < graph.type_count(); ++t) {
+    grid.for_each_within(
+        static_cast<world::TypeId>(t), world_T_ego * camera, limits.max_range_m,
+        [&](NodeIndex node, double) {
+          const Eigen::Vector3d ego_target = ego_T_world * graph.world_position_m(node);
+          if (!within_limits(ego_target, camera, limits, {})) return;
+          const Eigen::Vector3d ray = (ego_target - camera).normalized();
+          for (const Eigen::Vector3d& looked : looked_rays) {
+            if (looked.dot(ray) >= cos_view) return;  // in an earlier view
+          }
+          const double sigma = eq7_sigma_m(ego_target, options.noise);
+          candidates.push_back(
+              {node, ego_target, ray, (ego_target - camera).norm(), 1.0 / (sigma * sigma)});
+        });
+  }
+  std::optional<ActiveValidationTarget> best;
+  double best_range_cost = 0.0;
+  for (const Candidate& c : candidates) {
+    double in_view = 0.0;
+    for (const Candidate& o : candidates) {
+      if (o.camera_ray.dot(c.camera_ray) >= cos_view) in_view += o.information_per_m2;
+    }
+    const double range_cost = std::abs(c.range_m - limits.preferred_range_m);
+    const double tie = 1e-9 * std::max(1.0, in_view);
+    if (!best || in_view > best->view_information_per_m2 + tie ||
+        (in_view > best->view_information_per_m2 - tie && range_cost < best_range_cost)) {
+      best = ActiveValidationTarget{
+          world.objects[graph.object_index(c.node)].id, 0, c.ego_target_m, 0.0, 0.0, in_view};
+      best_range_cost = range_cost;
+    }
+  }
+  return best;
+}
+
 }  // namespace vsl::localization

@@ -97,6 +97,39 @@ TEST(Localizer, DiscriminatorResolvesTheRooms) {
   EXPECT_NEAR(resolved.world_T_ego.translation().x(), truth.translation().x() + 10.0, 1e-6);
 }
 
+// One hypothesis that fails the precision bound is FAILED, flagged too uncertain, and keeps the
+// hypothesis: the daemon looks elsewhere for precision (choose_precision_look).
+TEST(Localizer, TooUncertainKeepsItsHypothesisForAPrecisionLook) {
+  const world::WorldModel world = testing::identical_rooms(1);
+  LocalizerOptions options = test_options();
+  options.validation.precision_sigmas = 3.0;
+  options.validation.required_position_m = 1e-4;  // 0.1 mm: beyond any view
+  const Localizer strict(world, options);
+  const Eigen::Isometry3d truth = testing::upright_pose(2.5, 1.4, 1.5708);
+  testing::SyntheticOptions o;
+  o.seed = 4;
+  o.miss_rate = 0.0;
+  o.false_positive_rate = 0.0;
+  const auto view = testing::synthesize_view(world, truth, o);
+  const LocalizationResult result = strict.localize(view.percepts);
+  ASSERT_EQ(result.status, Status::kFailed) << result.message;
+  EXPECT_TRUE(result.too_uncertain);
+  EXPECT_NE(result.message.find("too uncertain"), std::string::npos) << result.message;
+  ASSERT_FALSE(result.hypotheses.empty());
+  // The right place, if not to the bound (the view's Eq. 7 noise: several cm).
+  EXPECT_LT(testing::position_error_m(result.hypotheses.front().world_T_ego, truth), 0.15);
+  const auto look = strict.choose_precision_look(result);
+  ASSERT_TRUE(look.has_value());
+  EXPECT_GT(look->view_information_per_m2, 0.0);
+
+  // Without the bound it is localized, and there is no precision look to take.
+  const Localizer lenient(world, test_options());
+  const LocalizationResult localized = lenient.localize(view.percepts);
+  ASSERT_EQ(localized.status, Status::kLocalized) << localized.message;
+  EXPECT_FALSE(localized.too_uncertain);
+  EXPECT_FALSE(lenient.choose_precision_look(localized).has_value());
+}
+
 TEST(Localizer, RepeatingCupboardsAreAmbiguous) {
   const world::WorldModel world = testing::cupboard_row(6);
   const Localizer localizer(world, test_options());

@@ -4,6 +4,7 @@
 
 #include "support/synthetic_percepts.hpp"
 #include "support/test_worlds.hpp"
+#include "vsl/localization/percept_noise.hpp"
 
 namespace vsl::localization {
 namespace {
@@ -181,6 +182,72 @@ TEST(ChooseDiscriminator, NothingDiscriminatesIdenticalRoomsOrASingleHypothesis)
   EXPECT_FALSE(
       choose_discriminator(w.world, w.graph, w.grid, {room0, room1}, w.options).has_value());
   EXPECT_FALSE(choose_discriminator(w.world, w.graph, w.grid, {room0}, w.options).has_value());
+}
+
+}  // namespace
+}  // namespace vsl::localization
+
+namespace vsl::localization {
+namespace {
+
+// Ahead-left, far: three windows; ahead-right, near: two. Eq. 7 makes a percept at 1.8 m about
+// twenty times as informative (1 / sigma^2) as one at 3.8 m, so the near pair is the better look;
+// once it has been looked at, the far cluster; once both, nothing.
+world::WorldModel two_clusters() {
+  world::WorldModel model;
+  model.name = "two_clusters";
+  testing::add_object(model, "far1", "window", Eigen::Vector3d(3.5, 1.5, 1.5));
+  testing::add_object(model, "far2", "window", Eigen::Vector3d(3.5, 1.8, 1.5));
+  testing::add_object(model, "far3", "window", Eigen::Vector3d(3.3, 1.5, 1.6));
+  testing::add_object(model, "near1", "window", Eigen::Vector3d(1.5, -1.0, 1.5));
+  testing::add_object(model, "near2", "window", Eigen::Vector3d(1.6, -1.1, 1.4));
+  model.index_ids();
+  return model;
+}
+
+TEST(ChoosePrecisionLook, PrefersTheMostInformativeViewNotYetSeen) {
+  const World w(two_clusters());
+  const Eigen::Isometry3d pose = testing::upright_pose(0.0, 0.0, 0.0);
+  const auto first = choose_precision_look(w.world, w.graph, w.grid, pose, w.options);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->object_id.rfind("near", 0), 0u) << first->object_id;
+  EXPECT_EQ(first->discrimination_m, 0.0);
+  // Both near windows are in its view: their information summed.
+  const auto info = [&](const char* id) {
+    const Eigen::Vector3d ego =
+        pose.inverse() * w.world.objects[*w.world.find(id)].world_position_m;
+    const double sigma = eq7_sigma_m(ego, w.options.noise);
+    return 1.0 / (sigma * sigma);
+  };
+  EXPECT_NEAR(first->view_information_per_m2, info("near1") + info("near2"), 1e-6);
+  EXPECT_LT(first->view_information_per_m2, 2.0 * info("near1"));
+  EXPECT_GT(info("near2"), 10.0 * info("far1"));
+
+  const auto second =
+      choose_precision_look(w.world, w.graph, w.grid, pose, w.options, {}, {first->ego_target_m});
+  ASSERT_TRUE(second.has_value());
+  EXPECT_EQ(second->object_id.rfind("far", 0), 0u) << second->object_id;
+  EXPECT_NEAR(second->view_information_per_m2, info("far1") + info("far2") + info("far3"), 1e-6);
+
+  EXPECT_FALSE(choose_precision_look(w.world, w.graph, w.grid, pose, w.options, {},
+                                     {first->ego_target_m, second->ego_target_m})
+                   .has_value());
+}
+
+TEST(ChoosePrecisionLook, OnlyTargetsInReachUnderTheHypothesis) {
+  const World w(two_clusters());
+  // Turned around, everything lies behind: out of the head's reach at 90 deg of azimuth.
+  const Eigen::Isometry3d behind = testing::upright_pose(0.0, 0.0, 3.14159265);
+  LookLimits limits;
+  limits.max_azimuth_rad = 1.5708;
+  EXPECT_FALSE(
+      choose_precision_look(w.world, w.graph, w.grid, behind, w.options, limits).has_value());
+  // Facing them, out of range.
+  limits = LookLimits{};
+  limits.max_range_m = 0.9;
+  EXPECT_FALSE(choose_precision_look(w.world, w.graph, w.grid, testing::upright_pose(0, 0, 0),
+                                     w.options, limits)
+                   .has_value());
 }
 
 }  // namespace

@@ -43,7 +43,14 @@ struct FakeEngine : LocalizationEngine {
       const LocalizationResult&, const std::vector<Eigen::Vector3d>&) const override {
     return discriminator;
   }
+  std::optional<Eigen::Vector3d> precision_target(
+      const LocalizationResult&, const std::vector<Eigen::Vector3d>& looked) const override {
+    precision_looked.push_back(looked);
+    return precision;
+  }
   mutable std::deque<LocalizationResult> results;
+  mutable std::vector<std::vector<Eigen::Vector3d>> precision_looked;  // per precision_target call
+  std::optional<Eigen::Vector3d> precision = Eigen::Vector3d(2.0, -1.5, 1.0);
   mutable std::vector<std::size_t> seen;
   std::optional<Eigen::Vector3d> discriminator = Eigen::Vector3d(1.0, 2.0, 0.5);
 };
@@ -55,6 +62,14 @@ LocalizationResult result(Status status, double x = 1.0) {
   r.covariance = localization::PoseCovariance::Identity() * 1e-4;
   r.hypotheses.resize(status == Status::kAmbiguous ? 2 : 1);
   r.message = localization::to_string(status);
+  return r;
+}
+
+// FAILED only as too uncertain: one hypothesis, refined, but imprecise.
+LocalizationResult too_uncertain() {
+  LocalizationResult r = result(Status::kFailed);
+  r.too_uncertain = true;
+  r.message = "explains 5 of 5 percepts; pose too uncertain (sigma 2.1 cm, 0.3 deg)";
   return r;
 }
 
@@ -226,6 +241,87 @@ TEST(LocalizerCore, FailedResultCarriesNoPose) {
   EXPECT_EQ(h.core.state(), State::kFailed);
 }
 
+// A pose too uncertain is not the end: a precision look away from every earlier gaze, then
+// fusion and localization again with what it saw.
+TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
+  Harness h;
+  h.engine.results = {too_uncertain(), result(Status::kLocalized, 3.0)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused(5);
+  EXPECT_TRUE(h.out.poses.empty());
+  EXPECT_EQ(h.core.state(), State::kActiveValidation);
+  ASSERT_EQ(h.out.gazes.size(), 4u);
+  EXPECT_EQ(h.out.gazes[3].ego_target_m, Eigen::Vector3d(2.0, -1.5, 1.0));
+  EXPECT_NE(h.out.statuses.back().message.find("for precision"), std::string::npos)
+      << h.out.statuses.back().message;
+  // The engine was told every gaze so far: the three scan targets.
+  ASSERT_EQ(h.engine.precision_looked.size(), 1u);
+  EXPECT_EQ(h.engine.precision_looked[0], options().ego_gaze_targets_m);
+  h.settle_and_recognize();
+  h.fused(9);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 3.0);
+  EXPECT_EQ(h.engine.seen, (std::vector<std::size_t>{5, 9}));
+  EXPECT_EQ(h.core.state(), State::kDone);
+}
+
+TEST(LocalizerCore, TooUncertainAfterTheLookLimitFailsWithoutAPose) {
+  Harness h;
+  h.engine.results = {too_uncertain(), too_uncertain(), too_uncertain()};
+  h.engine.precision = Eigen::Vector3d(2.0, -1.5, 1.0);
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  h.settle_and_recognize();
+  h.fused();
+  h.settle_and_recognize();
+  h.fused();
+  EXPECT_EQ(h.out.gazes.size(), 5u);  // 3 scan + 2 precision looks (max_active_looks)
+  // The second look was told of the first.
+  ASSERT_EQ(h.engine.precision_looked.size(), 2u);
+  EXPECT_EQ(h.engine.precision_looked[1].size(), 4u);
+  EXPECT_EQ(h.engine.precision_looked[1].back(), Eigen::Vector3d(2.0, -1.5, 1.0));
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("too uncertain"), std::string::npos);
+  EXPECT_NE(h.out.poses[0].message.find("after 2 active looks"), std::string::npos)
+      << h.out.poses[0].message;
+  EXPECT_TRUE(h.out.poses[0].result.world_T_ego.isApprox(Eigen::Isometry3d::Identity()));
+  EXPECT_TRUE(h.out.poses[0].result.covariance.isZero());
+  EXPECT_EQ(h.core.state(), State::kFailed);
+}
+
+TEST(LocalizerCore, TooUncertainWithNothingToLookAtFails) {
+  Harness h;
+  h.engine.results = {too_uncertain()};
+  h.engine.precision.reset();
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.gazes.size(), 3u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("nothing new in reach"), std::string::npos);
+}
+
+TEST(LocalizerCore, PrecisionLookThatNeverSettlesFails) {
+  Harness h;
+  h.engine.results = {too_uncertain()};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.core.state(), State::kActiveValidation);
+  h.core.tick(h.now += 6 * kSecond);  // settle_timeout_s is 5 s
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("did not complete"), std::string::npos)
+      << h.out.poses[0].message;
+  EXPECT_TRUE(h.out.poses[0].result.covariance.isZero());
+  EXPECT_EQ(h.core.state(), State::kFailed);
+}
+
 TEST(LocalizerCore, HeadThatNeverSettlesFails) {
   Harness h;
   h.core.request(7, h.now);
@@ -341,6 +437,40 @@ TEST(LocalizerCore, PassiveReportsAmbiguousWhenTheRecordedRunEnds) {
   ASSERT_EQ(h.out.poses.size(), 1u);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kAmbiguous);
   EXPECT_EQ(h.out.poses[0].request_id, 9);
+}
+
+TEST(LocalizerCore, PassiveFollowsARecordedPrecisionLook) {
+  CoreOptions o = options();
+  o.passive = true;
+  Harness h(o);
+  h.engine.results = {too_uncertain(), result(Status::kLocalized, 4.0)};
+  h.core.request(7, h.now);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  h.fused();
+  EXPECT_EQ(h.core.state(), State::kActiveValidation);
+  EXPECT_TRUE(h.out.poses.empty());
+  h.core.followed_status(7, State::kActiveValidation, h.now += 1000);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_TRUE(h.out.gazes.empty());
+  EXPECT_TRUE(h.engine.precision_looked.empty());  // the recorded run chose its looks
+}
+
+TEST(LocalizerCore, PassiveReportsTooUncertainWhenTheRecordedRunEnds) {
+  CoreOptions o = options();
+  o.passive = true;
+  Harness h(o);
+  h.engine.results = {too_uncertain()};
+  h.core.request(7, h.now);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  h.fused();
+  h.core.followed_status(7, State::kFailed, h.now += 1000);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("too uncertain"), std::string::npos);
+  EXPECT_EQ(h.core.state(), State::kFailed);
 }
 
 }  // namespace

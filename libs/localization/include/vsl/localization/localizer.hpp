@@ -128,6 +128,9 @@ struct ActiveValidationTarget {
   // The discrimination of every candidate in view around the target under the same hypothesis
   // (m, summed): what one look there can settle.
   double view_discrimination_m = 0.0;
+  // Precision looks (choose_precision_look): the summed 1 / sigma^2 (Eq. 7) of the objects newly
+  // in view around the target (1/m^2); 0 for discriminating looks.
+  double view_information_per_m2 = 0.0;
 };
 
 // Where active validation may point the head (paper §2.4.2 leaves the choice to the robot). The
@@ -165,6 +168,12 @@ class Localizer {
   // Only targets within `limits` (the head's reach), and not near an ego point already looked
   // at, are chosen (validation.hpp: choose_discriminator).
   std::optional<ActiveValidationTarget> choose_discriminator(
+      const LocalizationResult& result, const LookLimits& limits = {},
+      const std::vector<Eigen::Vector3d>& looked_at_ego_m = {}) const;
+  // For a result that is too uncertain (LocalizationResult::too_uncertain): where to look to
+  // make its one hypothesis precise; `looked_at_ego_m` holds every gaze of the request so far
+  // (validation.hpp: choose_precision_look). nullopt for any other result.
+  std::optional<ActiveValidationTarget> choose_precision_look(
       const LocalizationResult& result, const LookLimits& limits = {},
       const std::vector<Eigen::Vector3d>& looked_at_ego_m = {}) const;
 

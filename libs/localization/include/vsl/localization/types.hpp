@@ -63,6 +63,10 @@ struct LocalizationResult {
   std::vector<Association> associations;  // of the reported pose
   StageTimes timing;
   std::string message;  // why, for failed/ambiguous
+  // FAILED only because the one winning hypothesis, refined, fails the precision bound
+  // (ValidationOptions::precision_sigmas): another look, in another direction, may settle it.
+  // world_T_ego and hypotheses then hold that hypothesis; a caller must not report it as a pose.
+  bool too_uncertain = false;
 };
 
 }  // namespace vsl::localization

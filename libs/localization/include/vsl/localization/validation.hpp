@@ -120,4 +120,20 @@ std::optional<ActiveValidationTarget> choose_discriminator(
     const std::vector<Eigen::Isometry3d>& hypotheses, const LocalizerOptions& options,
     const LookLimits& limits = {}, const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
 
+// A precision look: one hypothesis won, but its refined pose fails the precision bound
+// (ValidationOptions::precision_sigmas), typically because its percepts lie in the narrow cone of
+// one gaze, or far away. Percepts in other directions constrain the pose better. Under the
+// hypothesis `world_T_ego`, each model object o of a recognizable type predicted at ego point
+// e = world_T_ego^-1 X_o within `limits` carries the information 1 / sigma(e)^2 (Eq. 7: a near
+// object fixes the pose more than a far one). A look at e is rated by the information of every such
+// object within `limits.view_half_angle_rad` of its gaze ray that no earlier look had in view
+// (`looked_at_ego_m`: every gaze of the request, the scan's included; an object within the view
+// half angle of an earlier gaze ray was seen, or missed, then). Equal ratings go to the target
+// nearest `preferred_range_m`. The result's view_information_per_m2 is the rating;
+// discrimination_m is 0. nullopt when no object in reach is newly in view.
+std::optional<ActiveValidationTarget> choose_precision_look(
+    const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
+    const Eigen::Isometry3d& world_T_ego, const LocalizerOptions& options,
+    const LookLimits& limits = {}, const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
+
 }  // namespace vsl::localization
