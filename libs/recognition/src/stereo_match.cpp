@@ -147,11 +147,14 @@ std::vector<StereoPercept> match_and_triangulate(
       detail::undistort(right_raw, right_intrinsics);
   const detail::EpipolarGeometry epipolar(left_intrinsics, right_intrinsics, left_T_right);
   const detail::Triangulator triangulator(left_intrinsics, right_intrinsics, left_T_right);
-  std::optional<detail::SideCorrelator> correlator;
+  std::optional<detail::SideCorrelator> correlator, reverse_correlator;
   if (options.min_side_correlation > 0.0 && images.left_grey && images.right_grey &&
       up_in_left_camera.norm() > 0.0) {
     correlator.emplace(*images.left_grey, *images.right_grey, left_intrinsics, right_intrinsics,
                        left_T_right, up_in_left_camera);
+    reverse_correlator.emplace(*images.right_grey, *images.left_grey, right_intrinsics,
+                               left_intrinsics, left_T_right.inverse(),
+                               left_T_right.linear().transpose() * up_in_left_camera);
   }
   std::vector<std::vector<detail::IdealPixel>> left_corners, right_corners;
   for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
@@ -232,6 +235,9 @@ std::vector<StereoPercept> match_and_triangulate(
     // occluder's contour, a neighbour's strip) still has its centre from the three good sides
     // (Triangulator::rectangle_centre_from_one_side); more than one such side is refused.
     std::optional<Eigen::Vector3d> one_side_centre;
+    int side_needing_correlation = -1;     // a side placed only if the images correlate it
+    bool side_needing_left_image = false;  // ... tilted in the left outline, not the right
+    double worst_tilt = 0.0;               // sin, of the sides judged by side_tilts
     if (rectangles && options.max_side_tilt_rad > 0.0 && up_in_left_camera.norm() > 0.0) {
       const std::array<std::array<double, 2>, 2> tilts = triangulator.side_tilts(
           corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera);
@@ -252,8 +258,18 @@ std::vector<StereoPercept> match_and_triangulate(
         one_side_centre = triangulator.rectangle_centre_from_one_side(
             corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera,
             1 - bad_side, 1 - bad_image);
+        // Otherwise the side tilted in one outline is still a door edge in the other image: its
+        // depth can come from the images (side_correlation.hpp), swept from that image, instead
+        // of from the horizontal planes, which fail where the door's top or bottom edge is near
+        // the cameras' height (or the outline's corner there is off). The pair is kept only if
+        // that side correlates, and then passes the level-edge gate like any other.
+        if (!one_side_centre && correlator) {
+          side_needing_correlation = bad_side;
+          side_needing_left_image = bad_image == 0;
+        }
       }
-      if (bad > 0 && !one_side_centre) {
+      worst_tilt = tilt;
+      if (bad > 0 && !one_side_centre && side_needing_correlation < 0) {
         return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
                       options.max_side_tilt_rad);
       }
@@ -302,10 +318,15 @@ std::vector<StereoPercept> match_and_triangulate(
     if (rectangles) {
       std::optional<Eigen::Vector3d> centre = one_side_centre;
       if (!one_side_centre) {
-        std::optional<std::array<Eigen::Vector3d, 4>> ends = triangulator.rectangle_ends(
-            corner_array(left_corners[l]), corner_array(right_corners[r]));
+        std::optional<std::array<Eigen::Vector3d, 4>> ends =
+            triangulator.rectangle_ends(corner_array(left_corners[l]),
+                                        corner_array(right_corners[r]), side_needing_correlation);
         // Each side's depth from the images around it (side_correlation.hpp), searched around
         // the outlines' depth by a margin that covers a stile lost in one image.
+        if (!ends && side_needing_correlation >= 0) {
+          return refuse(StereoGate::kSideTilt, std::asin(std::min(worst_tilt, 1.0)),
+                        options.max_side_tilt_rad);
+        }
         if (ends && correlator) {
           const std::array<Eigen::Vector2d, 4> corners = corner_array(left_corners[l]);
           const auto sides = detail::Triangulator::vertical_sides(corners);
@@ -315,15 +336,38 @@ std::vector<StereoPercept> match_and_triangulate(
           const double search_px = kSideSearchPx + kSideSearchWidthFraction * width_px;
           for (int s = 0; s < 2; ++s) {
             const auto [i, j] = sides[static_cast<std::size_t>(s)];
-            const double initial_m = 0.5 * (correlator->horizontal_distance((*ends)[2 * s]) +
-                                            correlator->horizontal_distance((*ends)[2 * s + 1]));
-            const auto depth = correlator->correlate(corners[i], corners[j], initial_m, search_px,
-                                                     options.min_depth_m, options.max_depth_m);
+            // A side tilted in the left outline is searched from the right image's side into
+            // the left image: the same sweep with the cameras' roles swapped.
+            const bool from_right = s == side_needing_correlation && side_needing_left_image;
+            const detail::SideCorrelator& sweep = from_right ? *reverse_correlator : *correlator;
+            const std::array<Eigen::Vector2d, 4> seen =
+                from_right ? corner_array(right_corners[r]) : corners;
+            const Eigen::Isometry3d to_sweep =
+                from_right ? left_T_right.inverse() : Eigen::Isometry3d::Identity();
+            // Around the outlines' depth of the side; for the tilted one, of the good side: the
+            // tilted outline's ends are off, and the two sides of a door differ by a few pixels
+            // of disparity at most (0.5 m turned 40 deg at 2.5 m: 2.5 px).
+            const int from = s == side_needing_correlation ? 1 - s : s;
+            const double initial_m =
+                0.5 * (sweep.horizontal_distance(to_sweep * (*ends)[2 * from]) +
+                       sweep.horizontal_distance(to_sweep * (*ends)[2 * from + 1]));
+            const auto depth = sweep.correlate(seen[i], seen[j], initial_m, search_px,
+                                               options.min_depth_m, options.max_depth_m);
             const double correlation = depth ? depth->correlation : -1.0;
-            if (!depth || correlation < options.min_side_correlation) continue;
-            const auto top = correlator->point_at(corners[i], depth->horizontal_distance_m);
-            const auto bottom = correlator->point_at(corners[j], depth->horizontal_distance_m);
-            if (!top || !bottom) continue;
+            auto top = depth ? sweep.point_at(seen[i], depth->horizontal_distance_m) : std::nullopt;
+            auto bottom =
+                depth ? sweep.point_at(seen[j], depth->horizontal_distance_m) : std::nullopt;
+            if (from_right && top && bottom) {
+              top = left_T_right * *top;
+              bottom = left_T_right * *bottom;
+            }
+            if (correlation < options.min_side_correlation || !top || !bottom) {
+              if (s == side_needing_correlation) {
+                return refuse(StereoGate::kSideTilt, std::asin(std::min(worst_tilt, 1.0)),
+                              options.max_side_tilt_rad);
+              }
+              continue;
+            }
             (*ends)[2 * s] = *top;
             (*ends)[2 * s + 1] = *bottom;
           }

@@ -78,11 +78,17 @@ double Triangulator::max_side_tilt(const std::array<Eigen::Vector2d, 4>& left,
 }
 
 std::optional<std::array<Eigen::Vector3d, 4>> Triangulator::rectangle_ends(
-    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right) const {
+    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
+    int skipped_side) const {
   const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
   std::array<Eigen::Vector3d, 4> ends;
+  ends.fill(Eigen::Vector3d::Zero());
   int e = 0;
   for (const auto& [i, j] : sides) {
+    if (e / 2 == skipped_side) {
+      e += 2;
+      continue;
+    }
     if (verticality(left, i, j) < std::sqrt(0.5) || verticality(right, i, j) < std::sqrt(0.5)) {
       return std::nullopt;
     }

@@ -57,10 +57,12 @@ class Triangulator {
 
   // The four ends of the two vertical sides, as described at rectangle_centre (left camera frame,
   // metres): the first side's two ends, then the second's, each side's ends in the order of its
-  // corners (so ends 0 and 2 bound one horizontal edge, 1 and 3 the other).
+  // corners (so ends 0 and 2 bound one horizontal edge, 1 and 3 the other). `skipped_side` (0 or
+  // 1, in that order) is neither checked nor computed, its ends left zero: a side the caller
+  // places otherwise (one outline's side is no door edge there).
   std::optional<std::array<Eigen::Vector3d, 4>> rectangle_ends(
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
-      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px) const;
+      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px, int skipped_side = -1) const;
 
   // The larger slope (rise over run, `up` a vector in the left camera frame) of the rectangle's
   // two other edges between its four ends (in the order of rectangle_ends). A door's top and

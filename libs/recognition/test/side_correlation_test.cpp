@@ -217,6 +217,52 @@ TEST_F(SideCorrelationTest, CrossMatchPlacesADoorWhoseRightOutlineLostAStile) {
                   .empty());
 }
 
+// One outline's side is tilted (its bottom corner 0.25 m inside the door: an occluder's contour,
+// a neighbour's strip), too far for the level-plane construction from the good side
+// (Triangulator::rectangle_centre_from_one_side allows 30% of the side's length). That side is
+// still a door edge in the other image, and the sweep from that image places it.
+TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsSweptFromTheOther) {
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  std::array<Eigen::Vector3d, 4> tilted = c;
+  tilted[2] = c[2] - 0.25 * door_.across;  // bottom right
+  const cv::Mat wall(right_grey_.size(), CV_8UC1, cv::Scalar(190));
+  StereoMatchOptions options;
+  options.max_side_tilt_rad = 0.03;
+  options.max_edge_slope_rad = 0.3;
+  options.min_side_correlation = 0.7;
+  for (const bool tilted_in_left : {true, false}) {
+    SCOPED_TRACE(tilted_in_left ? "tilted in the left outline" : "tilted in the right outline");
+    const std::array<Eigen::Vector3d, 4>& l = tilted_in_left ? tilted : c;
+    const std::array<Eigen::Vector3d, 4>& r = tilted_in_left ? c : tilted;
+    const Detection left =
+        door_detection({left_px(l[0]), left_px(l[1]), left_px(l[2]), left_px(l[3])});
+    const Detection right =
+        door_detection({right_px(r[0]), right_px(r[1]), right_px(r[2]), right_px(r[3])});
+    std::vector<StereoPairTrace> trace;
+    // The outlines alone: refused at the side gate.
+    EXPECT_TRUE(match_and_triangulate({left}, {right}, calibration_.left, calibration_.right,
+                                      left_T_right_, options, up(), &trace)
+                    .empty());
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
+    // With the images: the door's centre.
+    const auto percepts =
+        match_and_triangulate({left}, {right}, calibration_.left, calibration_.right, left_T_right_,
+                              options, up(), &trace, StereoImages{&left_grey_, &right_grey_});
+    ASSERT_EQ(percepts.size(), 1u) << stereo_gate_name(trace[0].refused_by) << " " << trace[0].value
+                                   << " limit " << trace[0].limit;
+    EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
+    // The image the side is swept from shows only the wall: nothing to place it by, refused.
+    const StereoImages blind =
+        tilted_in_left ? StereoImages{&left_grey_, &wall} : StereoImages{&wall, &right_grey_};
+    EXPECT_TRUE(match_and_triangulate({left}, {right}, calibration_.left, calibration_.right,
+                                      left_T_right_, options, up(), &trace, blind)
+                    .empty());
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
+  }
+}
+
 TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {
   // The right image is the wall alone: no side scores 0.7, so the outlines' depth stands, and
   // exact outlines give the door's centre.
