@@ -3,7 +3,10 @@
 // (segmentation cut it off along the groove of a shaker door), and a side whose horizontal
 // position differs so between the images has a wrong disparity, by a stile's width (13 px at
 // 2.5 m). The image around the left outline's side is found again in the right image by
-// normalized cross-correlation along the epipolar lines. Internal to vsl_recognition.
+// normalized cross-correlation along the epipolar lines. Built over (right, left) with
+// right_T_left and `up` in the right camera frame, the same class sweeps a side of the right
+// outline into the left image (a side that only the right outline has as a door edge); its
+// points are then in the right camera frame. Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

@@ -87,8 +87,11 @@ struct StereoMatchOptions {
   // other keeps, and that side's disparity from the outlines is then off by the stile's width.
   // A side whose best score is below this keeps the outlines' depth (a side without texture to
   // correlate: the middle of a double door, a reveal of sub-pixel width). The edge-slope gate
-  // (max_edge_slope_rad) then tests the sides so placed. Needs the images
-  // (match_and_triangulate's `images`) and the up direction; 0 turns it off.
+  // (max_edge_slope_rad) then tests the sides so placed. A side that the side gate finds tilted
+  // in one outline only (max_side_tilt_rad), and that the level planes through the other side
+  // cannot place, is swept from the other image instead, and the pair is kept only if it scores
+  // this much. Needs the images (match_and_triangulate's `images`) and the up direction; 0 turns
+  // it off.
   double min_side_correlation = 0.0;
 };
 
