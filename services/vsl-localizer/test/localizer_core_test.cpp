@@ -214,19 +214,25 @@ TEST(LocalizerCore, AmbiguousAfterTheLookLimit) {
   EXPECT_EQ(h.core.state(), State::kDone);
 }
 
-TEST(LocalizerCore, ActiveLookThatNeverSettlesEndsAmbiguousNotFailed) {
-  Harness h;
-  h.engine.results = {result(Status::kAmbiguous)};
-  h.core.request(7, h.now);
-  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
-  h.fused();
-  ASSERT_EQ(h.core.state(), State::kActiveValidation);
-  h.core.tick(h.now += 6 * kSecond);  // settle_timeout_s is 5 s
-  ASSERT_EQ(h.out.poses.size(), 1u);
-  EXPECT_EQ(h.out.poses[0].result.status, Status::kAmbiguous);
-  EXPECT_NE(h.out.poses[0].message.find("did not complete"), std::string::npos)
-      << h.out.poses[0].message;
-  EXPECT_EQ(h.core.state(), State::kDone);
+// A look that cannot complete ends the request with what was known before it: AMBIGUOUS after
+// an ambiguous result, FAILED (no pose) after a precision look for a result too uncertain.
+TEST(LocalizerCore, ActiveLookThatNeverSettlesEndsWithWhatWasKnown) {
+  for (const bool precision : {false, true}) {
+    SCOPED_TRACE(precision ? "precision look" : "discriminating look");
+    Harness h;
+    h.engine.results = {precision ? too_uncertain() : result(Status::kAmbiguous)};
+    h.core.request(7, h.now);
+    for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+    h.fused();
+    ASSERT_EQ(h.core.state(), State::kActiveValidation);
+    h.core.tick(h.now += 6 * kSecond);  // settle_timeout_s is 5 s
+    ASSERT_EQ(h.out.poses.size(), 1u);
+    EXPECT_EQ(h.out.poses[0].result.status, precision ? Status::kFailed : Status::kAmbiguous);
+    EXPECT_NE(h.out.poses[0].message.find("did not complete"), std::string::npos)
+        << h.out.poses[0].message;
+    EXPECT_EQ(h.out.poses[0].result.covariance.isZero(), precision);
+    EXPECT_EQ(h.core.state(), precision ? State::kFailed : State::kDone);
+  }
 }
 
 TEST(LocalizerCore, FailedResultCarriesNoPose) {
@@ -304,22 +310,6 @@ TEST(LocalizerCore, TooUncertainWithNothingToLookAtFails) {
   EXPECT_EQ(h.out.gazes.size(), 3u);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
   EXPECT_NE(h.out.poses[0].message.find("nothing new in reach"), std::string::npos);
-}
-
-TEST(LocalizerCore, PrecisionLookThatNeverSettlesFails) {
-  Harness h;
-  h.engine.results = {too_uncertain()};
-  h.core.request(7, h.now);
-  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
-  h.fused();
-  ASSERT_EQ(h.core.state(), State::kActiveValidation);
-  h.core.tick(h.now += 6 * kSecond);  // settle_timeout_s is 5 s
-  ASSERT_EQ(h.out.poses.size(), 1u);
-  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
-  EXPECT_NE(h.out.poses[0].message.find("did not complete"), std::string::npos)
-      << h.out.poses[0].message;
-  EXPECT_TRUE(h.out.poses[0].result.covariance.isZero());
-  EXPECT_EQ(h.core.state(), State::kFailed);
 }
 
 TEST(LocalizerCore, HeadThatNeverSettlesFails) {
