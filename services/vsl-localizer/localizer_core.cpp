@@ -193,17 +193,14 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
       finish(State::kDone, result, "localized", now_us);
       return;
     case localization::Status::kFailed:
-      if (!result.too_uncertain) {
+      if (result.too_uncertain) {
+        look_for_precision(result, now_us);
+      } else {
         finish(State::kFailed, result, result.message, now_us);
-        return;
       }
-      break;
+      return;
     case localization::Status::kAmbiguous:
       break;
-  }
-  if (result.status == localization::Status::kFailed) {
-    look_for_precision(result, now_us);
-    return;
   }
   if (active_looks_ >= options_.max_active_looks) {
     finish(State::kDone, result,
@@ -212,13 +209,8 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
     return;
   }
   if (options_.passive) {
-    // The recorded run decides whether another look follows: its next FUSING entry, or its end.
-    pending_result_ = result;
-    ++active_looks_;
-    ++step_;
-    detail_ = "ambiguous (" + std::to_string(num_hypotheses_) +
-              " hypotheses): following the recorded active look";
-    set_state(State::kActiveValidation, now_us);
+    follow_recorded_look(result, "ambiguous (" + std::to_string(num_hypotheses_) + " hypotheses)",
+                         now_us);
     return;
   }
   const std::optional<Eigen::Vector3d> target =
@@ -227,11 +219,27 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
     finish(State::kDone, result, "ambiguous, nothing discriminates: " + result.message, now_us);
     return;
   }
+  start_active_look(result, *target, false, now_us);
+}
+
+void LocalizerCore::start_active_look(const localization::LocalizationResult& result,
+                                      const Eigen::Vector3d& ego_target_m, bool for_precision,
+                                      std::int64_t now_us) {
   looking_to_resolve_ = result;
-  active_look_targets_m_.push_back(*target);
+  active_look_targets_m_.push_back(ego_target_m);
   ++active_looks_;
-  precision_look_ = false;
-  start_look(*target, now_us);
+  precision_look_ = for_precision;
+  start_look(ego_target_m, now_us);
+}
+
+void LocalizerCore::follow_recorded_look(const localization::LocalizationResult& result,
+                                         const std::string& why, std::int64_t now_us) {
+  // The recorded run decides whether another look follows: its next FUSING entry, or its end.
+  pending_result_ = result;
+  ++active_looks_;
+  ++step_;
+  detail_ = why + ": following the recorded active look";
+  set_state(State::kActiveValidation, now_us);
 }
 
 void LocalizerCore::look_for_precision(const localization::LocalizationResult& result,
@@ -242,12 +250,7 @@ void LocalizerCore::look_for_precision(const localization::LocalizationResult& r
     return;
   }
   if (options_.passive) {
-    // As for an ambiguous result: the recorded run's next FUSING entry, or its end, decides.
-    pending_result_ = result;
-    ++active_looks_;
-    ++step_;
-    detail_ = "too uncertain: following the recorded active look";
-    set_state(State::kActiveValidation, now_us);
+    follow_recorded_look(result, "too uncertain", now_us);
     return;
   }
   // Away from every gaze so far: the scan's and the active looks'.
@@ -258,11 +261,7 @@ void LocalizerCore::look_for_precision(const localization::LocalizationResult& r
     finish(State::kFailed, result, result.message + "; nothing new in reach to look at", now_us);
     return;
   }
-  looking_to_resolve_ = result;
-  active_look_targets_m_.push_back(*target);
-  ++active_looks_;
-  precision_look_ = true;
-  start_look(*target, now_us);
+  start_active_look(result, *target, true, now_us);
 }
 
 void LocalizerCore::followed_status(std::int64_t request_id, State state, std::int64_t now_us) {

@@ -172,6 +172,13 @@ class LocalizerCore {
   void localize(const std::vector<localization::FusedPercept>& percepts, std::int64_t now_us);
   // A FAILED result that is only too uncertain: a precision look while looks remain.
   void look_for_precision(const localization::LocalizationResult& result, std::int64_t now_us);
+  // An active look (discriminating or for precision) at `ego_target_m`, resolving `result`.
+  void start_active_look(const localization::LocalizationResult& result,
+                         const Eigen::Vector3d& ego_target_m, bool for_precision,
+                         std::int64_t now_us);
+  // Passive mode: wait for the recorded run's look to end (its next FUSING entry or its end).
+  void follow_recorded_look(const localization::LocalizationResult& result, const std::string& why,
+                            std::int64_t now_us);
   void finish(State state, const localization::LocalizationResult& result,
               const std::string& message, std::int64_t now_us);
   void fail(const std::string& reason, std::int64_t now_us);
