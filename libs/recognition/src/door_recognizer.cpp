@@ -3,6 +3,8 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <ostream>
 #include <stdexcept>
 
@@ -38,7 +40,8 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
   DoorRecognizerParameters out;
   if (section.is_null()) return out;
   section.expect_map();
-  section.expect_keys({"ideal_colour_rgb", "min_blob_px", "min_border_distance_px"});
+  section.expect_keys({"ideal_colour_rgb", "min_blob_px", "min_border_distance_px",
+                       "max_mahalanobis2_with_partner"});
   if (const auto colour = section.find("ideal_colour_rgb")) {
     out.ideal_colour_rgb = config::as_vector3(*colour);
     if (out.ideal_colour_rgb.minCoeff() < 0.0 || out.ideal_colour_rgb.maxCoeff() > 1.0) {
@@ -50,6 +53,13 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
   if (const auto v = section.find("min_border_distance_px")) {
     out.min_border_distance_px = int_in(*v, 0, 1000);
   }
+  if (const auto v = section.find("max_mahalanobis2_with_partner")) {
+    out.max_mahalanobis2_with_partner = v->as_double();
+    if (!(out.max_mahalanobis2_with_partner >= 0.0) ||
+        !std::isfinite(out.max_mahalanobis2_with_partner)) {
+      v->fail("must be 0 (off) or a finite D^2 at least the model's max_mahalanobis2");
+    }
+  }
   return out;
 }
 
@@ -60,6 +70,10 @@ void write_door_parameters(std::ostream& out, const DoorRecognizerParameters& pa
       << ", " << exact_number(q.z()) << "]\n"
       << indent << "min_blob_px: " << parameters.min_blob_px << "\n"
       << indent << "min_border_distance_px: " << parameters.min_border_distance_px << "\n";
+  if (parameters.max_mahalanobis2_with_partner > 0.0) {
+    out << indent << "max_mahalanobis2_with_partner: "
+        << exact_number(parameters.max_mahalanobis2_with_partner) << "\n";
+  }
 }
 
 DoorRecognizer::DoorRecognizer(GaussianClassModel model, DoorRecognizerParameters parameters)
@@ -67,6 +81,13 @@ DoorRecognizer::DoorRecognizer(GaussianClassModel model, DoorRecognizerParameter
   if (model_.component_names() != door_descriptor_names()) {
     throw std::invalid_argument("DoorRecognizer: the model of '" + model_.type() +
                                 "' is not over the door descriptor's components");
+  }
+  if (parameters_.max_mahalanobis2_with_partner != 0.0 &&
+      !(parameters_.max_mahalanobis2_with_partner >= model_.max_mahalanobis2())) {
+    throw std::invalid_argument(
+        "DoorRecognizer: max_mahalanobis2_with_partner must be 0 or at least the model's "
+        "max_mahalanobis2 (" +
+        exact_number(model_.max_mahalanobis2()) + ")");
   }
 }
 
@@ -85,11 +106,13 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
         square(colour_angle_rad(parameters_.ideal_colour_rgb, blob.mean_colour_rgb) -
                model_.mean()(kColourComponent)) /
         model_.covariance()(kColourComponent, kColourComponent);
-    if (!model_.accepts(colour_d2)) continue;
+    const double max_d2 =
+        std::max(model_.max_mahalanobis2(), parameters_.max_mahalanobis2_with_partner);
+    if (!(colour_d2 <= max_d2)) continue;
     const BlobAxes axes = blob_axes(blob);
     const double d2 =
         model_.mahalanobis2(door_descriptor(blob, axes, parameters_.ideal_colour_rgb));
-    if (!model_.accepts(d2)) continue;
+    if (!(d2 <= max_d2)) continue;
     std::optional<BlobQuadrilateral> quad;
     if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
         blob.v_max >= bgr_image.rows - border) {
@@ -111,6 +134,7 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
     detection.minor_extent_px = axes.minor_extent_px;
     detection.mahalanobis2 = d2;
     detection.confidence = static_cast<float>(model_.confidence(d2));
+    detection.needs_partner = !model_.accepts(d2);
     out.push_back(std::move(detection));
   }
 }

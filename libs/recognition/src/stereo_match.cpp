@@ -197,6 +197,9 @@ std::vector<StereoPercept> match_and_triangulate(
       trace.limit = limit;
       return std::nullopt;
     };
+    // Hysteresis: a blob the class model rates just beyond its threshold in one image counts
+    // when the other image shows it clearly; two weak views are not evidence enough.
+    if (dl.needs_partner && dr.needs_partner) return refuse(StereoGate::kWeakPair, 0.0, 0.0);
     // Position: the right reference point on (near) the left one's epipolar line. For two
     // rectangle outlines, their vertical sides nest along the epipolar direction
     // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height.
@@ -487,6 +490,8 @@ const char* stereo_gate_name(StereoGate gate) {
       return "height";
     case StereoGate::kEdgeSlope:
       return "edge_slope";
+    case StereoGate::kWeakPair:
+      return "weak_pair";
   }
   return "?";
 }

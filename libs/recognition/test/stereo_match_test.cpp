@@ -429,6 +429,25 @@ TEST_F(StereoMatchTest, ConfidenceIsTheGeometricMean) {
   EXPECT_NEAR(percepts[0].confidence, 0.72, 1e-6);
 }
 
+TEST_F(StereoMatchTest, AWeakDetectionNeedsAClearPartner) {
+  // Hysteresis (Detection::needs_partner): a weak view pairs with a clear one, in either image;
+  // two weak views make no percept, and the trace says why.
+  Pair p = pair_of({0.1, 0.0, 2.0});
+  p.left.needs_partner = true;
+  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
+  p.left.needs_partner = false;
+  p.right.needs_partner = true;
+  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
+  p.left.needs_partner = true;
+  std::vector<StereoPairTrace> trace;
+  EXPECT_TRUE(match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
+                                    left_T_right_, options_, Eigen::Vector3d::Zero(), &trace)
+                  .empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kWeakPair);
+  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "weak_pair");
+}
+
 TEST_F(StereoMatchTest, EmptyInputs) {
   const Pair p = pair_of({0.0, 0.0, 1.5});
   EXPECT_TRUE(match({}, {p.right}).empty());

@@ -32,6 +32,11 @@ struct Detection {
   // the confidence derived from it: the chi-square survival probability, 0 .. 1.
   double mahalanobis2 = 0.0;
   float confidence = 0.0f;
+  // A weak detection: D^2 beyond the class model's acceptance threshold, but within the
+  // recognizer's threshold for a blob whose other view is clear
+  // (DoorRecognizerParameters::max_mahalanobis2_with_partner). The stereo match pairs it only
+  // with a detection that is not weak (StereoGate::kWeakPair), so it never makes a percept alone.
+  bool needs_partner = false;
 };
 
 }  // namespace vsl::recognition

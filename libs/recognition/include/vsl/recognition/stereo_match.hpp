@@ -130,7 +130,8 @@ enum class StereoGate {
   kEdgeSlope,
   kDepth,
   kExtent,
-  kHeight
+  kHeight,
+  kWeakPair  // both detections weak (Detection::needs_partner)
 };
 const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
 
