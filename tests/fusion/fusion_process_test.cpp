@@ -162,7 +162,7 @@ class fusion_process : public ::testing::Test {
     return temp_file(".yaml", "runtime:\n  lcm_url: " + udpm_url(port) +
                                   "\n  heartbeat_period_s: 0.2\n"
                                   "head: " +
-                                  std::string(VSL_SOURCE_DIR) + "/config/heads/armar3.yaml\n" +
+                                  std::string(VSL_SOURCE_DIR "/config/heads/armar3.yaml\n") +
                                   extra);
   }
 

@@ -10,7 +10,7 @@ namespace vsl::stereo_capture {
 namespace {
 
 // The head file is found relative to the config's "file name": put it in config/.
-const std::string kSource = std::string(VSL_SOURCE_DIR) + "/config/test_v4l2_stereo.yaml";
+const std::string kSource = std::string(VSL_SOURCE_DIR "/config/test_v4l2_stereo.yaml");
 
 config::Node parse(const std::string& text) {
   return config::Node::load_string(text, kSource);

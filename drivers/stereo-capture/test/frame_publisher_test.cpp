@@ -23,7 +23,7 @@ DriverSetup setup(const std::string& joints) {
       config::Node::load_string("v4l2_stereo:\n  head: heads/armar3.yaml\n"
                                 "  devices: {left: a, right: b}\n  joints: " +
                                     joints + "\n",
-                                std::string(VSL_SOURCE_DIR) + "/config/test.yaml"),
+                                std::string(VSL_SOURCE_DIR "/config/test.yaml")),
       "v4l2_stereo");
 }
 

@@ -15,7 +15,7 @@ constexpr std::size_t kPool = 256;
 
 const HeadKinematics& armar3() {
   static const HeadKinematics head =
-      HeadKinematics::load(std::string(VSL_SOURCE_DIR) + "/config/heads/armar3.yaml");
+      HeadKinematics::load(std::string(VSL_SOURCE_DIR "/config/heads/armar3.yaml"));
   return head;
 }
 

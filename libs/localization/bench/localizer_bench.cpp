@@ -40,7 +40,7 @@ constexpr int kViews = 64;
 // The shipped configuration: what is measured is what vsl-localize and the daemon run.
 LocalizerOptions bench_options() {
   return localizer_options_from(
-      vsl::config::Node::load_file(std::string(VSL_SOURCE_DIR) + "/config/localizer.yaml"));
+      vsl::config::Node::load_file(std::string(VSL_SOURCE_DIR "/config/localizer.yaml")));
 }
 
 // A world, its localizer (graph, adjacency and grid built) and the same indexes for the stage
@@ -78,7 +78,7 @@ const Scene& scene(std::int64_t objects) {
   if (!slot) {
     if (objects == 0) {
       slot = make_scene(
-          world::load_world(std::string(VSL_SOURCE_DIR) + "/config/worlds/kitchen.yaml"), false);
+          world::load_world(std::string(VSL_SOURCE_DIR "/config/worlds/kitchen.yaml")), false);
     } else {
       vsl::worldgen::BuildingOptions options;
       options.objects = static_cast<std::size_t>(objects);

@@ -27,7 +27,7 @@ Eigen::Vector2d project(const Eigen::Vector3d& p, const head::CameraIntrinsics& 
 
 void BM_MatchAndTriangulate(benchmark::State& state) {
   const head::StereoCalibration calibration =
-      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR) + "/calib/armar3_sim.yaml");
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
   const Eigen::Isometry3d left_T_right = calibration.left_T_right();
   const int count = static_cast<int>(state.range(0));
   std::mt19937 rng(7);
@@ -67,7 +67,7 @@ BENCHMARK(BM_MatchAndTriangulate)->Arg(20)->Arg(80)->Unit(benchmark::kMicrosecon
 
 void BM_SideCorrelation(benchmark::State& state) {
   const head::StereoCalibration calibration =
-      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR) + "/calib/armar3_sim.yaml");
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
   const Eigen::Isometry3d left_T_right = calibration.left_T_right();
   // A vertical door edge 2 m ahead, dark door left of it, bright wall right: 25 px of disparity.
   cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));

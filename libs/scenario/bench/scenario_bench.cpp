@@ -17,7 +17,7 @@ vsl::localization::LocalizerOptions localizer() {
 
 void BM_KitchenScenario(benchmark::State& state) {
   const auto world =
-      vsl::world::load_world(std::string(VSL_SOURCE_DIR) + "/config/worlds/kitchen.yaml");
+      vsl::world::load_world(std::string(VSL_SOURCE_DIR "/config/worlds/kitchen.yaml"));
   const vsl::scenario::ScenarioGenerator generator(world, {}, localizer());
   std::size_t index = 0, percepts = 0;
   for (auto _ : state) {

@@ -22,7 +22,7 @@ using vsl::world::WorldGraph;
 using vsl::world::WorldGraphOptions;
 using vsl::world::WorldModel;
 
-const std::string kKitchen = std::string(VSL_SOURCE_DIR) + "/config/worlds/kitchen.yaml";
+const std::string kKitchen = std::string(VSL_SOURCE_DIR "/config/worlds/kitchen.yaml");
 
 // The localizer's node set: the recognizable types (config/localizer.yaml).
 WorldGraphOptions localizer_graph_options() {

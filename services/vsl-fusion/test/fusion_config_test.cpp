@@ -8,7 +8,7 @@ namespace {
 
 std::string error_of(const std::string& text) {
   try {
-    load_fusion(config::Node::load_string(text, std::string(VSL_SOURCE_DIR) + "/config/x.yaml"));
+    load_fusion(config::Node::load_string(text, std::string(VSL_SOURCE_DIR "/config/x.yaml")));
   } catch (const config::Error& e) {
     return e.what();
   }
@@ -24,7 +24,7 @@ TEST(FusionConfig, ShippedConfigLoads) {
 }
 
 TEST(FusionConfig, BadValuesAreOneLine) {
-  const std::string file = std::string(VSL_SOURCE_DIR) + "/config/x.yaml";
+  const std::string file = std::string(VSL_SOURCE_DIR "/config/x.yaml");
   EXPECT_EQ(error_of("head: heads/armar3.yaml\nfusion:\n  e_min: 2\n"),
             file + ":3: fusion.e_min: must be in [0, 1], got 2");
   EXPECT_EQ(error_of("head: heads/armar3.yaml\nmax_frames_per_scan: 0\n"),

@@ -7,7 +7,7 @@
 namespace vsl::localizer_daemon {
 namespace {
 
-const char* kMinimal =
+const std::string kMinimal =
     "localizer:\n"
     "  world: worlds/kitchen.yaml\n"
     "  options: localizer.yaml\n"
@@ -32,8 +32,8 @@ TEST(LocalizerConfig, MinimalAndDefaults) {
   EXPECT_FALSE(c.core.passive);
   EXPECT_EQ(c.core.frames_per_target, 2);
   EXPECT_NEAR(c.core.look_limits.max_elevation_rad, 35.0 * 3.141592653589793 / 180.0, 1e-6);
-  const auto e = read_localizer_config(config::Node::load_string(
-      std::string(kMinimal) + "  max_look_elevation_deg: 20\n", "/c.yaml"));
+  const auto e = read_localizer_config(
+      config::Node::load_string(kMinimal + "  max_look_elevation_deg: 20\n", "/c.yaml"));
   EXPECT_NEAR(e.core.look_limits.max_elevation_rad, 20.0 * 3.141592653589793 / 180.0, 1e-9);
   const auto p = read_localizer_config(config::Node::load_string(kMinimal, "/cfg/l.yaml"), true);
   EXPECT_TRUE(p.core.passive);

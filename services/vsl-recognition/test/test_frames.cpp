@@ -20,7 +20,7 @@ head::HeadKinematics small_armar3() {
   }
   calibration.right_t_left_m = Eigen::Vector3d(-0.09, 0.0, 0.0);
   return head::HeadKinematics::from_config(
-      config::Node::load_file(std::string(VSL_SOURCE_DIR) + "/config/heads/armar3.yaml"),
+      config::Node::load_file(std::string(VSL_SOURCE_DIR "/config/heads/armar3.yaml")),
       calibration);
 }
 

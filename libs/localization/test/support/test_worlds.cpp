@@ -6,7 +6,7 @@ namespace vsl::localization::testing {
 
 const world::WorldModel& bundled_kitchen() {
   static const world::WorldModel kitchen =
-      world::load_world(std::string(VSL_SOURCE_DIR) + "/config/worlds/kitchen.yaml");
+      world::load_world(std::string(VSL_SOURCE_DIR "/config/worlds/kitchen.yaml"));
   return kitchen;
 }
 
