@@ -449,6 +449,7 @@ int main(int argc, char** argv) {
           text << " | " << (object_matched[t] ? "percept" : "-");
           // The percept made from the left blob, if any, and its distance from this object.
           for (const recognition::FramePercept& p : result.percepts) {
+            if (p.left_detection < 0) continue;  // a single-view percept from the right image
             const recognition::Detection& d =
                 result.left_detections[static_cast<std::size_t>(p.left_detection)];
             if (d.type == object.type && d.blob_index == left_best) {
@@ -485,15 +486,19 @@ int main(int argc, char** argv) {
             text << world.objects[object.object_index].id << " " << matches[i].error_m << "\n";
           } else {
             text << "- -";
-            // What the false positive's left blob lies on (labelling.hpp).
+            // What the false positive's blob lies on (labelling.hpp): its left blob, or its
+            // right one for a single-view percept from the right image.
+            const bool from_left = p.left_detection >= 0;
             const recognition::Detection& d =
-                result.left_detections[static_cast<std::size_t>(p.left_detection)];
+                from_left ? result.left_detections[static_cast<std::size_t>(p.left_detection)]
+                          : result.right_detections[static_cast<std::size_t>(p.right_detection)];
             const recognition::Blob& blob =
-                result.left_blobs[static_cast<std::size_t>(d.blob_index)];
+                (from_left ? result.left_blobs
+                           : result.right_blobs)[static_cast<std::size_t>(d.blob_index)];
+            const cv::Mat& ids = from_left ? frame.left.object_ids : frame.right.object_ids;
             const std::vector<int> visible =
-                recognition::object_pixel_counts(frame.left.object_ids, world.objects.size());
-            const recognition::BlobLabel label =
-                recognition::label_blob(blob, frame.left.object_ids, visible);
+                recognition::object_pixel_counts(ids, world.objects.size());
+            const recognition::BlobLabel label = recognition::label_blob(blob, ids, visible);
             text << " on "
                  << (label.object_index >= 0
                          ? world.objects[static_cast<std::size_t>(label.object_index)].id

@@ -78,8 +78,12 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
     return std::any_of(detections.begin(), detections.end(),
                        [](const Detection& d) { return d.corners_px.size() == 4; });
   };
-  if (options_.stereo.min_side_correlation > 0.0 && has_outline(result.left_detections) &&
-      has_outline(result.right_detections)) {
+  // Single-view doors (StereoMatchOptions::min_single_view_correlation) need only one outline.
+  const bool left_outline = has_outline(result.left_detections);
+  const bool right_outline = has_outline(result.right_detections);
+  if (options_.stereo.min_side_correlation > 0.0 &&
+      (options_.stereo.min_single_view_correlation > 0.0 ? left_outline || right_outline
+                                                         : left_outline && right_outline)) {
     cv::cvtColor(left_bgr, left_grey, cv::COLOR_BGR2GRAY);
     cv::cvtColor(right_bgr, right_grey, cv::COLOR_BGR2GRAY);
     images = {&left_grey, &right_grey};
@@ -93,14 +97,15 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
   const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
   result.percepts.reserve(stereo.size());
   for (const StereoPercept& s : stereo) {
-    const Detection& left = result.left_detections[s.left_detection];
-    const Detection& right = result.right_detections[s.right_detection];
+    // A single-view percept has a detection in one image only (stereo_match.hpp).
+    const Detection& detection = s.left_detection >= 0 ? result.left_detections[s.left_detection]
+                                                       : result.right_detections[s.right_detection];
     FramePercept p;
-    p.type = left.type;
+    p.type = detection.type;
     p.ego_position_m = result.ego_T_left_camera * s.left_camera_position_m;
     p.ego_covariance_m2 = ego_R_left * s.left_camera_covariance_m2 * ego_R_left.transpose();
-    p.left_px = left.reference_px;
-    p.right_px = right.reference_px;
+    p.left_px = s.left_px;
+    p.right_px = s.right_px;
     p.confidence = s.confidence;
     p.left_detection = s.left_detection;
     p.right_detection = s.right_detection;

@@ -21,6 +21,8 @@ constexpr double kMinSideLengthPx = 8.0;
 // A window whose grey values vary by less than this (standard deviation, grey levels) has no
 // edge to correlate.
 constexpr double kMinWindowStdDev = 2.0;
+// SideDepth::second_correlation: local maxima at least this many steps from the peak.
+constexpr int kDistinctPeakSteps = 3;
 
 // Bilinear grey value at raw pixel (x, y); false outside the image.
 bool sample(const cv::Mat& grey, double x, double y, double& value) {
@@ -180,6 +182,14 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
   SideDepth out;
   out.horizontal_distance_m = 1.0 / (lambda_min + (k + offset) * step);
   out.correlation = *best;
+  for (int i = 0; i < steps; ++i) {
+    const double v = scores[static_cast<std::size_t>(i)];
+    const bool local_maximum = (i == 0 || v >= scores[static_cast<std::size_t>(i - 1)]) &&
+                               (i + 1 == steps || v >= scores[static_cast<std::size_t>(i + 1)]);
+    if (std::abs(i - k) >= kDistinctPeakSteps && local_maximum && v > out.second_correlation) {
+      out.second_correlation = v;
+    }
+  }
   return out;
 }
 

@@ -55,6 +55,10 @@ class SideCorrelator {
   struct SideDepth {
     double horizontal_distance_m = 0.0;  // D, of the vertical side from the left camera centre
     double correlation = 0.0;            // normalized cross-correlation at D, in [-1, 1]
+    // The best score at another local maximum of the sweep, at least 3 steps (pixels of image
+    // motion) from the peak; -1 when there is none. A repeated structure (a run of equal doors)
+    // shows as a second peak almost as high as the first.
+    double second_correlation = -1.0;
   };
   // The side from left ideal pixel `a` to `b`, searched within `search_px` pixels of image motion
   // around `initial_distance_m` and within [min_distance_m, max_distance_m]. nullopt when the

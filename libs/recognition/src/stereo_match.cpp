@@ -12,6 +12,7 @@
 
 #include "epipolar.hpp"
 #include "side_correlation.hpp"
+#include "single_view.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
 
@@ -57,6 +58,28 @@ std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {
 bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
   return std::find(options.bar_types.begin(), options.bar_types.end(), type) !=
          options.bar_types.end();
+}
+
+// How many detections of a bar type in `detections` (one image's) have their reference point
+// inside the convex outline of `outline` (raw pixels, corners clockwise in the image: each
+// cross product of an edge and the point from its start has the same sign).
+int bars_inside(const std::vector<Detection>& detections, const Detection& outline,
+                const StereoMatchOptions& options) {
+  const std::vector<Eigen::Vector2d>& c = outline.corners_px;
+  int count = 0;
+  for (const Detection& d : detections) {
+    if (!is_bar_type(options, d.type)) continue;
+    int positive = 0, negative = 0;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const Eigen::Vector2d edge = c[(k + 1) % c.size()] - c[k];
+      const Eigen::Vector2d to = d.reference_px - c[k];
+      const double cross = edge.x() * to.y() - edge.y() * to.x();
+      positive += cross > 0.0;
+      negative += cross < 0.0;
+    }
+    count += positive == 0 || negative == 0;
+  }
+  return count;
 }
 
 // Orientation difference of two undirected axes (angles in [0, pi)), in [0, pi / 2].
@@ -136,7 +159,9 @@ std::vector<StereoPercept> match_and_triangulate(
     const Eigen::Vector3d& up_in_left_camera, std::vector<StereoPairTrace>* pair_trace,
     const StereoImages& images) {
   if (pair_trace) pair_trace->clear();
-  if (left.empty() || right.empty()) return {};
+  const bool single_view = options.min_single_view_correlation > 0.0;
+  if ((left.empty() || right.empty()) && !single_view) return {};
+  if (left.empty() && right.empty()) return {};
   std::vector<Eigen::Vector2d> left_raw, right_raw;
   left_raw.reserve(left.size());
   right_raw.reserve(right.size());
@@ -454,6 +479,8 @@ std::vector<StereoPercept> match_and_triangulate(
     percept.right_detection = c.right;
     percept.left_camera_position_m = c.triangulation.left_camera_position_m;
     percept.left_camera_covariance_m2 = c.triangulation.left_camera_covariance_m2;
+    percept.left_px = left[c.left].reference_px;
+    percept.right_px = right[c.right].reference_px;
     percept.confidence = static_cast<float>(
         std::sqrt(std::clamp(static_cast<double>(left[c.left].confidence), 0.0, 1.0) *
                   std::clamp(static_cast<double>(right[c.right].confidence), 0.0, 1.0)));
@@ -465,6 +492,73 @@ std::vector<StereoPercept> match_and_triangulate(
     }
   }
   if (pair_trace) *pair_trace = std::move(traces);
+  if (single_view && correlator) {
+    std::vector<char> left_paired(left.size(), 0), right_paired(right.size(), 0);
+    for (const detail::Candidate& c : assigned) {
+      left_paired[static_cast<std::size_t>(c.left)] = 1;
+      right_paired[static_cast<std::size_t>(c.right)] = 1;
+    }
+    const Eigen::Isometry3d right_T_left = left_T_right.inverse();
+    // The ideal pixel of a left-camera point in either image.
+    const auto ideal_in = [](const head::CameraIntrinsics& k, const Eigen::Vector3d& p) {
+      return Eigen::Vector2d(k.fx_px * p.x() / p.z() + k.cx_px, k.fy_px * p.y() / p.z() + k.cy_px);
+    };
+    for (int image = 0; image < 2; ++image) {
+      const std::vector<Detection>& detections = image == 0 ? left : right;
+      const auto& corners = image == 0 ? left_corners : right_corners;
+      const std::vector<char>& paired = image == 0 ? left_paired : right_paired;
+      for (std::size_t d = 0; d < detections.size(); ++d) {
+        const Detection& detection = detections[d];
+        if (paired[d] || detection.needs_partner || corners[d].size() != 4) continue;
+        if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
+          continue;
+        }
+        const std::optional<detail::SingleViewDoor> door = detail::place_single_view_door(
+            corner_array(corners[d]), image == 0 ? *correlator : *reverse_correlator,
+            image == 0 ? left_intrinsics : right_intrinsics,
+            image == 0 ? up_in_left_camera
+                       : Eigen::Vector3d(right_T_left.linear() * up_in_left_camera),
+            options, height_range(options, detection.type));
+        if (!door) continue;
+        const Eigen::Vector3d centre = image == 0 ? door->centre_m : left_T_right * door->centre_m;
+        const double offset = reference_depth_offset(options, detection.type);
+        const Eigen::Vector3d position = centre + offset * centre.normalized();
+        const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
+          const Detection& other =
+              p.left_detection >= 0 ? left[p.left_detection] : right[p.right_detection];
+          return other.type == detection.type && (p.left_camera_position_m - position).norm() <
+                                                     options.single_view_min_separation_m;
+        });
+        if (near_another) continue;
+        // The covariance the pixel noise gives a pair at that point: the detection's reference
+        // point and the centre's projection into the other image.
+        const Eigen::Vector3d centre_in_right = right_T_left * centre;
+        if (!(centre.z() > 0.0) || !(centre_in_right.z() > 0.0)) continue;
+        detail::IdealPixel left_point, right_point;
+        left_point.ideal_px = ideal_in(left_intrinsics, centre);
+        right_point.ideal_px = ideal_in(right_intrinsics, centre_in_right);
+        if (image == 0) left_point = left_ideal[d];
+        if (image == 1) right_point = right_ideal[d];
+        const std::optional<detail::Triangulation> triangulation =
+            triangulator.triangulate(left_point, right_point, options.pixel_sigma_px, offset);
+        if (!triangulation) continue;
+        StereoPercept percept;
+        (image == 0 ? percept.left_detection : percept.right_detection) = static_cast<int>(d);
+        percept.left_camera_position_m = position;
+        percept.left_camera_covariance_m2 = triangulation->left_camera_covariance_m2;
+        percept.left_px = image == 0 ? detection.reference_px
+                                     : detail::distort(left_point.ideal_px, left_intrinsics);
+        percept.right_px = image == 1 ? detection.reference_px
+                                      : detail::distort(right_point.ideal_px, right_intrinsics);
+        // One image's evidence: the detection's confidence, scaled by its sides' agreement
+        // with the other image.
+        percept.confidence =
+            static_cast<float>(std::clamp(static_cast<double>(detection.confidence), 0.0, 1.0) *
+                               std::clamp(door->worst_side_correlation, 0.0, 1.0));
+        out.push_back(percept);
+      }
+    }
+  }
   return out;
 }
 

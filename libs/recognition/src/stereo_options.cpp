@@ -17,7 +17,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "max_orientation_difference_rad", "min_elongation_for_orientation",
                        "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m",
                        "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad", "bar_types",
-                       "min_side_correlation"});
+                       "min_side_correlation", "min_single_view_correlation",
+                       "single_view_min_peak_margin", "single_view_min_separation_m",
+                       "single_view_max_bars_inside"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -43,6 +45,20 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   }
   if (const auto v = section.find("min_side_correlation")) {
     out.min_side_correlation = v->as_double_in(0.0, 1.0);
+  }
+  if (const auto v = section.find("min_single_view_correlation")) {
+    out.min_single_view_correlation = v->as_double_in(0.0, 1.0);
+  }
+  if (const auto v = section.find("single_view_min_peak_margin")) {
+    out.single_view_min_peak_margin = v->as_double_in(0.0, 2.0);
+  }
+  if (const auto v = section.find("single_view_min_separation_m")) {
+    out.single_view_min_separation_m = v->as_double_in(0.0, 10.0);
+  }
+  if (const auto v = section.find("single_view_max_bars_inside")) {
+    const std::int64_t bars = v->as_int();
+    if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
+    out.single_view_max_bars_inside = static_cast<int>(bars);
   }
   if (const auto v = section.find("max_side_tilt_rad")) {
     out.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2: sin() still grows

@@ -175,6 +175,32 @@ TEST_F(SideCorrelationTest, TheOuterEdgeIsNotTakenForTheGroove) {
   EXPECT_NEAR(depth->horizontal_distance_m, truth_m, 0.005 * truth_m);
 }
 
+TEST_F(SideCorrelationTest, ARepeatedEdgeShowsAsASecondPeak) {
+  // Over the whole depth range a door's side has one clear peak (SideDepth::second_correlation
+  // well below it); vertical stripes every 40 px, the same in both images, match at every
+  // multiple of the period: two peaks of one height.
+  const detail::SideCorrelator correlator(left_grey_, right_grey_, calibration_.left,
+                                          calibration_.right, left_T_right_, up());
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const auto door = correlator.correlate(left_px(c[1]), left_px(c[2]), 1.3, 1e4, 0.3, 6.0);
+  ASSERT_TRUE(door.has_value());
+  EXPECT_NEAR(door->horizontal_distance_m, correlator.horizontal_distance(c[1]), 0.02);
+  EXPECT_LT(door->second_correlation, door->correlation - 0.2);
+
+  cv::Mat stripes(calibration_.left.height_px, calibration_.left.width_px, CV_8UC1);
+  for (int v = 0; v < stripes.rows; ++v) {
+    for (int u = 0; u < stripes.cols; ++u) {
+      stripes.at<unsigned char>(v, u) = (u / 20) % 2 == 0 ? 60 : 180;
+    }
+  }
+  const detail::SideCorrelator repeated(stripes, stripes, calibration_.left, calibration_.right,
+                                        left_T_right_, Eigen::Vector3d(0.0, -1.0, 0.0));
+  const auto edge = repeated.correlate({400.0, 100.0}, {400.0, 300.0}, 1.3, 1e4, 0.3, 6.0);
+  ASSERT_TRUE(edge.has_value());
+  EXPECT_GT(edge->correlation, 0.9);
+  EXPECT_GT(edge->second_correlation, edge->correlation - 0.05);
+}
+
 TEST_F(SideCorrelationTest, NothingToCorrelateOnAFlatWindowOrAShortSide) {
   const cv::Mat flat(calibration_.left.height_px, calibration_.left.width_px, CV_8UC1,
                      cv::Scalar(128));
@@ -261,6 +287,71 @@ TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsSweptFromTheOther) {
     ASSERT_EQ(trace.size(), 1u);
     EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
   }
+}
+
+// A door whose outline is whole in one image only (the other image's blob merged with a
+// neighbour, so no detection there) is placed from that image alone: both sides swept into the
+// other image over the whole depth range (StereoMatchOptions::min_single_view_correlation).
+TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const Detection left =
+      door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
+  const Detection right =
+      door_detection({right_px(c[0]), right_px(c[1]), right_px(c[2]), right_px(c[3])});
+  StereoMatchOptions options;
+  options.max_side_tilt_rad = 0.03;
+  options.max_edge_slope_rad = 0.3;
+  options.min_side_correlation = 0.7;
+  options.min_single_view_correlation = 0.7;
+  options.height_range_m = {{"door", 0.5, 2.5}};
+  options.bar_types = {"handle"};
+  const StereoImages images{&left_grey_, &right_grey_};
+  const auto match = [&](const std::vector<Detection>& l, const std::vector<Detection>& r,
+                         const StereoImages& with) {
+    return match_and_triangulate(l, r, calibration_.left, calibration_.right, left_T_right_,
+                                 options, up(), nullptr, with);
+  };
+  for (const bool in_left : {true, false}) {
+    SCOPED_TRACE(in_left ? "seen in the left image" : "seen in the right image");
+    const std::vector<Detection> seen{in_left ? left : right};
+    const std::vector<Detection>& l = in_left ? seen : std::vector<Detection>{};
+    const std::vector<Detection>& r = in_left ? std::vector<Detection>{} : seen;
+    const auto percepts = match(l, r, images);
+    ASSERT_EQ(percepts.size(), 1u);
+    EXPECT_EQ(percepts[0].left_detection, in_left ? 0 : -1);
+    EXPECT_EQ(percepts[0].right_detection, in_left ? -1 : 0);
+    EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
+    // Both pixels: the detection's, and the centre's projection into the other image.
+    const Eigen::Vector3d& found = percepts[0].left_camera_position_m;
+    EXPECT_LT(((in_left ? percepts[0].right_px : percepts[0].left_px) -
+               (in_left ? right_px(found) : left_px(found)))
+                  .norm(),
+              1e-6);
+    EXPECT_EQ(in_left ? percepts[0].left_px : percepts[0].right_px, seen[0].reference_px);
+    EXPECT_GT(percepts[0].left_camera_covariance_m2.trace(), 0.0);
+    EXPECT_GT(percepts[0].confidence, 0.0f);
+    EXPECT_LE(percepts[0].confidence, left.confidence);
+    // The other image shows only the wall: nothing to place the sides by.
+    const cv::Mat wall(right_grey_.size(), CV_8UC1, cv::Scalar(190));
+    EXPECT_TRUE(
+        match(l, r, in_left ? StereoImages{&left_grey_, &wall} : StereoImages{&wall, &right_grey_})
+            .empty());
+  }
+  // Two handles inside the outline: a stack of fronts or two doors merged, not one door.
+  Detection handle;
+  handle.type = "handle";
+  handle.reference_px = left_px(door_.centre_m);
+  EXPECT_EQ(match({left, handle}, {}, images).size(), 1u);
+  EXPECT_TRUE(match({left, handle, handle}, {}, images).empty());
+  // A weak detection never makes a percept alone.
+  Detection weak = left;
+  weak.needs_partner = true;
+  EXPECT_TRUE(match({weak}, {}, images).empty());
+  // A second outline of a door that a pair already placed adds no percept.
+  EXPECT_EQ(match({left, left}, {right}, images).size(), 1u);
+  // Off (0): no pair, no percept.
+  options.min_single_view_correlation = 0.0;
+  EXPECT_TRUE(match({left}, {}, images).empty());
 }
 
 TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {

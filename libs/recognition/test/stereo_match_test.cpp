@@ -471,6 +471,10 @@ stereo:
   max_edge_slope_rad: 0.3
   bar_types: [handle]
   min_side_correlation: 0.7
+  min_single_view_correlation: 0.75
+  single_view_min_peak_margin: 0.15
+  single_view_min_separation_m: 0.25
+  single_view_max_bars_inside: 2
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -496,6 +500,10 @@ stereo:
   EXPECT_EQ(o.max_edge_slope_rad, 0.3);
   EXPECT_EQ(o.bar_types, std::vector<std::string>{"handle"});
   EXPECT_EQ(o.min_side_correlation, 0.7);
+  EXPECT_EQ(o.min_single_view_correlation, 0.75);
+  EXPECT_EQ(o.single_view_min_peak_margin, 0.15);
+  EXPECT_EQ(o.single_view_min_separation_m, 0.25);
+  EXPECT_EQ(o.single_view_max_bars_inside, 2);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -535,6 +543,15 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       << stereo_error("  bar_types: handle\n");
   EXPECT_NE(stereo_error("  bar_types: [[handle]]\n").find("bar_types[0]"), std::string::npos)
       << stereo_error("  bar_types: [[handle]]\n");
+  EXPECT_NE(stereo_error("  min_single_view_correlation: 1.5\n")
+                .find("s.yaml:2: stereo.min_single_view_correlation"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  single_view_max_bars_inside: 1.5\n")
+                .find("s.yaml:2: stereo.single_view_max_bars_inside"),
+            std::string::npos)
+      << stereo_error("  single_view_max_bars_inside: 1.5\n");
+  EXPECT_NE(stereo_error("  single_view_max_bars_inside: -1\n").find("[0, 100]"),
+            std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;

@@ -35,7 +35,9 @@ struct FramePercept {
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();  // reference point, raw right image
   // 0 .. 1: sqrt(c_left c_right) of the two detections (stereo_match.hpp says why).
   float confidence = 0.0f;
-  int left_detection = -1;  // indices into FrameResult::left_detections / right_detections
+  // Indices into FrameResult::left_detections / right_detections; -1 in the image a single-view
+  // door has no detection in (StereoMatchOptions::min_single_view_correlation).
+  int left_detection = -1;
   int right_detection = -1;
 };
 

@@ -93,6 +93,23 @@ struct StereoMatchOptions {
   // this much. Needs the images (match_and_triangulate's `images`) and the up direction; 0 turns
   // it off.
   double min_side_correlation = 0.0;
+  // Rectangle outlines (doors) that no pair took, placed from their own image alone: a door
+  // whose outline is clean in one image is often merged with a neighbour, or a little off the
+  // class model, in the other, and then has no partner. Both vertical sides of the outline are
+  // swept into the other image over the whole depth range (side_correlation.hpp); the outline
+  // makes a percept when both sides score at least this, each side's best score beats its
+  // second-best distinct peak by single_view_min_peak_margin (a run of equal doors repeats every
+  // edge), the outline's sides are vertical in 3D (max_side_tilt_rad), its top and bottom edges
+  // level (max_edge_slope_rad), its height and depth within their ranges, at most
+  // single_view_max_bars_inside detections of a bar type (handles) lie inside the outline (a door
+  // carries one handle; a stack of drawer fronts, or two doors, merged into one door-shaped blob
+  // carry several), and no percept of its type lies within single_view_min_separation_m of it.
+  // Its covariance is the one the pixel noise gives a pair at that point. Needs
+  // min_side_correlation's images and the up direction; 0 turns it off.
+  double min_single_view_correlation = 0.0;
+  double single_view_min_peak_margin = 0.1;
+  double single_view_min_separation_m = 0.2;
+  int single_view_max_bars_inside = 1;
 };
 
 // The frame's grey images (CV_8UC1, raw pixels, the intrinsics' size), for the gates that look
@@ -111,8 +128,15 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section);
 
 // A matched, triangulated pair.
 struct StereoPercept {
+  // Indices into the left and right detections; -1 for the image a single-view percept
+  // (StereoMatchOptions::min_single_view_correlation) has no detection in.
   int left_detection = -1;
   int right_detection = -1;
+  // The reference point in each raw image, pixels: the detections' (their outlines' centres
+  // for rectangles), or for a single-view percept the projection of its point into the image
+  // without a detection.
+  Eigen::Vector2d left_px = Eigen::Vector2d::Zero();
+  Eigen::Vector2d right_px = Eigen::Vector2d::Zero();
   Eigen::Vector3d left_camera_position_m = Eigen::Vector3d::Zero();
   Eigen::Matrix3d left_camera_covariance_m2 = Eigen::Matrix3d::Zero();
   float confidence = 0.0f;

@@ -1,0 +1,65 @@
+#include "single_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "triangulation.hpp"
+
+namespace vsl::recognition::detail {
+
+std::optional<SingleViewDoor> place_single_view_door(
+    const std::array<Eigen::Vector2d, 4>& corners, const SideCorrelator& sweep,
+    const head::CameraIntrinsics& own, const Eigen::Vector3d& up, const StereoMatchOptions& options,
+    const StereoMatchOptions::ExtentRange* height_range) {
+  if (!(up.norm() > 0.0)) return std::nullopt;
+  Eigen::Matrix3d k;
+  k << own.fx_px, 0.0, own.cx_px, 0.0, own.fy_px, own.cy_px, 0.0, 0.0, 1.0;
+  const Eigen::Matrix3d k_inverse = k.inverse();
+  const auto sides = Triangulator::vertical_sides(corners);
+  // The whole depth range: every pixel of motion from max_depth_m to min_depth_m.
+  const double initial_m = std::sqrt(options.min_depth_m * options.max_depth_m);
+  constexpr double kWholeRangePx = 1e4;
+  std::array<Eigen::Vector3d, 4> ends;
+  SingleViewDoor out;
+  out.worst_side_correlation = 1.0;
+  for (int s = 0; s < 2; ++s) {
+    const auto [i, j] = sides[static_cast<std::size_t>(s)];
+    // A vertical 3D line and the camera centre span a plane that holds `up`: |n . up| / |n| is
+    // the sine of the side's tilt from vertical (as Triangulator::side_tilts).
+    if (options.max_side_tilt_rad > 0.0) {
+      const Eigen::Vector3d n =
+          (k_inverse * corners[i].homogeneous()).cross(k_inverse * corners[j].homogeneous());
+      if (!(n.norm() > 0.0) ||
+          std::abs(n.dot(up)) / (n.norm() * up.norm()) > std::sin(options.max_side_tilt_rad)) {
+        return std::nullopt;
+      }
+    }
+    const auto depth = sweep.correlate(corners[i], corners[j], initial_m, kWholeRangePx,
+                                       options.min_depth_m, options.max_depth_m);
+    if (!depth || depth->correlation < options.min_single_view_correlation ||
+        depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
+      return std::nullopt;
+    }
+    const auto top = sweep.point_at(corners[i], depth->horizontal_distance_m);
+    const auto bottom = sweep.point_at(corners[j], depth->horizontal_distance_m);
+    if (!top || !bottom) return std::nullopt;
+    ends[static_cast<std::size_t>(2 * s)] = *top;
+    ends[static_cast<std::size_t>(2 * s + 1)] = *bottom;
+    out.worst_side_correlation = std::min(out.worst_side_correlation, depth->correlation);
+  }
+  if (options.max_edge_slope_rad > 0.0) {
+    const std::optional<double> slope = Triangulator::edge_slope(ends, up);
+    if (!slope || std::atan(*slope) > options.max_edge_slope_rad) return std::nullopt;
+  }
+  if (height_range) {
+    const double height_m = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
+    if (height_m < height_range->min_m || height_m > height_range->max_m) return std::nullopt;
+  }
+  out.centre_m = Triangulator::rectangle_centre(ends);
+  if (out.centre_m.z() < options.min_depth_m || out.centre_m.z() > options.max_depth_m) {
+    return std::nullopt;
+  }
+  return out;
+}
+
+}  // namespace vsl::recognition::detail
