@@ -2,12 +2,15 @@
 // (a grid of handles 1.5 to 4 m away, seeded pixel noise, the right list shuffled), on the
 // simulated head's calibration. BM_SideCorrelation: one door side placed by correlation along
 // the epipolar lines (side_correlation.hpp), a 200 px side searched over +-41 px (a door 140 px
-// wide), twice per door pair. No main here: the fragments share vsl_recognition_bench's.
+// wide), twice per door pair. BM_SingleViewDoor: a door outline placed from its own image alone
+// (single_view.hpp), both sides swept over the whole depth range. No main here: the fragments share
+// vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -15,6 +18,7 @@
 #include <opencv2/core.hpp>
 
 #include "../src/side_correlation.hpp"
+#include "../src/single_view.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -84,6 +88,35 @@ void BM_SideCorrelation(benchmark::State& state) {
   state.counters["distance_m"] = distance_m;
 }
 BENCHMARK(BM_SideCorrelation)->Unit(benchmark::kMicrosecond);
+
+void BM_SingleViewDoor(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  // A dark door 140 px wide and 200 px tall 2 m ahead on a bright wall: 25 px of disparity.
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
+  left(cv::Rect(160, 140, 140, 200)).setTo(70);
+  right(cv::Rect(135, 140, 140, 200)).setTo(70);
+  const Eigen::Vector3d up(0.0, -1.0, 0.0);
+  const detail::SideCorrelator correlator(left, right, calibration.left, calibration.right,
+                                          left_T_right, up);
+  StereoMatchOptions options;
+  options.min_single_view_correlation = 0.7;
+  options.max_side_tilt_rad = 0.03;
+  options.max_edge_slope_rad = 0.3;
+  const std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d(160, 140), Eigen::Vector2d(300, 140),
+                                               Eigen::Vector2d(300, 340),
+                                               Eigen::Vector2d(160, 340)};
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const auto door =
+        detail::place_single_view_door(corners, correlator, calibration.left, up, options, nullptr);
+    depth_m = door ? door->centre_m.z() : 0.0;
+    benchmark::DoNotOptimize(depth_m);
+  }
+  state.counters["depth_m"] = depth_m;
+}
+BENCHMARK(BM_SingleViewDoor)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition
