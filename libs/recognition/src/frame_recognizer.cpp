@@ -70,8 +70,8 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
   }
   const Clock::time_point classified = Clock::now();
 
-  // Grey images only for the gates that look at them (door sides correlated), and only when
-  // both images have an outline to correlate.
+  // Grey images only for the gates that look at them (door sides correlated, single-view
+  // doors), and only when an image has an outline to correlate.
   cv::Mat left_grey, right_grey;
   StereoImages images;
   const auto has_outline = [](const std::vector<Detection>& detections) {

@@ -182,13 +182,21 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
   SideDepth out;
   out.horizontal_distance_m = 1.0 / (lambda_min + (k + offset) * step);
   out.correlation = *best;
+  // The second peak: the best local maximum outside the main peak's lobe (the steps over which
+  // the scores fall monotonically from it) and at least kDistinctPeakSteps away. Steps where the
+  // window left the image are no neighbours: a maximum at the edge of the image still counts.
+  const auto score = [&](int i) { return scores[static_cast<std::size_t>(i)]; };
+  const auto valid = [&](int i) { return i >= 0 && i < steps && score(i) > -1.5; };
+  int lobe_begin = k, lobe_end = k;
+  while (valid(lobe_begin - 1) && score(lobe_begin - 1) <= score(lobe_begin)) --lobe_begin;
+  while (valid(lobe_end + 1) && score(lobe_end + 1) <= score(lobe_end)) ++lobe_end;
   for (int i = 0; i < steps; ++i) {
-    const double v = scores[static_cast<std::size_t>(i)];
-    const bool local_maximum = (i == 0 || v >= scores[static_cast<std::size_t>(i - 1)]) &&
-                               (i + 1 == steps || v >= scores[static_cast<std::size_t>(i + 1)]);
-    if (std::abs(i - k) >= kDistinctPeakSteps && local_maximum && v > out.second_correlation) {
-      out.second_correlation = v;
+    if (!valid(i) || (i >= lobe_begin && i <= lobe_end) || std::abs(i - k) < kDistinctPeakSteps) {
+      continue;
     }
+    const bool local_maximum =
+        (!valid(i - 1) || score(i) >= score(i - 1)) && (!valid(i + 1) || score(i) >= score(i + 1));
+    if (local_maximum) out.second_correlation = std::max(out.second_correlation, score(i));
   }
   return out;
 }

@@ -53,11 +53,14 @@ class SideCorrelator {
                  const Eigen::Isometry3d& left_T_right, const Eigen::Vector3d& up_in_left_camera);
 
   struct SideDepth {
-    double horizontal_distance_m = 0.0;  // D, of the vertical side from the left camera centre
-    double correlation = 0.0;            // normalized cross-correlation at D, in [-1, 1]
-    // The best score at another local maximum of the sweep, at least 3 steps (pixels of image
-    // motion) from the peak; -1 when there is none. A repeated structure (a run of equal doors)
-    // shows as a second peak almost as high as the first.
+    // D, of the vertical side from the camera centre of the image swept from (the left one,
+    // or the right one for the reverse sweep).
+    double horizontal_distance_m = 0.0;
+    double correlation = 0.0;  // normalized cross-correlation at D, in [-1, 1]
+    // The best score at another local maximum of the sweep, outside the peak's lobe (where the
+    // scores fall monotonically from it) and at least 3 steps (pixels of image motion) from it;
+    // -1 when there is none. A repeated structure (a run of equal doors) shows as a second peak
+    // almost as high as the first.
     double second_correlation = -1.0;
   };
   // The side from left ideal pixel `a` to `b`, searched within `search_px` pixels of image motion

@@ -56,9 +56,6 @@ std::optional<SingleViewDoor> place_single_view_door(
     if (height_m < height_range->min_m || height_m > height_range->max_m) return std::nullopt;
   }
   out.centre_m = Triangulator::rectangle_centre(ends);
-  if (out.centre_m.z() < options.min_depth_m || out.centre_m.z() > options.max_depth_m) {
-    return std::nullopt;
-  }
   return out;
 }
 

@@ -3,7 +3,8 @@
 // little off the class model, so that no pair was made. The outline's two vertical sides are
 // swept into the other image over the whole depth range (side_correlation.hpp), and the four
 // ends so placed must describe a door: vertical sides, level top and bottom edges, a door's
-// height, a depth in range. Internal to vsl_recognition.
+// height (the caller tests the depth range, along the left optical axis). Internal to
+// vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

@@ -469,8 +469,34 @@ std::vector<StereoPercept> match_and_triangulate(
     }
   }
 
-  std::vector<detail::Candidate> assigned =
-      detail::assign(candidates, static_cast<int>(left.size()), static_cast<int>(right.size()));
+  // Pairs of two clear detections first; a weak detection (Detection::needs_partner) then takes
+  // only a partner left over, so that it never draws a clear detection into a worse pair (the
+  // assignment maximizes the number of pairs before their cost).
+  const auto is_weak_pair = [&](const detail::Candidate& c) {
+    return left[c.left].needs_partner || right[c.right].needs_partner;
+  };
+  std::vector<detail::Candidate> clear, weak;
+  for (const detail::Candidate& c : candidates) (is_weak_pair(c) ? weak : clear).push_back(c);
+  const int left_count = static_cast<int>(left.size());
+  const int right_count = static_cast<int>(right.size());
+  std::vector<detail::Candidate> assigned = detail::assign(clear, left_count, right_count);
+  if (!weak.empty()) {
+    std::vector<char> left_taken(left.size(), 0), right_taken(right.size(), 0);
+    for (const detail::Candidate& c : assigned) {
+      left_taken[static_cast<std::size_t>(c.left)] = 1;
+      right_taken[static_cast<std::size_t>(c.right)] = 1;
+    }
+    std::erase_if(weak, [&](const detail::Candidate& c) {
+      return left_taken[static_cast<std::size_t>(c.left)] ||
+             right_taken[static_cast<std::size_t>(c.right)];
+    });
+    for (detail::Candidate& c : detail::assign(weak, left_count, right_count)) {
+      assigned.push_back(std::move(c));
+    }
+    std::sort(
+        assigned.begin(), assigned.end(),
+        [](const detail::Candidate& a, const detail::Candidate& b) { return a.left < b.left; });
+  }
   detail::uncross(assigned, candidates, left, left_ideal, right_ideal);
   std::vector<StereoPercept> out;
   for (const detail::Candidate& c : assigned) {
@@ -521,6 +547,8 @@ std::vector<StereoPercept> match_and_triangulate(
             options, height_range(options, detection.type));
         if (!door) continue;
         const Eigen::Vector3d centre = image == 0 ? door->centre_m : left_T_right * door->centre_m;
+        // Disparity range, as depth along the left optical axis (as for pairs).
+        if (centre.z() < options.min_depth_m || centre.z() > options.max_depth_m) continue;
         const double offset = reference_depth_offset(options, detection.type);
         const Eigen::Vector3d position = centre + offset * centre.normalized();
         const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
@@ -530,15 +558,15 @@ std::vector<StereoPercept> match_and_triangulate(
                                                      options.single_view_min_separation_m;
         });
         if (near_another) continue;
-        // The covariance the pixel noise gives a pair at that point: the detection's reference
-        // point and the centre's projection into the other image.
+        // The covariance the pixel noise gives a pair at that point: the centre's projections
+        // into both images, with the lens Jacobian of the detection's own image.
         const Eigen::Vector3d centre_in_right = right_T_left * centre;
         if (!(centre.z() > 0.0) || !(centre_in_right.z() > 0.0)) continue;
         detail::IdealPixel left_point, right_point;
-        left_point.ideal_px = ideal_in(left_intrinsics, centre);
-        right_point.ideal_px = ideal_in(right_intrinsics, centre_in_right);
         if (image == 0) left_point = left_ideal[d];
         if (image == 1) right_point = right_ideal[d];
+        left_point.ideal_px = ideal_in(left_intrinsics, centre);
+        right_point.ideal_px = ideal_in(right_intrinsics, centre_in_right);
         const std::optional<detail::Triangulation> triangulation =
             triangulator.triangulate(left_point, right_point, options.pixel_sigma_px, offset);
         if (!triangulation) continue;

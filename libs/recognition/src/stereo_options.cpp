@@ -48,6 +48,10 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   }
   if (const auto v = section.find("min_single_view_correlation")) {
     out.min_single_view_correlation = v->as_double_in(0.0, 1.0);
+    // The single view sweeps with the side correlation's correlator and images.
+    if (out.min_single_view_correlation > 0.0 && !(out.min_side_correlation > 0.0)) {
+      v->fail("needs min_side_correlation > 0 (the side correlation it sweeps with)");
+    }
   }
   if (const auto v = section.find("single_view_min_peak_margin")) {
     out.single_view_min_peak_margin = v->as_double_in(0.0, 2.0);

@@ -130,6 +130,10 @@ struct PerceptErrors {
 PerceptErrors errors(const StereoViews& views, const StereoView& view, const FrameResult& result) {
   PerceptErrors out;
   for (const FramePercept& p : result.percepts) {
+    // These options make pairs only (no single-view doors, stereo_match.hpp).
+    EXPECT_GE(p.left_detection, 0);
+    EXPECT_GE(p.right_detection, 0);
+    if (p.left_detection < 0 || p.right_detection < 0) continue;
     const Detection& l = result.left_detections[p.left_detection];
     const Detection& r = result.right_detections[p.right_detection];
     const int object = majority_object(result.left_blobs[l.blob_index], view.left.object_ids);
@@ -203,6 +207,8 @@ TEST(FrameRecognizerTest, OraclePerceptsLandOnTheWorldObjects) {
     EXPECT_GE(result.stereo_ms, 0.0);
     for (const FramePercept& p : result.percepts) {
       EXPECT_GT(p.ego_covariance_m2.determinant(), 0.0);
+      ASSERT_GE(p.left_detection, 0);
+      ASSERT_GE(p.right_detection, 0);
       EXPECT_EQ(p.left_px, result.left_detections[p.left_detection].reference_px);
       EXPECT_EQ(p.right_px, result.right_detections[p.right_detection].reference_px);
       EXPECT_EQ(p.type, result.left_detections[p.left_detection].type);

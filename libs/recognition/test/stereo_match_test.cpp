@@ -446,6 +446,22 @@ TEST_F(StereoMatchTest, AWeakDetectionNeedsAClearPartner) {
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kWeakPair);
   EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "weak_pair");
+
+  // A weak detection takes only a partner that the clear pairs left: the most pairs would be
+  // {weak - R1, L1 - R2}, which draws L1 away from its own view R1.
+  p.left.needs_partner = false;
+  p.right.needs_partner = false;
+  Detection r2 = p.right;  // on the same row, nearer, larger: admissible for L1 at a higher cost
+  r2.reference_px.x() -= 30.0;
+  r2.area_px *= 1.4;
+  Detection weak = p.left;  // admissible with R1 only (its area ratio to R2 is 2.1)
+  weak.reference_px.x() += 10.0;
+  weak.area_px /= 1.5;
+  weak.needs_partner = true;
+  const auto percepts = match({p.left, weak}, {p.right, r2});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_EQ(percepts[0].left_detection, 0);
+  EXPECT_EQ(percepts[0].right_detection, 0);
 }
 
 TEST_F(StereoMatchTest, EmptyInputs) {
@@ -551,6 +567,8 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
             std::string::npos)
       << stereo_error("  single_view_max_bars_inside: 1.5\n");
   EXPECT_NE(stereo_error("  single_view_max_bars_inside: -1\n").find("[0, 100]"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  min_single_view_correlation: 0.7\n").find("needs min_side_correlation"),
             std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {

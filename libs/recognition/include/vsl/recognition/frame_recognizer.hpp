@@ -33,7 +33,8 @@ struct FramePercept {
   Eigen::Matrix3d ego_covariance_m2 = Eigen::Matrix3d::Zero();
   Eigen::Vector2d left_px = Eigen::Vector2d::Zero();   // reference point, raw left image
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();  // reference point, raw right image
-  // 0 .. 1: sqrt(c_left c_right) of the two detections (stereo_match.hpp says why).
+  // 0 .. 1: sqrt(c_left c_right) of the two detections (stereo_match.hpp says why); for a
+  // single-view door, its detection's confidence times its lower side score.
   float confidence = 0.0f;
   // Indices into FrameResult::left_detections / right_detections; -1 in the image a single-view
   // door has no detection in (StereoMatchOptions::min_single_view_correlation).

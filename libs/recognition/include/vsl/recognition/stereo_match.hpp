@@ -104,8 +104,11 @@ struct StereoMatchOptions {
   // single_view_max_bars_inside detections of a bar type (handles) lie inside the outline (a door
   // carries one handle; a stack of drawer fronts, or two doors, merged into one door-shaped blob
   // carry several), and no percept of its type lies within single_view_min_separation_m of it.
-  // Its covariance is the one the pixel noise gives a pair at that point. Needs
-  // min_side_correlation's images and the up direction; 0 turns it off.
+  // Its covariance is the one the pixel noise gives a pair at that point. The class's
+  // major_extent_range_m is not tested (a door's width is no class property; none is
+  // configured). Needs min_side_correlation > 0 (its correlator and images;
+  // stereo_match_options_from refuses the option without it) and the up direction; 0 turns it
+  // off.
   double min_single_view_correlation = 0.0;
   double single_view_min_peak_margin = 0.1;
   double single_view_min_separation_m = 0.2;
@@ -113,8 +116,8 @@ struct StereoMatchOptions {
 };
 
 // The frame's grey images (CV_8UC1, raw pixels, the intrinsics' size), for the gates that look
-// at the images themselves (StereoMatchOptions::min_side_correlation); without them those are
-// off.
+// at the images themselves (StereoMatchOptions::min_side_correlation,
+// min_single_view_correlation); without them those are off.
 struct StereoImages {
   const cv::Mat* left_grey = nullptr;
   const cv::Mat* right_grey = nullptr;
@@ -126,7 +129,8 @@ struct StereoImages {
 // what".
 StereoMatchOptions stereo_match_options_from(const config::Node& section);
 
-// A matched, triangulated pair.
+// A matched, triangulated pair, or a door placed from one image
+// (StereoMatchOptions::min_single_view_correlation).
 struct StereoPercept {
   // Indices into the left and right detections; -1 for the image a single-view percept
   // (StereoMatchOptions::min_single_view_correlation) has no detection in.
@@ -142,8 +146,9 @@ struct StereoPercept {
   float confidence = 0.0f;
 };
 
-// The gates of match_and_triangulate, in the order they are tested (kTriangulation: the pair's
-// point cannot be triangulated, e.g. it is not in front of both cameras).
+// The gates of match_and_triangulate, in the order they are tested, kWeakPair first
+// (kTriangulation: the pair's point cannot be triangulated, e.g. it is not in front of both
+// cameras).
 enum class StereoGate {
   kNone,
   kEpipolar,
@@ -187,15 +192,17 @@ struct StereoPairTrace {
 // other). `left_T_right` is
 // the right camera's pose in the left camera frame at capture time (from the head kinematics, so
 // verging eyes are handled). Raw pixels are undistorted with each camera's intrinsics first.
-// Percepts come sorted by left detection. The confidence of a percept is the geometric mean of its
-// two detections' confidences, sqrt(c_l c_r): symmetric, in [0, 1], and on the scale of a single
-// detection's (two views of confidence c give c; the product would give c^2, penalizing every
-// stereo percept for having been seen twice).
+// The pairs come sorted by left detection, the single-view doors after them. The confidence of a
+// pair is the geometric mean of its two detections' confidences, sqrt(c_l c_r): symmetric, in
+// [0, 1], and on the scale of a single detection's (two views of confidence c give c; the product
+// would give c^2, penalizing every stereo percept for having been seen twice). A single-view
+// door's is its detection's confidence times its lower side score.
 //
 // `pair_trace`, when given, receives one entry per pair of detections of the same type: the first
 // gate that refused it, or none and whether the assignment kept it (a debug aid: where the
 // evaluation's ground-truth pairs were lost). `images`: the frame's grey images, for the door
-// sides' correlation (StereoMatchOptions::min_side_correlation); without them it is off.
+// sides' correlation (StereoMatchOptions::min_side_correlation) and the single-view doors;
+// without them both are off.
 std::vector<StereoPercept> match_and_triangulate(
     const std::vector<Detection>& left, const std::vector<Detection>& right,
     const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
