@@ -107,6 +107,14 @@ class SideCorrelationTest : public ::testing::Test {
     return d;
   }
 
+  // The door detections of outlines with these 3D corners, in the left and the right image.
+  Detection left_door(const std::array<Eigen::Vector3d, 4>& c) const {
+    return door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
+  }
+  Detection right_door(const std::array<Eigen::Vector3d, 4>& c) const {
+    return door_detection({right_px(c[0]), right_px(c[1]), right_px(c[2]), right_px(c[3])});
+  }
+
   head::StereoCalibration calibration_ = head::load_stereo_calibration("calib/armar3_sim.yaml");
   Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
   DoorScene door_;
@@ -215,10 +223,8 @@ TEST_F(SideCorrelationTest, NothingToCorrelateOnAFlatWindowOrAShortSide) {
 TEST_F(SideCorrelationTest, CrossMatchPlacesADoorWhoseRightOutlineLostAStile) {
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
   const std::array<Eigen::Vector3d, 4> lost = door_.corners(DoorScene::kStileM);
-  const Detection left =
-      door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
-  const Detection right_lost =
-      door_detection({right_px(lost[0]), right_px(lost[1]), right_px(lost[2]), right_px(lost[3])});
+  const Detection left = left_door(c);
+  const Detection right_lost = right_door(lost);
   StereoMatchOptions options;
   options.max_edge_slope_rad = 0.3;
   options.min_side_correlation = 0.7;
@@ -260,10 +266,8 @@ TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsSweptFromTheOther) {
     SCOPED_TRACE(tilted_in_left ? "tilted in the left outline" : "tilted in the right outline");
     const std::array<Eigen::Vector3d, 4>& l = tilted_in_left ? tilted : c;
     const std::array<Eigen::Vector3d, 4>& r = tilted_in_left ? c : tilted;
-    const Detection left =
-        door_detection({left_px(l[0]), left_px(l[1]), left_px(l[2]), left_px(l[3])});
-    const Detection right =
-        door_detection({right_px(r[0]), right_px(r[1]), right_px(r[2]), right_px(r[3])});
+    const Detection left = left_door(l);
+    const Detection right = right_door(r);
     std::vector<StereoPairTrace> trace;
     // The outlines alone: refused at the side gate.
     EXPECT_TRUE(match_and_triangulate({left}, {right}, calibration_.left, calibration_.right,
@@ -294,10 +298,8 @@ TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsSweptFromTheOther) {
 // other image over the whole depth range (StereoMatchOptions::min_single_view_correlation).
 TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
-  const Detection left =
-      door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
-  const Detection right =
-      door_detection({right_px(c[0]), right_px(c[1]), right_px(c[2]), right_px(c[3])});
+  const Detection left = left_door(c);
+  const Detection right = right_door(c);
   StereoMatchOptions options;
   options.max_side_tilt_rad = 0.03;
   options.max_edge_slope_rad = 0.3;
@@ -359,10 +361,8 @@ TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {
   // exact outlines give the door's centre.
   const cv::Mat wall(right_grey_.size(), CV_8UC1, cv::Scalar(190));
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
-  const Detection left =
-      door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
-  const Detection right =
-      door_detection({right_px(c[0]), right_px(c[1]), right_px(c[2]), right_px(c[3])});
+  const Detection left = left_door(c);
+  const Detection right = right_door(c);
   StereoMatchOptions options;
   options.max_edge_slope_rad = 0.3;
   options.min_side_correlation = 0.7;
