@@ -196,7 +196,10 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
     }
     const bool local_maximum =
         (!valid(i - 1) || score(i) >= score(i - 1)) && (!valid(i + 1) || score(i) >= score(i + 1));
-    if (local_maximum) out.second_correlation = std::max(out.second_correlation, score(i));
+    if (local_maximum && score(i) > out.second_correlation) {
+      out.second_correlation = score(i);
+      out.second_distance_m = 1.0 / (lambda_min + i * step);
+    }
   }
   return out;
 }

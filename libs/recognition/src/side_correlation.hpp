@@ -62,6 +62,7 @@ class SideCorrelator {
     // -1 when there is none. A repeated structure (a run of equal doors) shows as a second peak
     // almost as high as the first.
     double second_correlation = -1.0;
+    double second_distance_m = 0.0;  // D at that peak (not refined); 0 when there is none
   };
   // The side from left ideal pixel `a` to `b`, searched within `search_px` pixels of image motion
   // around `initial_distance_m` and within [min_distance_m, max_distance_m]. nullopt when the

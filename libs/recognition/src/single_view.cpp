@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "triangulation.hpp"
 
@@ -19,9 +20,10 @@ std::optional<SingleViewDoor> place_single_view_door(
   // The whole depth range: every pixel of motion from max_depth_m to min_depth_m.
   const double initial_m = std::sqrt(options.min_depth_m * options.max_depth_m);
   constexpr double kWholeRangePx = 1e4;
-  std::array<Eigen::Vector3d, 4> ends;
-  SingleViewDoor out;
-  out.worst_side_correlation = 1.0;
+  // Per side, its candidate distances D: the peak, and when the second peak is within the
+  // margin (a repeated edge), that one too.
+  std::array<std::vector<double>, 2> candidates_m;
+  std::array<double, 2> correlation{};
   for (int s = 0; s < 2; ++s) {
     const auto [i, j] = sides[static_cast<std::size_t>(s)];
     // A vertical 3D line and the camera centre span a plane that holds `up`: |n . up| / |n| is
@@ -36,25 +38,50 @@ std::optional<SingleViewDoor> place_single_view_door(
     }
     const auto depth = sweep.correlate(corners[i], corners[j], initial_m, kWholeRangePx,
                                        options.min_depth_m, options.max_depth_m);
-    if (!depth || depth->correlation < options.min_single_view_correlation ||
-        depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
-      return std::nullopt;
+    if (!depth || depth->correlation < options.min_single_view_correlation) return std::nullopt;
+    correlation[static_cast<std::size_t>(s)] = depth->correlation;
+    candidates_m[static_cast<std::size_t>(s)].push_back(depth->horizontal_distance_m);
+    if (depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
+      candidates_m[static_cast<std::size_t>(s)].push_back(depth->second_distance_m);
     }
-    const auto top = sweep.point_at(corners[i], depth->horizontal_distance_m);
-    const auto bottom = sweep.point_at(corners[j], depth->horizontal_distance_m);
-    if (!top || !bottom) return std::nullopt;
-    ends[static_cast<std::size_t>(2 * s)] = *top;
-    ends[static_cast<std::size_t>(2 * s + 1)] = *bottom;
-    out.worst_side_correlation = std::min(out.worst_side_correlation, depth->correlation);
   }
-  if (options.max_edge_slope_rad > 0.0) {
-    const std::optional<double> slope = Triangulator::edge_slope(ends, up);
-    if (!slope || std::atan(*slope) > options.max_edge_slope_rad) return std::nullopt;
+  // One side may be ambiguous: the door's shape (level edges, its height) must then single out
+  // one of its two peaks. Both ambiguous: refused.
+  if (candidates_m[0].size() > 1 && candidates_m[1].size() > 1) return std::nullopt;
+  const auto ends_at = [&](double d0, double d1) -> std::optional<std::array<Eigen::Vector3d, 4>> {
+    std::array<Eigen::Vector3d, 4> ends;
+    for (int s = 0; s < 2; ++s) {
+      const auto [i, j] = sides[static_cast<std::size_t>(s)];
+      const auto top = sweep.point_at(corners[i], s == 0 ? d0 : d1);
+      const auto bottom = sweep.point_at(corners[j], s == 0 ? d0 : d1);
+      if (!top || !bottom) return std::nullopt;
+      ends[static_cast<std::size_t>(2 * s)] = *top;
+      ends[static_cast<std::size_t>(2 * s + 1)] = *bottom;
+    }
+    if (options.max_edge_slope_rad > 0.0) {
+      const std::optional<double> slope = Triangulator::edge_slope(ends, up);
+      if (!slope || std::atan(*slope) > options.max_edge_slope_rad) return std::nullopt;
+    }
+    if (height_range) {
+      const double height_m = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
+      if (height_m < height_range->min_m || height_m > height_range->max_m) return std::nullopt;
+    }
+    return ends;
+  };
+  std::optional<std::array<Eigen::Vector3d, 4>> found;
+  int admissible = 0;
+  for (const double d0 : candidates_m[0]) {
+    for (const double d1 : candidates_m[1]) {
+      if (const auto ends = ends_at(d0, d1)) {
+        found = ends;
+        ++admissible;
+      }
+    }
   }
-  if (height_range) {
-    const double height_m = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
-    if (height_m < height_range->min_m || height_m > height_range->max_m) return std::nullopt;
-  }
+  if (admissible != 1) return std::nullopt;
+  const std::array<Eigen::Vector3d, 4>& ends = *found;
+  SingleViewDoor out;
+  out.worst_side_correlation = std::min(correlation[0], correlation[1]);
   out.centre_m = Triangulator::rectangle_centre(ends);
   return out;
 }

@@ -207,6 +207,11 @@ TEST_F(SideCorrelationTest, ARepeatedEdgeShowsAsASecondPeak) {
   ASSERT_TRUE(edge.has_value());
   EXPECT_GT(edge->correlation, 0.9);
   EXPECT_GT(edge->second_correlation, edge->correlation - 0.05);
+  // The second peak's distance is another period of the stripes: 40 px of disparity apart.
+  const double baseline_px_m = calibration_.left.fx_px * left_T_right_.translation().norm();
+  EXPECT_NEAR(std::abs(baseline_px_m / edge->second_distance_m -
+                       baseline_px_m / edge->horizontal_distance_m),
+              40.0, 1.5);
 }
 
 TEST_F(SideCorrelationTest, NothingToCorrelateOnAFlatWindowOrAShortSide) {
@@ -354,6 +359,37 @@ TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
   // Off (0): no pair, no percept.
   options.min_single_view_correlation = 0.0;
   EXPECT_TRUE(match({left}, {}, images).empty());
+}
+
+// One side matches twice in the other image (a copy of its edge 30 px nearer: the repeated edge
+// of a run of doors); the door's shape picks the peak: at the copy's depth the top and bottom
+// edges would slope.
+TEST_F(SideCorrelationTest, ASideThatMatchesTwiceIsPlacedByTheDoorsShape) {
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const Detection left = left_door(c);
+  // The band around the right side in the right image, copied 30 px to the left.
+  const Eigen::Vector2d top = right_px(c[1]), bottom = right_px(c[2]);
+  const cv::Rect band(static_cast<int>(std::min(top.x(), bottom.x())) - 6,
+                      static_cast<int>(top.y()) + 10,
+                      static_cast<int>(std::abs(top.x() - bottom.x())) + 12,
+                      static_cast<int>(bottom.y() - top.y()) - 20);
+  cv::Mat twice = right_grey_.clone();
+  right_grey_(band).copyTo(twice(band - cv::Point(30, 0)));
+  StereoMatchOptions options;
+  options.max_side_tilt_rad = 0.03;
+  options.max_edge_slope_rad = 0.3;
+  options.min_side_correlation = 0.7;
+  options.min_single_view_correlation = 0.7;
+  const detail::SideCorrelator correlator(left_grey_, twice, calibration_.left, calibration_.right,
+                                          left_T_right_, up());
+  const auto depth = correlator.correlate(left_px(c[1]), left_px(c[2]), 2.0, 1e4, 0.3, 6.0);
+  ASSERT_TRUE(depth.has_value());
+  EXPECT_LT(depth->correlation - depth->second_correlation, options.single_view_min_peak_margin);
+  const auto percepts =
+      match_and_triangulate({left}, {}, calibration_.left, calibration_.right, left_T_right_,
+                            options, up(), nullptr, StereoImages{&left_grey_, &twice});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
 }
 
 TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {
