@@ -86,4 +86,45 @@ std::optional<SingleViewDoor> place_single_view_door(
   return out;
 }
 
+std::optional<StereoPercept> single_view_percept(
+    const Detection& detection, int index, int image, const std::array<Eigen::Vector2d, 4>& corners,
+    const IdealPixel& reference_ideal, const SideCorrelator& sweep,
+    const Triangulator& triangulator, const StereoRig& rig, const StereoMatchOptions& options,
+    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m) {
+  const Eigen::Isometry3d right_T_left = rig.left_T_right.inverse();
+  const std::optional<SingleViewDoor> door = place_single_view_door(
+      corners, sweep, image == 0 ? rig.left : rig.right,
+      image == 0 ? rig.up_in_left_camera
+                 : Eigen::Vector3d(right_T_left.linear() * rig.up_in_left_camera),
+      options, height_range);
+  if (!door) return std::nullopt;
+  const Eigen::Vector3d centre = image == 0 ? door->centre_m : rig.left_T_right * door->centre_m;
+  // Disparity range, as depth along the left optical axis (as for pairs).
+  if (centre.z() < options.min_depth_m || centre.z() > options.max_depth_m) return std::nullopt;
+  const Eigen::Vector3d centre_in_right = right_T_left * centre;
+  if (!(centre_in_right.z() > 0.0)) return std::nullopt;
+  const auto ideal_in = [](const head::CameraIntrinsics& k, const Eigen::Vector3d& p) {
+    return Eigen::Vector2d(k.fx_px * p.x() / p.z() + k.cx_px, k.fy_px * p.y() / p.z() + k.cy_px);
+  };
+  IdealPixel left_point, right_point;
+  (image == 0 ? left_point : right_point) = reference_ideal;
+  left_point.ideal_px = ideal_in(rig.left, centre);
+  right_point.ideal_px = ideal_in(rig.right, centre_in_right);
+  const std::optional<Triangulation> triangulation =
+      triangulator.triangulate(left_point, right_point, options.pixel_sigma_px, reference_offset_m);
+  if (!triangulation) return std::nullopt;
+  StereoPercept percept;
+  (image == 0 ? percept.left_detection : percept.right_detection) = index;
+  percept.left_camera_position_m = centre + reference_offset_m * centre.normalized();
+  percept.left_camera_covariance_m2 = triangulation->left_camera_covariance_m2;
+  percept.left_px = image == 0 ? detection.reference_px : distort(left_point.ideal_px, rig.left);
+  percept.right_px = image == 1 ? detection.reference_px : distort(right_point.ideal_px, rig.right);
+  // One image's evidence: the detection's confidence, scaled by its sides' agreement with the
+  // other image.
+  percept.confidence =
+      static_cast<float>(std::clamp(static_cast<double>(detection.confidence), 0.0, 1.0) *
+                         std::clamp(door->worst_side_correlation, 0.0, 1.0));
+  return percept;
+}
+
 }  // namespace vsl::recognition::detail

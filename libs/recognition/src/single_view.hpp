@@ -12,7 +12,11 @@
 #include <array>
 #include <optional>
 
+#include <Eigen/Geometry>
+
+#include "epipolar.hpp"
 #include "side_correlation.hpp"
+#include "triangulation.hpp"
 #include "vsl/head/camera_intrinsics.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -30,5 +34,28 @@ std::optional<SingleViewDoor> place_single_view_door(
     const std::array<Eigen::Vector2d, 4>& corners_ideal_px, const SideCorrelator& sweep,
     const head::CameraIntrinsics& own, const Eigen::Vector3d& up_in_own_camera,
     const StereoMatchOptions& options, const StereoMatchOptions::ExtentRange* height_range);
+
+// The cameras of one stereo frame (left camera frame; `up` from the head kinematics).
+struct StereoRig {
+  const head::CameraIntrinsics& left;
+  const head::CameraIntrinsics& right;
+  Eigen::Isometry3d left_T_right;
+  Eigen::Vector3d up_in_left_camera;
+};
+
+// The percept of an unpaired door detection (`index` into its image's detections) of image
+// `image` (0 left, 1 right), placed from that image alone by `sweep` (built over that image and
+// the other one) with place_single_view_door: its centre in the left camera frame within the
+// depth range, `reference_offset_m` behind the surface along the ray, the covariance the pixel
+// noise gives a pair at that point (the centre's projections into both images, with the lens
+// Jacobian of `reference_ideal`, the detection's own reference point), the other image's pixel
+// the centre's projection, and the confidence the detection's times its lower side score.
+// nullopt when the door is not placed.
+std::optional<StereoPercept> single_view_percept(
+    const Detection& detection, int index, int image,
+    const std::array<Eigen::Vector2d, 4>& corners_ideal_px, const IdealPixel& reference_ideal,
+    const SideCorrelator& sweep, const Triangulator& triangulator, const StereoRig& rig,
+    const StereoMatchOptions& options, const StereoMatchOptions::ExtentRange* height_range,
+    double reference_offset_m);
 
 }  // namespace vsl::recognition::detail

@@ -524,11 +524,7 @@ std::vector<StereoPercept> match_and_triangulate(
       left_paired[static_cast<std::size_t>(c.left)] = 1;
       right_paired[static_cast<std::size_t>(c.right)] = 1;
     }
-    const Eigen::Isometry3d right_T_left = left_T_right.inverse();
-    // The ideal pixel of a left-camera point in either image.
-    const auto ideal_in = [](const head::CameraIntrinsics& k, const Eigen::Vector3d& p) {
-      return Eigen::Vector2d(k.fx_px * p.x() / p.z() + k.cx_px, k.fy_px * p.y() / p.z() + k.cy_px);
-    };
+    const detail::StereoRig rig{left_intrinsics, right_intrinsics, left_T_right, up_in_left_camera};
     for (int image = 0; image < 2; ++image) {
       const std::vector<Detection>& detections = image == 0 ? left : right;
       const auto& corners = image == 0 ? left_corners : right_corners;
@@ -539,51 +535,22 @@ std::vector<StereoPercept> match_and_triangulate(
         if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
           continue;
         }
-        const std::optional<detail::SingleViewDoor> door = detail::place_single_view_door(
-            corner_array(corners[d]), image == 0 ? *correlator : *reverse_correlator,
-            image == 0 ? left_intrinsics : right_intrinsics,
-            image == 0 ? up_in_left_camera
-                       : Eigen::Vector3d(right_T_left.linear() * up_in_left_camera),
-            options, height_range(options, detection.type));
-        if (!door) continue;
-        const Eigen::Vector3d centre = image == 0 ? door->centre_m : left_T_right * door->centre_m;
-        // Disparity range, as depth along the left optical axis (as for pairs).
-        if (centre.z() < options.min_depth_m || centre.z() > options.max_depth_m) continue;
-        const double offset = reference_depth_offset(options, detection.type);
-        const Eigen::Vector3d position = centre + offset * centre.normalized();
+        const std::optional<StereoPercept> percept = detail::single_view_percept(
+            detection, static_cast<int>(d), image, corner_array(corners[d]),
+            (image == 0 ? left_ideal : right_ideal)[d],
+            image == 0 ? *correlator : *reverse_correlator, triangulator, rig, options,
+            height_range(options, detection.type), reference_depth_offset(options, detection.type));
+        if (!percept) continue;
+        // A second outline of a door that a percept already places.
         const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
           const Detection& other =
               p.left_detection >= 0 ? left[p.left_detection] : right[p.right_detection];
-          return other.type == detection.type && (p.left_camera_position_m - position).norm() <
-                                                     options.single_view_min_separation_m;
+          return other.type == detection.type &&
+                 (p.left_camera_position_m - percept->left_camera_position_m).norm() <
+                     options.single_view_min_separation_m;
         });
         if (near_another) continue;
-        // The covariance the pixel noise gives a pair at that point: the centre's projections
-        // into both images, with the lens Jacobian of the detection's own image.
-        const Eigen::Vector3d centre_in_right = right_T_left * centre;
-        if (!(centre.z() > 0.0) || !(centre_in_right.z() > 0.0)) continue;
-        detail::IdealPixel left_point, right_point;
-        if (image == 0) left_point = left_ideal[d];
-        if (image == 1) right_point = right_ideal[d];
-        left_point.ideal_px = ideal_in(left_intrinsics, centre);
-        right_point.ideal_px = ideal_in(right_intrinsics, centre_in_right);
-        const std::optional<detail::Triangulation> triangulation =
-            triangulator.triangulate(left_point, right_point, options.pixel_sigma_px, offset);
-        if (!triangulation) continue;
-        StereoPercept percept;
-        (image == 0 ? percept.left_detection : percept.right_detection) = static_cast<int>(d);
-        percept.left_camera_position_m = position;
-        percept.left_camera_covariance_m2 = triangulation->left_camera_covariance_m2;
-        percept.left_px = image == 0 ? detection.reference_px
-                                     : detail::distort(left_point.ideal_px, left_intrinsics);
-        percept.right_px = image == 1 ? detection.reference_px
-                                      : detail::distort(right_point.ideal_px, right_intrinsics);
-        // One image's evidence: the detection's confidence, scaled by its sides' agreement
-        // with the other image.
-        percept.confidence =
-            static_cast<float>(std::clamp(static_cast<double>(detection.confidence), 0.0, 1.0) *
-                               std::clamp(door->worst_side_correlation, 0.0, 1.0));
-        out.push_back(percept);
+        out.push_back(*percept);
       }
     }
   }
