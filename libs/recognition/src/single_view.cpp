@@ -45,9 +45,8 @@ std::optional<SingleViewDoor> place_single_view_door(
       candidates_m[static_cast<std::size_t>(s)].push_back(depth->second_distance_m);
     }
   }
-  // One side may be ambiguous: the door's shape (level edges, its height) must then single out
-  // one of its two peaks. Both ambiguous: refused.
-  if (candidates_m[0].size() > 1 && candidates_m[1].size() > 1) return std::nullopt;
+  // An ambiguous side has two candidate depths: the door's shape (level edges, its height) must
+  // single out exactly one combination of the two sides' candidates.
   const auto ends_at = [&](double d0, double d1) -> std::optional<std::array<Eigen::Vector3d, 4>> {
     std::array<Eigen::Vector3d, 4> ends;
     for (int s = 0; s < 2; ++s) {
