@@ -323,12 +323,13 @@ int main(int argc, char** argv) {
           return 1;
         }
         std::ofstream text(path.substr(0, path.size() - 4) + ".txt");
-        text << "# object type distance_m left_visible/unoccluded_px right_visible/unoccluded_px "
-                "ground_truth\n";
+        text << "# object type distance_m left_visible/in_image/unoccluded_px "
+                "right_visible/in_image/unoccluded_px ground_truth\n";
         for (const recognition::GroundTruthObject& object : truth) {
           text << world.objects[object.object_index].id << " " << object.type << " "
                << object.distance_m << " " << object.left_visible_px << "/"
-               << object.left_unoccluded_px << " " << object.right_visible_px << "/"
+               << object.left_in_image_px << "/" << object.left_unoccluded_px << " "
+               << object.right_visible_px << "/" << object.right_in_image_px << "/"
                << object.right_unoccluded_px << " " << (object.visible ? "yes" : "no") << "\n";
         }
         // Where each ground-truth object was lost: per image, the blob holding most of its
@@ -475,12 +476,24 @@ int main(int argc, char** argv) {
                      tools::funnel_stage(funnel_sides[0], funnel_sides[1], object_matched[t] != 0),
                      stereo);
         }
-        text << "# percept type left_px right_px distance_m matched_object error_m\n";
+        // How each percept was made: a pair, one image alone (single_view), or a pair cut by
+        // the top or bottom border (cut_top, cut_bottom).
+        text << "# percept type left_px right_px distance_m made_by matched_object error_m\n";
         for (std::size_t i = 0; i < result.percepts.size(); ++i) {
           const recognition::FramePercept& p = result.percepts[i];
+          const char* made_by = "pair";
+          if (p.left_detection < 0 || p.right_detection < 0) {
+            made_by = "single_view";
+          } else {
+            const recognition::BorderCut cut =
+                result.left_detections[static_cast<std::size_t>(p.left_detection)].border_cut;
+            if (cut == recognition::BorderCut::kTop) made_by = "cut_top";
+            if (cut == recognition::BorderCut::kBottom) made_by = "cut_bottom";
+          }
           text << "percept " << p.type << " " << p.left_px.x() << "," << p.left_px.y() << " "
                << p.right_px.x() << "," << p.right_px.y() << " "
-               << (p.ego_position_m - result.ego_T_left_camera.translation()).norm() << " ";
+               << (p.ego_position_m - result.ego_T_left_camera.translation()).norm() << " "
+               << made_by << " ";
           if (matches[i].ground_truth >= 0) {
             const auto& object = truth[static_cast<std::size_t>(matches[i].ground_truth)];
             text << world.objects[object.object_index].id << " " << matches[i].error_m << "\n";
@@ -503,7 +516,15 @@ int main(int argc, char** argv) {
                  << (label.object_index >= 0
                          ? world.objects[static_cast<std::size_t>(label.object_index)].id
                          : std::string("background"))
-                 << " purity " << label.purity << " coverage " << label.coverage << "\n";
+                 << " purity " << label.purity << " coverage " << label.coverage;
+            // How far the percept is from that object's reference point, when it is one of the
+            // evaluated objects of the frame.
+            for (const recognition::GroundTruthObject& object : truth) {
+              if (static_cast<int>(object.object_index) == label.object_index) {
+                text << " off " << (p.ego_position_m - object.ego_position_m).norm();
+              }
+            }
+            text << "\n";
           }
         }
       }

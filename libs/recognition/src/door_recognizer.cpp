@@ -29,9 +29,61 @@ int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
 constexpr double kMinBorderSideSupport = 0.6;
 // The colour angle's index in the door descriptor (door_descriptor_names()).
 constexpr int kColourComponent = 6;
+// A door face cut by the border fills the outline of its visible part, less its handle's hole.
+constexpr double kMinBorderCutFill = 0.85;
+// The cut side's corners lie on the border row, or beyond it (the sides leave the image there):
+// within this of the outermost row's centre, pixels.
+constexpr double kBorderCornerTolerancePx = 1.5;
 
 double square(double x) {
   return x * x;
+}
+
+// The border that cuts `quad` (fitted with the image's size) along a whole side: that side is the
+// top (corners 0-1) or the bottom (2-3), it lacks support, both its corners lie on or beyond the
+// border row, and the three other sides are seen (kMinBorderSideSupport), the left and right
+// ones nearer the image vertical. kNone otherwise.
+BorderCut border_cut_of(const BlobQuadrilateral& quad, int image_rows) {
+  const auto& c = quad.corners;
+  const auto supported = [&](int side) { return quad.side_support[side] >= kMinBorderSideSupport; };
+  const auto upright = [&](int side) {
+    const Eigen::Vector2d d = c[(side + 1) % 4] - c[side];
+    return std::abs(d.y()) > std::abs(d.x());
+  };
+  if (!supported(1) || !supported(3) || !upright(1) || !upright(3)) return BorderCut::kNone;
+  const double last_row = image_rows - 1;
+  if (!supported(0) && supported(2) && c[0].y() <= kBorderCornerTolerancePx &&
+      c[1].y() <= kBorderCornerTolerancePx) {
+    return BorderCut::kTop;
+  }
+  if (!supported(2) && supported(0) && c[2].y() >= last_row - kBorderCornerTolerancePx &&
+      c[3].y() >= last_row - kBorderCornerTolerancePx) {
+    return BorderCut::kBottom;
+  }
+  return BorderCut::kNone;
+}
+
+// The detection of a blob that border_cut_of found cut (Detection::border_cut).
+Detection border_cut_detection(const std::string& type, const Blob& blob, int blob_index,
+                               const BlobQuadrilateral& quad, BorderCut cut, const BlobAxes& axes,
+                               double colour_d2) {
+  Detection detection;
+  detection.type = type;
+  detection.blob_index = blob_index;
+  detection.border_cut = cut;
+  detection.corners_px.assign(quad.corners.begin(), quad.corners.end());
+  // The edge shown whole: the bottom one (corners 2, 3) under a top cut, else the top (0, 1).
+  const auto& c = quad.corners;
+  detection.reference_px = cut == BorderCut::kTop ? 0.5 * (c[2] + c[3]) : 0.5 * (c[0] + c[1]);
+  detection.height_px = 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
+  detection.area_px = blob.area_px;
+  detection.major_axis_angle_rad = major_axis_angle_rad(blob);
+  detection.major_extent_px = axes.major_extent_px;
+  detection.minor_extent_px = axes.minor_extent_px;
+  detection.mahalanobis2 = colour_d2;
+  // The chi-square survival probability of the one component judged (one degree of freedom).
+  detection.confidence = static_cast<float>(std::erfc(std::sqrt(0.5 * colour_d2)));
+  return detection;
 }
 
 }  // namespace
@@ -41,7 +93,7 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
   if (section.is_null()) return out;
   section.expect_map();
   section.expect_keys({"ideal_colour_rgb", "min_blob_px", "min_border_distance_px",
-                       "max_mahalanobis2_with_partner"});
+                       "max_mahalanobis2_with_partner", "detect_border_cut"});
   if (const auto colour = section.find("ideal_colour_rgb")) {
     out.ideal_colour_rgb = config::as_vector3(*colour);
     if (out.ideal_colour_rgb.minCoeff() < 0.0 || out.ideal_colour_rgb.maxCoeff() > 1.0) {
@@ -60,6 +112,7 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
       v->fail("must be 0 (off) or a finite D^2 at least the model's max_mahalanobis2");
     }
   }
+  if (const auto v = section.find("detect_border_cut")) out.detect_border_cut = v->as_bool();
   return out;
 }
 
@@ -74,6 +127,7 @@ void write_door_parameters(std::ostream& out, const DoorRecognizerParameters& pa
     out << indent << "max_mahalanobis2_with_partner: "
         << exact_number(parameters.max_mahalanobis2_with_partner) << "\n";
   }
+  if (parameters.detect_border_cut) out << indent << "detect_border_cut: true\n";
 }
 
 DoorRecognizer::DoorRecognizer(GaussianClassModel model, DoorRecognizerParameters parameters)
@@ -110,15 +164,26 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
         std::max(model_.max_mahalanobis2(), parameters_.max_mahalanobis2_with_partner);
     if (!(colour_d2 <= max_d2)) continue;
     const BlobAxes axes = blob_axes(blob);
-    const double d2 =
-        model_.mahalanobis2(door_descriptor(blob, axes, parameters_.ideal_colour_rgb));
-    if (!(d2 <= max_d2)) continue;
     std::optional<BlobQuadrilateral> quad;
     if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
         blob.v_max >= bgr_image.rows - border) {
       quad = fit_quadrilateral(blob, bgr_image.cols, bgr_image.rows);
-      if (!quad || quad->min_side_support < kMinBorderSideSupport) continue;
+      if (!quad) continue;
+      if (quad->min_side_support < kMinBorderSideSupport) {
+        if (parameters_.detect_border_cut && blob.u_min >= border &&
+            blob.u_max < bgr_image.cols - border && model_.accepts(colour_d2)) {
+          const BorderCut cut = border_cut_of(*quad, bgr_image.rows);
+          if (cut != BorderCut::kNone && blob.area_px >= kMinBorderCutFill * quad->area_px) {
+            out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i), *quad, cut,
+                                               axes, colour_d2));
+          }
+        }
+        continue;
+      }
     }
+    const double d2 =
+        model_.mahalanobis2(door_descriptor(blob, axes, parameters_.ideal_colour_rgb));
+    if (!(d2 <= max_d2)) continue;
     Detection detection;
     detection.type = model_.type();
     detection.blob_index = static_cast<int>(i);

@@ -208,8 +208,8 @@ std::optional<BlobQuadrilateral> fit_quadrilateral(const Blob& blob, int image_w
   for (int i = 0; i < 4; ++i) {
     const Eigen::Vector2d s = out.corners[(i + 1) % 4] - out.corners[i];
     const double pixels = std::max(std::abs(s.x()), std::abs(s.y()));
-    out.min_side_support =
-        std::min(out.min_side_support, pixels > 0.0 ? std::min(1.0, on_side[i] / pixels) : 0.0);
+    out.side_support[i] = pixels > 0.0 ? std::min(1.0, on_side[i] / pixels) : 0.0;
+    out.min_side_support = std::min(out.min_side_support, out.side_support[i]);
   }
   return out;
 }

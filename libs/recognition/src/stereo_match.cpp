@@ -10,6 +10,7 @@
 #include <numeric>
 #include <optional>
 
+#include "border_cut.hpp"
 #include "epipolar.hpp"
 #include "side_correlation.hpp"
 #include "single_view.hpp"
@@ -19,21 +20,11 @@
 namespace vsl::recognition {
 namespace {
 
-// The epipolar gate of two rectangle outlines (rectangle_containment_excess_px): this fraction of
-// their height (pixels), when more than StereoMatchOptions::max_epipolar_distance_px.
-constexpr double kRectangleEpipolarFraction = 0.05;
-
 // rectangle_containment_excess_px: a strip that segmentation adds in one image only is at most
 // this fraction of the longer side (top edge face, shadow: a few pixels). Without the bound the
 // galley gained 3 true and 5 false door percepts (drawer stacks merged in one image); the kitchen
 // was the same for any bound from 0.15 to 1 and lost recall at 0.1.
 constexpr double kMaxRectangleSideMismatch = 0.15;
-
-// The side correlation's search (pixels of image motion either way of the outlines' depth): a
-// margin, plus this fraction of the outline's width, which covers a stile (60 mm of a 0.3-0.6 m
-// door) that one image's outline lacks.
-constexpr double kSideSearchPx = 6.0;
-constexpr double kSideSearchWidthFraction = 0.25;
 
 // Added to each bar's mean width (pixels) before their ratio is compared: the quantization of a
 // thin bar's two edges.
@@ -106,6 +97,14 @@ const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& op
                                                     const std::string& type) {
   for (const StereoMatchOptions::ExtentRange& range : options.major_extent_range_m) {
     if (range.type == type) return &range;
+  }
+  return nullptr;
+}
+
+const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOptions& options,
+                                                         const std::string& type) {
+  for (const StereoMatchOptions::BorderCutDoor& height : options.border_cut) {
+    if (height.type == type) return &height;
   }
   return nullptr;
 }
@@ -361,7 +360,8 @@ std::vector<StereoPercept> match_and_triangulate(
           const double width_px = 0.5 * (corners[sides[0][0]] + corners[sides[0][1]] -
                                          corners[sides[1][0]] - corners[sides[1][1]])
                                             .norm();
-          const double search_px = kSideSearchPx + kSideSearchWidthFraction * width_px;
+          const double search_px =
+              detail::kSideSearchPx + detail::kSideSearchWidthFraction * width_px;
           for (int s = 0; s < 2; ++s) {
             const auto [i, j] = sides[static_cast<std::size_t>(s)];
             // A side tilted in the left outline is searched from the right image's side into
@@ -460,11 +460,39 @@ std::vector<StereoPercept> match_and_triangulate(
   for (int l = 0; l < static_cast<int>(left.size()); ++l) {
     for (int r = 0; r < static_cast<int>(right.size()); ++r) {
       if (left[l].type != right[r].type) continue;
+      // A door cut by the image border pairs only with one cut along the same border, judged
+      // by border_cut.hpp's gates when its class has a typical height.
+      const bool cut =
+          left[l].border_cut != BorderCut::kNone || right[r].border_cut != BorderCut::kNone;
+      const StereoMatchOptions::BorderCutDoor* cut_height =
+          cut ? border_cut_door(options, left[l].type) : nullptr;
+      if (cut && (left[l].border_cut != right[r].border_cut || !cut_height ||
+                  left_corners[l].size() != 4 || right_corners[r].size() != 4 ||
+                  !(up_in_left_camera.norm() > 0.0))) {
+        continue;
+      }
       StereoPairTrace trace;
       trace.left_detection = l;
       trace.right_detection = r;
-      if (std::optional<detail::Candidate> c = judge(l, r, trace))
-        candidates.push_back(std::move(*c));
+      std::optional<detail::Candidate> c;
+      if (!cut) {
+        c = judge(l, r, trace);
+      } else if (const int bars = std::max(bars_inside(left, left[l], options),
+                                           bars_inside(right, right[r], options));
+                 bars > options.single_view_max_bars_inside) {
+        // Several handles inside: drawer fronts or doors merged into one blob.
+        trace.refused_by = StereoGate::kBarsInside;
+        trace.value = bars;
+        trace.limit = options.single_view_max_bars_inside;
+      } else {
+        c = detail::judge_border_cut_pair(
+            l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
+            {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
+            correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options,
+            *cut_height, height_range(options, left[l].type),
+            reference_depth_offset(options, left[l].type), trace);
+      }
+      if (c) candidates.push_back(std::move(*c));
       if (pair_trace) traces.push_back(trace);
     }
   }
@@ -531,7 +559,10 @@ std::vector<StereoPercept> match_and_triangulate(
       const std::vector<char>& paired = image == 0 ? left_paired : right_paired;
       for (std::size_t d = 0; d < detections.size(); ++d) {
         const Detection& detection = detections[d];
-        if (paired[d] || detection.needs_partner || corners[d].size() != 4) continue;
+        if (paired[d] || detection.needs_partner || detection.border_cut != BorderCut::kNone ||
+            corners[d].size() != 4) {
+          continue;
+        }
         if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
           continue;
         }
@@ -581,6 +612,8 @@ const char* stereo_gate_name(StereoGate gate) {
       return "edge_slope";
     case StereoGate::kWeakPair:
       return "weak_pair";
+    case StereoGate::kBarsInside:
+      return "bars_inside";
   }
   return "?";
 }

@@ -19,7 +19,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad", "bar_types",
                        "min_side_correlation", "min_single_view_correlation",
                        "single_view_min_peak_margin", "single_view_min_separation_m",
-                       "single_view_max_bars_inside"});
+                       "single_view_max_bars_inside", "border_cut"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -96,6 +96,24 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         range.fail("expected [min_m, max_m] with 0 <= min_m < max_m <= 1000");
       }
       list.push_back({type, bounds[0], bounds[1]});
+    }
+  }
+  if (const auto classes = section.find("border_cut")) {
+    classes->expect_map();
+    for (const std::string& type : classes->keys()) {
+      const config::Node door = classes->at(type);
+      door.expect_map();
+      door.expect_keys({"typical_height_m", "height_sigma_m", "min_width_m", "max_width_m"});
+      StereoMatchOptions::BorderCutDoor parsed;
+      parsed.type = type;
+      parsed.typical_height_m = door.at("typical_height_m").as_double_in(0.01, 100.0);
+      parsed.height_sigma_m = door.at("height_sigma_m").as_double_in(0.0, parsed.typical_height_m);
+      parsed.min_width_m = door.at("min_width_m").as_double_in(0.0, 100.0);
+      parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
+      if (!(parsed.max_width_m > parsed.min_width_m)) {
+        door.at("max_width_m").fail("must exceed min_width_m");
+      }
+      out.border_cut.push_back(parsed);
     }
   }
   return out;

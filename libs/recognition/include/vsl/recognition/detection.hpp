@@ -8,6 +8,9 @@
 
 namespace vsl::recognition {
 
+// Which image border cuts a detection's outline along a whole side.
+enum class BorderCut { kNone, kTop, kBottom };
+
 struct Detection {
   std::string type;     // object type as in the world model: "door", "handle", ...
   int blob_index = -1;  // index into the blobs of the image it was found in
@@ -37,6 +40,14 @@ struct Detection {
   // (DoorRecognizerParameters::max_mahalanobis2_with_partner). The stereo match pairs it only
   // with a detection that is not weak (StereoGate::kWeakPair), so it never makes a percept alone.
   bool needs_partner = false;
+  // A door whose outline the top or bottom image border cuts along a whole side
+  // (DoorRecognizerParameters::detect_border_cut): its corners_px are the outline's with the two
+  // on the cut side where the vertical sides leave the image, its height_px is the visible length
+  // of the vertical sides, and its reference_px is the middle of the edge it shows whole (the
+  // bottom edge for kTop). The stereo match pairs it only with a detection cut along the same
+  // border and places its centre from that edge and the class's typical height
+  // (StereoMatchOptions::border_cut); its mahalanobis2 is its colour's alone.
+  BorderCut border_cut = BorderCut::kNone;
 };
 
 }  // namespace vsl::recognition

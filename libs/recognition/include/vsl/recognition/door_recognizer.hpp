@@ -34,6 +34,15 @@ struct DoorRecognizerParameters {
   // other is clean. 0: off (no weak detections); otherwise at least the model's threshold
   // (checked when the model file is read).
   double max_mahalanobis2_with_partner = 0.0;
+  // Doors cut by the top or bottom image border along a whole side (Detection::border_cut): a
+  // door a robot stands near is often taller than the image's vertical field of view, and
+  // base-unit doors lose their bottom to the image's lower border when the head looks at the
+  // worktop. The descriptor of such a blob is not a door's (its extents and angles are the cut
+  // shape's), so it is judged without the class model: its colour (the model's colour component,
+  // within the model's threshold), an outline whose other three sides are seen along at least
+  // 60% of their length and whose cut side lies on the border, the blob filling at least 85% of
+  // that outline, and no contact with the left or right border. Off by default.
+  bool detect_border_cut = false;
 };
 
 // Reads / writes the `parameters:` section of a door model file (every key optional, defaults

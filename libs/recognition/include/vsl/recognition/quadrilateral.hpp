@@ -34,6 +34,9 @@ struct BlobQuadrilateral {
   // (not on the image border) lie along: near 1 when every side is seen; low for a side that is
   // only the hull's chord across a gap, or where the image border cuts the object.
   double min_side_support = 0.0;
+  // The same per side: side k runs from corners[k] to corners[k + 1 mod 4] (0 the top, 2 the
+  // bottom of an upright rectangle).
+  std::array<double, 4> side_support{};
 };
 
 // Fits a convex quadrilateral to the outline of `blob`: the four-vertex simplification of the

@@ -113,7 +113,36 @@ struct StereoMatchOptions {
   double single_view_min_peak_margin = 0.1;
   double single_view_min_separation_m = 0.2;
   int single_view_max_bars_inside = 1;
+  // Optional, per class: doors cut by the top or bottom image border along a whole side
+  // (Detection::border_cut), placed from the edge they show whole and the class's typical
+  // height. Two detections cut along the same border make a pair when the ends of that edge lie
+  // on each other's epipolar lines (max_epipolar_distance_px, or kRectangleEpipolarFraction of the
+  // visible height), the vertical sides are vertical in 3D (max_side_tilt_rad), the edge is level
+  // (max_edge_slope_rad) and min_width_m .. max_width_m long (a strip of a door that
+  // segmentation split off is narrower), the sides' visible length is at least half the typical
+  // height (a door half in view; a drawer front of the same colour is shorter) and at most 1.05
+  // times it (a door seen taller is of some other height, a tall unit's), at most
+  // single_view_max_bars_inside bar detections (handles) lie inside each outline, and the centre
+  // is within the depth range. With min_side_correlation, each side is placed where the images
+  // around it correlate, as for whole outlines. The centre is the edge's middle moved half the
+  // typical height along the up direction (towards the border that cuts it). Its covariance is the
+  // pixel noise's at the edge's middle plus (height_sigma_m / 2)^2 along the up direction: the
+  // spread of the class's heights. Detections cut along a border, of classes not listed here, are
+  // not paired. Needs the up direction.
+  struct BorderCutDoor {
+    std::string type;
+    double typical_height_m = 0.0;  // the height of the class's most common door, metres
+    double height_sigma_m = 0.0;    // the spread of the class's heights about it, metres
+    double min_width_m = 0.0;       // of the whole edge
+    double max_width_m = 0.0;
+  };
+  std::vector<BorderCutDoor> border_cut;
 };
+
+// The epipolar gate of two rectangle outlines (doors): their vertical sides nest along the
+// epipolar direction to this fraction of their image height (pixels), when that is more than
+// StereoMatchOptions::max_epipolar_distance_px.
+inline constexpr double kRectangleEpipolarFraction = 0.05;
 
 // The frame's grey images (CV_8UC1, raw pixels, the intrinsics' size), for the gates that look
 // at the images themselves (StereoMatchOptions::min_side_correlation,
@@ -160,7 +189,8 @@ enum class StereoGate {
   kDepth,
   kExtent,
   kHeight,
-  kWeakPair  // both detections weak (Detection::needs_partner)
+  kWeakPair,   // both detections weak (Detection::needs_partner)
+  kBarsInside  // border-cut doors: more bar detections inside an outline than allowed
 };
 const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
 

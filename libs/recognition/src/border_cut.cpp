@@ -1,0 +1,176 @@
+// Doors cut along a whole side by the top or bottom image border (border_cut.hpp).
+//
+// Geometry. Under a top cut the outline shows the door's bottom edge whole, between the real
+// corners 3 (bottom left) and 2 (bottom right), and its two vertical sides up to where they leave
+// the image (corners 0 and 1, on the border row); under a bottom cut, the top edge (corners 0, 1)
+// and the sides down to the bottom row. Triangulator::rectangle_ends places each vertical side
+// from the right image's plane through it and the left rays through its corners: the ends on the
+// whole edge are the door's corners, the others where the side leaves the left image. Then, with
+// u the unit up direction and E_a, E_b the whole edge's two ends,
+//   visible height   h_v = ((T_0 - B_0) . u + (T_1 - B_1) . u) / 2   (T, B: each side's ends),
+//   centre           C   = (E_a + E_b) / 2 + s h_typ / 2 u,   s = +1 under a top cut, -1 a bottom,
+// for h_typ / 2 <= h_v <= 1.05 h_typ (half the door in view, and no taller than typical),
+// and the covariance that of the edge's middle triangulated from the two reference points (the
+// pixel noise) plus (sigma_h / 2)^2 u u^T: the hidden part of the door is known only as the
+// class's spread of heights.
+#include "border_cut.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace vsl::recognition::detail {
+namespace {
+
+// A typical door seen whole up to the border measures its height plus the noise of its ends and
+// of the border's row: up to this fraction of the typical height.
+constexpr double kMaxVisibleOfTypical = 1.05;
+// The least cosine of the angle between the door's normal and the view (about 78 deg): at more
+// grazing angles no door of the evaluations was recognized whole either (docs/recognition.md).
+constexpr double kMinCosViewing = 0.2;
+
+// The corners of the edge the outline shows whole: bottom (3, 2) under a top cut, top (0, 1).
+std::array<int, 2> whole_edge_corners(BorderCut cut) {
+  return cut == BorderCut::kTop ? std::array<int, 2>{3, 2} : std::array<int, 2>{0, 1};
+}
+
+}  // namespace
+
+std::optional<Candidate> judge_border_cut_pair(
+    int l, int r, const BorderCutView& left, const BorderCutView& right,
+    const EpipolarGeometry& epipolar, const Triangulator& triangulator,
+    const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
+    const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
+    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m,
+    StereoPairTrace& trace) {
+  const auto refuse = [&](StereoGate gate, double value, double limit) {
+    trace.refused_by = gate;
+    trace.value = value;
+    trace.limit = limit;
+    return std::nullopt;
+  };
+  const BorderCut cut = left.detection.border_cut;
+  if (cut == BorderCut::kNone || right.detection.border_cut != cut) {
+    return refuse(StereoGate::kEpipolar, 0.0, 0.0);
+  }
+  // Position: the whole edge's two corners on each other's epipolar lines (a strip of shadow
+  // along that edge in one image only moves them along the sides by a few per cent of the
+  // visible height).
+  const std::array<int, 2> edge = whole_edge_corners(cut);
+  double epipolar_px = 0.0;
+  for (const int k : edge) {
+    epipolar_px = std::max(
+        epipolar_px, epipolar.distance_px(left.corners_ideal_px[k], right.corners_ideal_px[k]));
+  }
+  const double max_epipolar_px = std::max(
+      options.max_epipolar_distance_px,
+      kRectangleEpipolarFraction * 0.5 * (left.detection.height_px + right.detection.height_px));
+  if (!(epipolar_px <= max_epipolar_px)) {
+    return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+  }
+  // Size: both cameras are about equally far from the door, so its whole edge is about as long
+  // in both images (a length, the square root of the area ratio's bound); two strips of doors
+  // that segmentation split apart pair at a wrong depth otherwise.
+  const double left_width_px =
+      (left.corners_ideal_px[edge[1]] - left.corners_ideal_px[edge[0]]).norm();
+  const double right_width_px =
+      (right.corners_ideal_px[edge[1]] - right.corners_ideal_px[edge[0]]).norm();
+  const double max_width_ratio = std::sqrt(std::max(options.max_area_ratio, 1.0));
+  const double width_ratio = std::max(left_width_px, right_width_px) /
+                             std::max(std::min(left_width_px, right_width_px), 1e-9);
+  if (!(width_ratio <= max_width_ratio)) {
+    return refuse(StereoGate::kAreaRatio, width_ratio, max_width_ratio);
+  }
+  // The sides are a door's vertical edges in both images.
+  if (options.max_side_tilt_rad > 0.0) {
+    const double tilt = triangulator.max_side_tilt(left.corners_ideal_px, right.corners_ideal_px,
+                                                   up_in_left_camera);
+    if (tilt > std::sin(options.max_side_tilt_rad)) {
+      return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
+                    options.max_side_tilt_rad);
+    }
+  }
+  std::optional<std::array<Eigen::Vector3d, 4>> ends =
+      triangulator.rectangle_ends(left.corners_ideal_px, right.corners_ideal_px);
+  std::optional<Triangulation> triangulation = triangulator.triangulate(
+      left.reference, right.reference, options.pixel_sigma_px, reference_offset_m);
+  if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  // Each side's depth where the images around it correlate, searched around the outlines' depth
+  // (one image's outline may lack a stile); a side that does not correlate keeps the outlines'.
+  if (correlator) {
+    const std::array<Eigen::Vector2d, 4>& c = left.corners_ideal_px;
+    const double search_px = kSideSearchPx + kSideSearchWidthFraction * 0.5 *
+                                                 ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
+    for (const auto& [s, top, bottom] : {std::tuple{0, 0, 3}, std::tuple{1, 1, 2}}) {
+      Eigen::Vector3d& top_end = (*ends)[2 * s];
+      Eigen::Vector3d& bottom_end = (*ends)[2 * s + 1];
+      const double initial_m = 0.5 * (correlator->horizontal_distance(top_end) +
+                                      correlator->horizontal_distance(bottom_end));
+      const auto depth = correlator->correlate(c[top], c[bottom], initial_m, search_px,
+                                               options.min_depth_m, options.max_depth_m);
+      if (!depth || depth->correlation < options.min_side_correlation) continue;
+      const auto top_point = correlator->point_at(c[top], depth->horizontal_distance_m);
+      const auto bottom_point = correlator->point_at(c[bottom], depth->horizontal_distance_m);
+      if (!top_point || !bottom_point) continue;
+      top_end = *top_point;
+      bottom_end = *bottom_point;
+    }
+  }
+  // rectangle_ends: each side's end at its first corner (0 or 1, the top), then at its second
+  // (3 or 2, the bottom).
+  const bool top_cut = cut == BorderCut::kTop;
+  const Eigen::Vector3d& edge_a = (*ends)[top_cut ? 1 : 0];
+  const Eigen::Vector3d& edge_b = (*ends)[top_cut ? 3 : 2];
+  const Eigen::Vector3d& u = up_in_left_camera;
+  // The whole edge is level.
+  if (options.max_edge_slope_rad > 0.0) {
+    const Eigen::Vector3d along = edge_b - edge_a;
+    const double rise = std::abs(along.dot(u));
+    const double run = (along - along.dot(u) * u).norm();
+    const double slope_rad = std::atan2(rise, run);
+    if (slope_rad > options.max_edge_slope_rad) {
+      return refuse(StereoGate::kEdgeSlope, slope_rad, options.max_edge_slope_rad);
+    }
+  }
+  // A door's width: a strip of a door that segmentation split off is narrower.
+  const double width_m = (edge_b - edge_a).norm();
+  if (width_m < door.min_width_m) return refuse(StereoGate::kExtent, width_m, door.min_width_m);
+  if (width_m > door.max_width_m) return refuse(StereoGate::kExtent, width_m, door.max_width_m);
+  // Seen from within about 78 deg of head-on: the cosine between the door's normal (level,
+  // across the edge) and the ray to the edge's middle. Nearly edge-on, a strip of a door paired
+  // with another strip (or a side the correlation moved) makes a long edge receding in depth.
+  const Eigen::Vector3d normal = (edge_b - edge_a).cross(u).normalized();
+  const double cos_viewing = std::abs(normal.dot((0.5 * (edge_a + edge_b)).normalized()));
+  if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
+  // At least half a typical door in view, and no more than a typical door: a door seen taller
+  // than that is of another height (a tall unit's), which nothing in view tells.
+  const double visible_m =
+      0.5 * (((*ends)[0] - (*ends)[1]).dot(u) + ((*ends)[2] - (*ends)[3]).dot(u));
+  if (visible_m < 0.5 * door.typical_height_m) {
+    return refuse(StereoGate::kHeight, visible_m, 0.5 * door.typical_height_m);
+  }
+  const double max_visible_m = kMaxVisibleOfTypical * door.typical_height_m;
+  if (visible_m > max_visible_m) return refuse(StereoGate::kHeight, visible_m, max_visible_m);
+  const Eigen::Vector3d centre =
+      0.5 * (edge_a + edge_b) + (top_cut ? 0.5 : -0.5) * door.typical_height_m * u;
+  if (centre.z() < options.min_depth_m) {
+    return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
+  }
+  if (centre.z() > options.max_depth_m) {
+    return refuse(StereoGate::kDepth, centre.z(), options.max_depth_m);
+  }
+  Candidate c;
+  c.left = l;
+  c.right = r;
+  const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
+  c.cost = epipolar_term * epipolar_term;
+  c.rectangle = true;
+  c.triangulation.left_camera_position_m = centre + reference_offset_m * centre.normalized();
+  const double half_sigma_m = 0.5 * door.height_sigma_m;
+  c.triangulation.left_camera_covariance_m2 =
+      triangulation->left_camera_covariance_m2 + half_sigma_m * half_sigma_m * u * u.transpose();
+  trace.cost = c.cost;
+  return c;
+}
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,43 @@
+// A pair of door detections cut along the same image border (Detection::border_cut,
+// StereoMatchOptions::border_cut): the door's centre from the edge both images show
+// whole and the class's typical height. Internal to vsl_recognition.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
+
+#include "epipolar.hpp"
+#include "side_correlation.hpp"
+#include "stereo_assignment.hpp"
+#include "triangulation.hpp"
+#include "vsl/recognition/detection.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition::detail {
+
+// One image's view of a cut door: its detection, outline corners (ideal pixels, clockwise from
+// the top left, the two on the cut side where the vertical sides leave the image) and reference
+// point (the middle of the edge shown whole).
+struct BorderCutView {
+  const Detection& detection;
+  std::array<Eigen::Vector2d, 4> corners_ideal_px;
+  const IdealPixel& reference;
+};
+
+// Judges the pair (left detection `l`, right detection `r`, both cut along the same border) by
+// the gates of StereoMatchOptions::border_cut, recording a refusal in `trace`; the
+// candidate with its centre (left camera frame, `reference_offset_m` behind the face along the
+// ray) and covariance otherwise. `up_in_left_camera`: unit. The caller tests the bars inside.
+// With `correlator` (StereoMatchOptions::min_side_correlation), each vertical side is placed
+// where the images around it correlate, as for whole outlines (side_correlation.hpp).
+std::optional<Candidate> judge_border_cut_pair(
+    int l, int r, const BorderCutView& left, const BorderCutView& right,
+    const EpipolarGeometry& epipolar, const Triangulator& triangulator,
+    const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
+    const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
+    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m,
+    StereoPairTrace& trace);
+
+}  // namespace vsl::recognition::detail
