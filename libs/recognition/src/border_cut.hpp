@@ -37,7 +37,6 @@ std::optional<Candidate> judge_border_cut_pair(
     const EpipolarGeometry& epipolar, const Triangulator& triangulator,
     const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
     const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
-    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m,
-    StereoPairTrace& trace);
+    double reference_offset_m, StereoPairTrace& trace);
 
 }  // namespace vsl::recognition::detail

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 
 #include "vsl/config/eigen.hpp"
 #include "vsl/config/node.hpp"
@@ -31,36 +33,52 @@ constexpr double kMinBorderSideSupport = 0.6;
 constexpr int kColourComponent = 6;
 // A door face cut by the border fills the outline of its visible part, less its handle's hole.
 constexpr double kMinBorderCutFill = 0.85;
-// The cut side's corners lie on the border row, or beyond it (the sides leave the image there):
-// within this of the outermost row's centre, pixels.
-constexpr double kBorderCornerTolerancePx = 1.5;
 
 double square(double x) {
   return x * x;
 }
 
-// The border that cuts `quad` (fitted with the image's size) along a whole side: that side is the
-// top (corners 0-1) or the bottom (2-3), it lacks support, both its corners lie on or beyond the
-// border row, and the three other sides are seen (kMinBorderSideSupport), the left and right
-// ones nearer the image vertical. kNone otherwise.
-BorderCut border_cut_of(const BlobQuadrilateral& quad, int image_rows) {
+// The border that cuts `quad` (fitted with the image's size) along a whole side, and the quad
+// with that side moved onto the border: the side is the top (corners 0-1) or the bottom (2-3),
+// it lacks support (its line is only the hull's chord, not necessarily along the border), the
+// blob reaches that border, and the three other sides are seen (kMinBorderSideSupport), the left
+// and right ones nearer the image vertical. The cut side's corners become where the left and
+// right sides' lines leave the image (the outer edge of its first or last row). nullopt
+// otherwise.
+std::optional<std::pair<BorderCut, BlobQuadrilateral>> border_cut_of(const BlobQuadrilateral& quad,
+                                                                     const Blob& blob,
+                                                                     int image_rows) {
   const auto& c = quad.corners;
   const auto supported = [&](int side) { return quad.side_support[side] >= kMinBorderSideSupport; };
   const auto upright = [&](int side) {
     const Eigen::Vector2d d = c[(side + 1) % 4] - c[side];
     return std::abs(d.y()) > std::abs(d.x());
   };
-  if (!supported(1) || !supported(3) || !upright(1) || !upright(3)) return BorderCut::kNone;
-  const double last_row = image_rows - 1;
-  if (!supported(0) && supported(2) && c[0].y() <= kBorderCornerTolerancePx &&
-      c[1].y() <= kBorderCornerTolerancePx) {
-    return BorderCut::kTop;
+  if (!supported(1) || !supported(3) || !upright(1) || !upright(3)) return std::nullopt;
+  // Where the line through corners a and b crosses the row v.
+  const auto at_row = [&](int a, int b, double v) {
+    const Eigen::Vector2d d = c[b] - c[a];
+    return Eigen::Vector2d(c[a].x() + d.x() * (v - c[a].y()) / d.y(), v);
+  };
+  BlobQuadrilateral out = quad;
+  if (!supported(0) && supported(2) && blob.v_min == 0) {
+    out.corners[0] = at_row(3, 0, -0.5);
+    out.corners[1] = at_row(2, 1, -0.5);
+    return std::pair{BorderCut::kTop, out};
   }
-  if (!supported(2) && supported(0) && c[2].y() >= last_row - kBorderCornerTolerancePx &&
-      c[3].y() >= last_row - kBorderCornerTolerancePx) {
-    return BorderCut::kBottom;
+  if (!supported(2) && supported(0) && blob.v_max == image_rows - 1) {
+    out.corners[2] = at_row(1, 2, image_rows - 0.5);
+    out.corners[3] = at_row(0, 3, image_rows - 0.5);
+    return std::pair{BorderCut::kBottom, out};
   }
-  return BorderCut::kNone;
+  return std::nullopt;
+}
+
+// The area of a convex quadrilateral (corners in order), pixels.
+double outline_area_px(const BlobQuadrilateral& quad) {
+  const auto& c = quad.corners;
+  const Eigen::Vector2d a = c[2] - c[0], b = c[3] - c[1];
+  return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
 }
 
 // The detection of a blob that border_cut_of found cut (Detection::border_cut).
@@ -172,10 +190,10 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
       if (quad->min_side_support < kMinBorderSideSupport) {
         if (parameters_.detect_border_cut && blob.u_min >= border &&
             blob.u_max < bgr_image.cols - border && model_.accepts(colour_d2)) {
-          const BorderCut cut = border_cut_of(*quad, bgr_image.rows);
-          if (cut != BorderCut::kNone && blob.area_px >= kMinBorderCutFill * quad->area_px) {
-            out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i), *quad, cut,
-                                               axes, colour_d2));
+          const auto cut = border_cut_of(*quad, blob, bgr_image.rows);
+          if (cut && blob.area_px >= kMinBorderCutFill * outline_area_px(cut->second)) {
+            out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i),
+                                               cut->second, cut->first, axes, colour_d2));
           }
         }
         continue;

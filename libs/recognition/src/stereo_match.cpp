@@ -489,8 +489,7 @@ std::vector<StereoPercept> match_and_triangulate(
             l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
             {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
             correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options,
-            *cut_height, height_range(options, left[l].type),
-            reference_depth_offset(options, left[l].type), trace);
+            *cut_height, reference_depth_offset(options, left[l].type), trace);
       }
       if (c) candidates.push_back(std::move(*c));
       if (pair_trace) traces.push_back(trace);
