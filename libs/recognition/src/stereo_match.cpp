@@ -51,24 +51,33 @@ bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
          options.bar_types.end();
 }
 
+// A bar counts as inside an outline when its reference point is at least this far inside every
+// side, pixels: the handle of the neighbour of a double door sits a few pixels beyond the shared
+// edge, and an outline's side is off by a pixel or two.
+constexpr double kBarInsideMarginPx = 2.0;
+
 // How many detections of a bar type in `detections` (one image's) have their reference point
-// inside the convex outline of `outline` (raw pixels, corners clockwise in the image: each
-// cross product of an edge and the point from its start has the same sign).
+// inside the convex outline of `outline` (raw pixels, corners clockwise in the image), by
+// kBarInsideMarginPx: the signed distance from each side, the cross product of the side and the
+// point from its start over the side's length, has the outline's orientation's sign.
 int bars_inside(const std::vector<Detection>& detections, const Detection& outline,
                 const StereoMatchOptions& options) {
   const std::vector<Eigen::Vector2d>& c = outline.corners_px;
   int count = 0;
   for (const Detection& d : detections) {
     if (!is_bar_type(options, d.type)) continue;
-    int positive = 0, negative = 0;
+    double least_positive = std::numeric_limits<double>::infinity();
+    double least_negative = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < c.size(); ++k) {
       const Eigen::Vector2d edge = c[(k + 1) % c.size()] - c[k];
       const Eigen::Vector2d to = d.reference_px - c[k];
-      const double cross = edge.x() * to.y() - edge.y() * to.x();
-      positive += cross > 0.0;
-      negative += cross < 0.0;
+      const double length = edge.norm();
+      if (!(length > 0.0)) continue;
+      const double distance = (edge.x() * to.y() - edge.y() * to.x()) / length;
+      least_positive = std::min(least_positive, distance);
+      least_negative = std::min(least_negative, -distance);
     }
-    count += positive == 0 || negative == 0;
+    count += least_positive >= kBarInsideMarginPx || least_negative >= kBarInsideMarginPx;
   }
   return count;
 }
