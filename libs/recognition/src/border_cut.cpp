@@ -81,12 +81,11 @@ std::optional<Candidate> judge_border_cut_pair(
     return refuse(StereoGate::kAreaRatio, width_ratio, max_width_ratio);
   }
   // The sides are a door's vertical edges in both images.
-  if (options.max_side_tilt_rad > 0.0) {
+  if (door.max_side_tilt_rad > 0.0) {
     const double tilt = triangulator.max_side_tilt(left.corners_ideal_px, right.corners_ideal_px,
                                                    up_in_left_camera);
-    if (tilt > std::sin(options.max_side_tilt_rad)) {
-      return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
-                    options.max_side_tilt_rad);
+    if (tilt > std::sin(door.max_side_tilt_rad)) {
+      return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)), door.max_side_tilt_rad);
     }
   }
   std::optional<std::array<Eigen::Vector3d, 4>> ends =

@@ -103,7 +103,8 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     for (const std::string& type : classes->keys()) {
       const config::Node door = classes->at(type);
       door.expect_map();
-      door.expect_keys({"typical_height_m", "height_sigma_m", "min_width_m", "max_width_m"});
+      door.expect_keys({"typical_height_m", "height_sigma_m", "min_width_m", "max_width_m",
+                        "max_side_tilt_rad"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
       parsed.typical_height_m = door.at("typical_height_m").as_double_in(0.01, 100.0);
@@ -112,6 +113,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
       if (!(parsed.max_width_m > parsed.min_width_m)) {
         door.at("max_width_m").fail("must exceed min_width_m");
+      }
+      if (const auto v = door.find("max_side_tilt_rad")) {
+        parsed.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2, as max_side_tilt_rad
       }
       out.border_cut.push_back(parsed);
     }

@@ -117,7 +117,8 @@ struct StereoMatchOptions {
   // (Detection::border_cut), placed from the edge they show whole and the class's typical
   // height. Two detections cut along the same border make a pair when the ends of that edge lie
   // on each other's epipolar lines (max_epipolar_distance_px, or kRectangleEpipolarFraction of the
-  // visible height), the vertical sides are vertical in 3D (max_side_tilt_rad), the edge is level
+  // visible height), the vertical sides are vertical in 3D (this struct's max_side_tilt_rad, in
+  // place of the whole outlines'), the edge is level
   // (max_edge_slope_rad) and min_width_m .. max_width_m long (a strip of a door that
   // segmentation split off is narrower), the sides' visible length is at least half the typical
   // height (a door half in view; a drawer front of the same colour is shorter) and at most 1.05
@@ -135,6 +136,10 @@ struct StereoMatchOptions {
     double height_sigma_m = 0.0;    // the spread of the class's heights about it, metres
     double min_width_m = 0.0;       // of the whole edge
     double max_width_m = 0.0;
+    // The sides' tilt from vertical (as StereoMatchOptions::max_side_tilt_rad; 0 turns the test
+    // off). A cut outline's sides are shorter and end at the border rather than at a corner, so
+    // they are fitted less well than a whole outline's.
+    double max_side_tilt_rad = 0.0;
   };
   std::vector<BorderCutDoor> border_cut;
 };
