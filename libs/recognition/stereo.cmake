@@ -14,6 +14,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/stereo_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_correlation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)
 list(APPEND VSL_RECOGNITION_BENCHES ${CMAKE_CURRENT_SOURCE_DIR}/bench/stereo_bench.cpp

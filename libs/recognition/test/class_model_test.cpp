@@ -184,6 +184,7 @@ TEST(ModelFile, RoundTripIsExact) {
                                default_fit_options("door"));
   door.door.min_blob_px = 123;
   door.door.max_mahalanobis2_with_partner = 30.25;
+  door.door.detect_border_cut = true;
   const std::string path =
       (std::filesystem::path(testing::TempDir()) / "vsl_class_model_test_door.yaml").string();
   save_recognizer_file(door, path);
@@ -192,6 +193,7 @@ TEST(ModelFile, RoundTripIsExact) {
   EXPECT_EQ(door_back.model.covariance(), door.model.covariance());
   EXPECT_EQ(door_back.door.min_blob_px, 123);
   EXPECT_EQ(door_back.door.max_mahalanobis2_with_partner, 30.25);
+  EXPECT_TRUE(door_back.door.detect_border_cut);
   std::filesystem::remove(path);
   EXPECT_THROW(save_recognizer_file(door, "/nonexistent-dir/door.yaml"), std::runtime_error);
 }
@@ -330,6 +332,12 @@ TEST(ModelFile, EveryValidationError) {
                "parameters.max_mahalanobis2_with_partner", "at least the model's");
   expect_error(replaced(with_partner, "with_partner: 25", "with_partner: -1"),
                "parameters.max_mahalanobis2_with_partner", "must be 0 (off)");
+  // Border-cut doors: a boolean, off unless given.
+  EXPECT_FALSE(recognizer_file_from(config::Node::load_string(door_text.str(), "m.yaml"))
+                   .door.detect_border_cut);
+  expect_error(replaced(door_text.str(), "min_border_distance_px: 1",
+                        "min_border_distance_px: 1\n  detect_border_cut: 3"),
+               "parameters.detect_border_cut", "");
 }
 
 }  // namespace

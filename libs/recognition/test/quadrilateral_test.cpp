@@ -72,6 +72,13 @@ TEST(QuadrilateralTest, ImageBorderCuttingACornerOrASide) {
   const std::vector<cv::Point> side_out{{-60, 100}, {150, 130}, {150, 330}, {-60, 380}};
   const auto cut = fit_quadrilateral(blob_of(side_out), 640, 480);
   EXPECT_TRUE(!cut || cut->min_side_support < 0.6);
+  // Cut along its top by the upper border: the top side (corners 0-1) alone lacks support.
+  const std::vector<cv::Point> top_out{{200, -80}, {330, -60}, {320, 200}, {210, 210}};
+  const auto top = fit_quadrilateral(blob_of(top_out), 640, 480);
+  ASSERT_TRUE(top.has_value());
+  EXPECT_LT(top->side_support[0], 0.1);
+  for (const int side : {1, 2, 3}) EXPECT_GT(top->side_support[side], 0.9) << side;
+  EXPECT_EQ(top->min_side_support, top->side_support[0]);
   // A door wholly in the image is fully supported.
   EXPECT_GT(fit_quadrilateral(blob_of(kDoor), 640, 480)->min_side_support, 0.9);
 }

@@ -254,6 +254,55 @@ TEST(Recognizers, BlobsOnTheImageBorderAreNotJudged) {
   EXPECT_TRUE(out.empty());
 }
 
+TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
+  // A door panel whose top the image's upper border cuts (a wall cupboard seen from close by),
+  // one whose bottom the lower border cuts, one cut by the left border, and a short strip cut by
+  // the top border with a notch (fills under 85% of its outline).
+  cv::Mat image(240, 320, CV_8UC3, kWallBgr);
+  const cv::Scalar door_bgr = kDoorBgr * 0.62;
+  const cv::Rect top_cut(30, 0, 60, 110), bottom_cut(120, 130, 70, 110), left_cut(0, 60, 20, 120),
+      notched(230, 0, 60, 90);
+  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, notched}) image(r).setTo(door_bgr);
+  image(cv::Rect(245, 30, 30, 40)).setTo(kWallBgr);
+  add_noise(image, 17);
+  std::vector<Blob> blobs;
+  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, notched}) {
+    blobs.push_back(colour_blob(image, door_bgr, 12.0, r));
+  }
+  const auto detect = [&](bool on) {
+    DoorRecognizerParameters parameters;
+    parameters.detect_border_cut = on;
+    std::vector<Detection> out;
+    DoorRecognizer(
+        diagonal_model("door", door_descriptor_names(), {1.1, 1.1, 0.95, 0.04, 0.08, 0.7, 0.01},
+                       {0.3, 0.3, 0.1, 0.06, 0.1, 0.5, 0.03}),
+        parameters)
+        .recognize(image, blobs, out);
+    return out;
+  };
+  EXPECT_TRUE(detect(false).empty());
+  const std::vector<Detection> cut = detect(true);
+  ASSERT_EQ(cut.size(), 2u);
+  // Top cut: the corners on the cut side where the sides leave the image (the outer edge of
+  // row 0), the reference point the middle of the bottom edge, the height the visible sides'.
+  EXPECT_EQ(cut[0].blob_index, 0);
+  EXPECT_EQ(cut[0].border_cut, BorderCut::kTop);
+  ASSERT_EQ(cut[0].corners_px.size(), 4u);
+  EXPECT_NEAR(cut[0].corners_px[0].x(), 29.5, 1.0);
+  EXPECT_DOUBLE_EQ(cut[0].corners_px[0].y(), -0.5);
+  EXPECT_DOUBLE_EQ(cut[0].corners_px[1].y(), -0.5);
+  EXPECT_NEAR(cut[0].corners_px[2].y(), 109.5, 1.0);
+  EXPECT_NEAR(cut[0].reference_px.x(), 59.5, 1.0);
+  EXPECT_NEAR(cut[0].reference_px.y(), 109.5, 1.0);
+  EXPECT_NEAR(cut[0].height_px, 110.0, 1.5);
+  EXPECT_GT(cut[0].confidence, 0.0f);
+  // Bottom cut: the top edge is the whole one.
+  EXPECT_EQ(cut[1].blob_index, 1);
+  EXPECT_EQ(cut[1].border_cut, BorderCut::kBottom);
+  EXPECT_DOUBLE_EQ(cut[1].corners_px[2].y(), 239.5);
+  EXPECT_NEAR(cut[1].reference_px.y(), 129.5, 1.0);
+}
+
 TEST(Recognizers, ModelMustMatchTheDescriptor) {
   const GaussianClassModel handle_model =
       read_recognizer_file("config/recognition/handle.yaml").model;

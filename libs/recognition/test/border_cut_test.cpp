@@ -1,0 +1,225 @@
+// Doors cut along a whole side by the top or bottom image border (StereoMatchOptions::border_cut,
+// border_cut.hpp): the centre from the whole edge and the typical height, and each gate.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "support/projection.hpp"
+#include "vsl/head/stereo_calibration.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+using test::project;
+
+// The simulated head's ideal 640x480 pinholes, parallel, 90 mm apart (no distortion: image lines
+// are straight, so a side's crossing of a row is where its projected line crosses it).
+class BorderCutTest : public ::testing::Test {
+ protected:
+  BorderCutTest() {
+    options_.bar_types = {"handle"};
+    options_.max_edge_slope_rad = 0.3;
+    options_.border_cut = {{"door", kHeightM, 0.12, 0.3, 1.0, 0.09}};
+  }
+
+  // A door 0.5 m wide and kHeightM tall, turned `turn_rad` about the vertical, its centre at
+  // `centre_m` (left camera frame, y down); in each image the outline of what lies inside the
+  // image: under a top cut, the sides from where they leave row 0 (v = -0.5) down to the bottom
+  // corners; under a bottom cut, from the top corners down to where they leave the last row.
+  struct Pair {
+    Detection left, right;
+  };
+  Pair cut_door(const Eigen::Vector3d& centre_m, BorderCut cut, double turn_rad = 0.7) const {
+    const Eigen::Vector3d down(0.0, 1.0, 0.0);
+    const Eigen::Vector3d across(std::cos(turn_rad), 0.0, std::sin(turn_rad));
+    const double half_h = 0.5 * kHeightM;
+    const std::array<Eigen::Vector3d, 4> corners{
+        centre_m - 0.25 * across - half_h * down, centre_m + 0.25 * across - half_h * down,
+        centre_m + 0.25 * across + half_h * down, centre_m - 0.25 * across + half_h * down};
+    Pair p;
+    for (Detection* d : {&p.left, &p.right}) {
+      const bool left = d == &p.left;
+      const Eigen::Isometry3d pose = left ? Eigen::Isometry3d::Identity() : left_T_right_;
+      const head::CameraIntrinsics& camera = left ? calibration_.left : calibration_.right;
+      std::array<Eigen::Vector2d, 4> px;
+      for (int k = 0; k < 4; ++k) px[k] = project(corners[k], camera, pose);
+      // Where the line through a and b crosses row v.
+      const auto at_row = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double v) {
+        return Eigen::Vector2d(a.x() + (b.x() - a.x()) * (v - a.y()) / (b.y() - a.y()), v);
+      };
+      if (cut == BorderCut::kTop) {
+        px[0] = at_row(px[3], px[0], -0.5);
+        px[1] = at_row(px[2], px[1], -0.5);
+      } else {
+        px[2] = at_row(px[1], px[2], 479.5);
+        px[3] = at_row(px[0], px[3], 479.5);
+      }
+      d->type = "door";
+      d->border_cut = cut;
+      d->corners_px.assign(px.begin(), px.end());
+      d->reference_px = cut == BorderCut::kTop ? 0.5 * (px[2] + px[3]) : 0.5 * (px[0] + px[1]);
+      d->height_px = 0.5 * ((px[3] - px[0]).norm() + (px[2] - px[1]).norm());
+      d->area_px = 4000.0;
+      d->confidence = 0.8f;
+    }
+    return p;
+  }
+
+  std::vector<StereoPercept> match(const std::vector<Detection>& left,
+                                   const std::vector<Detection>& right,
+                                   std::vector<StereoPairTrace>* trace = nullptr) const {
+    return match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_,
+                                 options_, up_, trace);
+  }
+
+  static constexpr double kHeightM = 0.716;
+  head::StereoCalibration calibration_ = head::load_stereo_calibration("calib/armar3_sim.yaml");
+  Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
+  Eigen::Vector3d up_{0.0, -1.0, 0.0};
+  StereoMatchOptions options_;
+};
+
+// The door's top 0.36 m above the image (a wall cupboard from close by), 0.47 m of it in view.
+const Eigen::Vector3d kAbove(0.1, -0.75, 2.0);
+// Its bottom below the image (a base unit while the head looks at the worktop).
+const Eigen::Vector3d kBelow(-0.1, 0.8, 2.0);
+
+TEST_F(BorderCutTest, CentreFromTheWholeEdgeAndTheTypicalHeight) {
+  for (const auto& [centre, cut] :
+       {std::pair{kAbove, BorderCut::kTop}, std::pair{kBelow, BorderCut::kBottom}}) {
+    const Pair p = cut_door(centre, cut);
+    ASSERT_LT(p.left.corners_px[cut == BorderCut::kTop ? 3 : 0].y(), 479.0);
+    std::vector<StereoPairTrace> trace;
+    const std::vector<StereoPercept> percepts = match({p.left}, {p.right}, &trace);
+    ASSERT_EQ(percepts.size(), 1u);
+    EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 2e-3);
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_TRUE(trace[0].assigned);
+    // Along the up direction the centre is known only as the class's spread of heights:
+    // (0.12 / 2)^2 on top of the pixel noise's; across it, the pixel noise alone.
+    const Eigen::Matrix3d& covariance = percepts[0].left_camera_covariance_m2;
+    EXPECT_GT(up_.dot(covariance * up_), 0.06 * 0.06);
+    EXPECT_LT(Eigen::Vector3d::UnitX().dot(covariance * Eigen::Vector3d::UnitX()), 1e-4);
+    EXPECT_FLOAT_EQ(percepts[0].confidence, 0.8f);
+  }
+}
+
+TEST_F(BorderCutTest, ATypicalHeightOffTheDoorsMovesTheCentreByHalfTheDifference) {
+  options_.border_cut[0].typical_height_m = 0.8;
+  const Pair p = cut_door(kAbove, BorderCut::kTop);
+  const std::vector<StereoPercept> percepts = match({p.left}, {p.right});
+  ASSERT_EQ(percepts.size(), 1u);
+  // The bottom edge stays; the centre is 0.042 m higher.
+  EXPECT_LT((percepts[0].left_camera_position_m - (kAbove + 0.5 * (0.8 - kHeightM) * up_)).norm(),
+            2e-3);
+}
+
+TEST_F(BorderCutTest, VisibleHeightBetweenHalfAndAlmostAllOfTheTypical) {
+  const Pair p = cut_door(kAbove, BorderCut::kTop);
+  std::vector<StereoPairTrace> trace;
+  // 0.47 m in view: under half of a 1 m door (a drawer front is shorter than half a door) ...
+  options_.border_cut[0].typical_height_m = 1.0;
+  EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
+  EXPECT_NEAR(trace[0].value, 0.47, 0.01);
+  EXPECT_DOUBLE_EQ(trace[0].limit, 0.5);
+  // ... and more than a 0.4 m door: a door of another height, which nothing in view gives.
+  options_.border_cut[0].typical_height_m = 0.4;
+  EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
+  EXPECT_DOUBLE_EQ(trace[0].limit, 0.42);
+}
+
+TEST_F(BorderCutTest, WidthSideTiltAndEdgeGates) {
+  const Pair p = cut_door(kAbove, BorderCut::kTop);
+  std::vector<StereoPairTrace> trace;
+  options_.border_cut[0].min_width_m = 0.6;  // the door is 0.5 m wide
+  EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
+  EXPECT_NEAR(trace[0].value, 0.5, 0.01);
+  options_.border_cut[0].min_width_m = 0.3;
+  // The left outline's right side leans 20 px over its length: no door edge.
+  Pair tilted = p;
+  tilted.left.corners_px[1].x() += 20.0;
+  EXPECT_TRUE(match({tilted.left}, {tilted.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
+  // The right image's whole edge 8 px lower at one end: off the epipolar line.
+  Pair off = p;
+  off.right.corners_px[2].y() += 8.0;
+  EXPECT_TRUE(match({off.left}, {off.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kEpipolar);
+  // The right image's right side 8 px off (a stile lost): that side's depth is wrong, and its
+  // end on the left ray through the bottom right corner (0.2 rad above the optical axis) moves
+  // up or down with it: the bottom edge slopes, here by more than 0.1 rad.
+  Pair lost = p;
+  for (const int k : {1, 2}) lost.right.corners_px[k].x() -= 8.0;
+  options_.max_edge_slope_rad = 0.1;
+  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
+  EXPECT_TRUE(match({lost.left}, {lost.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
+  options_.max_edge_slope_rad = 0.3;
+  // Turned 83 deg, seen nearly edge-on (the normal about 80 deg from the ray): refused, as no
+  // outline is trusted at such angles.
+  EXPECT_EQ(match({cut_door(kAbove, BorderCut::kTop, 1.2).left},
+                  {cut_door(kAbove, BorderCut::kTop, 1.2).right})
+                .size(),
+            1u);
+  const Pair grazing = cut_door(kAbove, BorderCut::kTop, 1.45);
+  EXPECT_TRUE(match({grazing.left}, {grazing.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
+  EXPECT_LT(trace[0].value, 0.2);
+  // The right image's outline 30 px narrower: another strip of doors, not this door.
+  Pair narrow = p;
+  for (const int k : {1, 2}) narrow.right.corners_px[k].x() -= 30.0;
+  EXPECT_TRUE(match({narrow.left}, {narrow.right}, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kAreaRatio);
+}
+
+TEST_F(BorderCutTest, TwoHandlesInsideAreDrawersOrDoorsMerged) {
+  const Pair p = cut_door(kAbove, BorderCut::kTop);
+  Detection handle;
+  handle.type = "handle";
+  handle.reference_px = p.left.reference_px - Eigen::Vector2d(0.0, 30.0);
+  Detection second = handle;
+  second.reference_px.x() += 12.0;
+  std::vector<StereoPairTrace> trace;
+  // One handle inside (a door carries one): kept. Two: refused.
+  EXPECT_EQ(match({p.left, handle}, {p.right}).size(), 1u);
+  EXPECT_TRUE(match({p.left, handle, second}, {p.right}, &trace).empty());
+  ASSERT_FALSE(trace.empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kBarsInside);
+  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "bars_inside");
+  // A handle just beyond the outline's side (the neighbour's, of a double door) does not count.
+  Detection beyond = handle;
+  beyond.reference_px.x() = p.left.corners_px[2].x() + 1.0;
+  EXPECT_EQ(match({p.left, handle, beyond}, {p.right}).size(), 1u);
+}
+
+TEST_F(BorderCutTest, PairsOnlyWithADetectionCutAlongTheSameBorderOfAConfiguredClass) {
+  const Pair top = cut_door(kAbove, BorderCut::kTop);
+  Detection bottom = top.right;
+  bottom.border_cut = BorderCut::kBottom;
+  Detection whole = top.right;
+  whole.border_cut = BorderCut::kNone;
+  std::vector<StereoPairTrace> trace;
+  EXPECT_TRUE(match({top.left}, {bottom}, &trace).empty());
+  EXPECT_TRUE(trace.empty());
+  EXPECT_TRUE(match({top.left}, {whole}, &trace).empty());
+  EXPECT_TRUE(trace.empty());
+  // Without the class's typical height, or without the up direction: not paired.
+  StereoMatchOptions off = options_;
+  off.border_cut.clear();
+  EXPECT_TRUE(match_and_triangulate({top.left}, {top.right}, calibration_.left, calibration_.right,
+                                    left_T_right_, off, up_)
+                  .empty());
+  EXPECT_TRUE(match_and_triangulate({top.left}, {top.right}, calibration_.left, calibration_.right,
+                                    left_T_right_, options_)
+                  .empty());
+}
+
+}  // namespace
+}  // namespace vsl::recognition
