@@ -3,8 +3,9 @@
 // simulated head's calibration. BM_SideCorrelation: one door side placed by correlation along
 // the epipolar lines (side_correlation.hpp), a 200 px side searched over +-41 px (a door 140 px
 // wide), twice per door pair. BM_SingleViewDoor: a door outline placed from its own image alone
-// (single_view.hpp), both sides swept over the whole depth range. No main here: the fragments share
-// vsl_recognition_bench's.
+// (single_view.hpp), both sides swept over the whole depth range. BM_BorderCutPair: one pair of
+// door outlines cut by the top border matched and placed (border_cut.hpp), both sides correlated,
+// the correlators' set-up included. No main here: the fragments share vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
 #include <benchmark/benchmark.h>
@@ -117,6 +118,44 @@ void BM_SingleViewDoor(benchmark::State& state) {
   state.counters["depth_m"] = depth_m;
 }
 BENCHMARK(BM_SingleViewDoor)->Unit(benchmark::kMicrosecond);
+
+void BM_BorderCutPair(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  // A dark door 140 px wide 2 m ahead on a bright wall, its top above the image: 200 px (0.72 m)
+  // of it in view, 25 px of disparity.
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
+  left(cv::Rect(160, 0, 140, 200)).setTo(70);
+  right(cv::Rect(135, 0, 140, 200)).setTo(70);
+  const auto cut_outline = [](double u) {
+    Detection d;
+    d.type = "door";
+    d.border_cut = BorderCut::kTop;
+    d.corners_px = {{u - 0.5, -0.5}, {u + 139.5, -0.5}, {u + 139.5, 199.5}, {u - 0.5, 199.5}};
+    d.reference_px = {u + 69.5, 199.5};
+    d.height_px = 200.0;
+    d.area_px = 28000.0;
+    d.confidence = 0.9f;
+    return d;
+  };
+  StereoMatchOptions options;
+  options.min_side_correlation = 0.7;
+  options.max_edge_slope_rad = 0.3;
+  options.border_cut = {{"door", 0.716, 0.12, 0.3, 1.0, 0.09}};
+  const std::vector<Detection> left_detections{cut_outline(160.0)};
+  const std::vector<Detection> right_detections{cut_outline(135.0)};
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
+        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
+    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    benchmark::DoNotOptimize(depth_m);
+  }
+  state.counters["depth_m"] = depth_m;
+}
+BENCHMARK(BM_BorderCutPair)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition
