@@ -39,39 +39,58 @@ double square(double x) {
 }
 
 // The border that cuts `quad` (fitted with the image's size) along a whole side, and the quad
-// with that side moved onto the border: the side is the top (corners 0-1) or the bottom (2-3),
-// it lacks support (its line is only the hull's chord, not necessarily along the border), the
-// blob reaches that border, and the three other sides are seen (kMinBorderSideSupport), the left
-// and right ones nearer the image vertical. The cut side's corners become where the left and
-// right sides' lines leave the image (the outer edge of its first or last row). nullopt
-// otherwise.
+// with its corners renumbered so that the cut side is the top (corners 0-1) or the bottom (2-3),
+// and that side moved onto the border. The cut side is the one side without support (its line
+// is only the hull's chord, not necessarily along the border); the blob reaches the border it
+// faces (the top one when its middle is above the opposite side's); the three other sides are
+// seen (kMinBorderSideSupport), the two adjoining it nearer the image vertical. The numbering is
+// otherwise quadrilateral.hpp's clockwise one; its start, the corner of least u + v, is not the
+// top left when the outline's top edge slopes steeply, hence the renumbering. The cut side's
+// corners become where the adjoining sides' lines leave the image (the outer edge of its first
+// or last row). nullopt otherwise.
 std::optional<std::pair<BorderCut, BlobQuadrilateral>> border_cut_of(const BlobQuadrilateral& quad,
                                                                      const Blob& blob,
                                                                      int image_rows) {
-  const auto& c = quad.corners;
-  const auto supported = [&](int side) { return quad.side_support[side] >= kMinBorderSideSupport; };
+  int cut_side = -1;
+  for (int side = 0; side < 4; ++side) {
+    if (quad.side_support[side] >= kMinBorderSideSupport) continue;
+    if (cut_side >= 0) return std::nullopt;  // two sides unseen
+    cut_side = side;
+  }
+  if (cut_side < 0) return std::nullopt;
+  const auto& q = quad.corners;
+  const auto middle = [&](int side) { return 0.5 * (q[side] + q[(side + 1) % 4]); };
+  const bool top = middle(cut_side).y() < middle((cut_side + 2) % 4).y();
+  if (top ? blob.v_min != 0 : blob.v_max != image_rows - 1) return std::nullopt;
+  // Renumbered: out.corners[k] = q[(k + shift) % 4], the cut side becoming side 0 or 2.
+  const int shift = (cut_side - (top ? 0 : 2) + 4) % 4;
+  BlobQuadrilateral out = quad;
+  for (int k = 0; k < 4; ++k) {
+    out.corners[k] = q[(k + shift) % 4];
+    out.side_support[k] = quad.side_support[(k + shift) % 4];
+  }
+  auto& c = out.corners;
   const auto upright = [&](int side) {
     const Eigen::Vector2d d = c[(side + 1) % 4] - c[side];
     return std::abs(d.y()) > std::abs(d.x());
   };
-  if (!supported(1) || !supported(3) || !upright(1) || !upright(3)) return std::nullopt;
+  if (!upright(1) || !upright(3)) return std::nullopt;
   // Where the line through corners a and b crosses the row v.
   const auto at_row = [&](int a, int b, double v) {
     const Eigen::Vector2d d = c[b] - c[a];
     return Eigen::Vector2d(c[a].x() + d.x() * (v - c[a].y()) / d.y(), v);
   };
-  BlobQuadrilateral out = quad;
-  if (!supported(0) && supported(2) && blob.v_min == 0) {
-    out.corners[0] = at_row(3, 0, -0.5);
-    out.corners[1] = at_row(2, 1, -0.5);
+  if (top) {
+    const Eigen::Vector2d left = at_row(3, 0, -0.5), right = at_row(2, 1, -0.5);
+    c[0] = left;
+    c[1] = right;
     return std::pair{BorderCut::kTop, out};
   }
-  if (!supported(2) && supported(0) && blob.v_max == image_rows - 1) {
-    out.corners[2] = at_row(1, 2, image_rows - 0.5);
-    out.corners[3] = at_row(0, 3, image_rows - 0.5);
-    return std::pair{BorderCut::kBottom, out};
-  }
-  return std::nullopt;
+  const Eigen::Vector2d right = at_row(1, 2, image_rows - 0.5),
+                        left = at_row(0, 3, image_rows - 0.5);
+  c[2] = right;
+  c[3] = left;
+  return std::pair{BorderCut::kBottom, out};
 }
 
 // The area of a convex quadrilateral (corners in order), pixels.
