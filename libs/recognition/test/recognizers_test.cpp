@@ -303,6 +303,35 @@ TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
   EXPECT_NEAR(cut[1].reference_px.y(), 129.5, 1.0);
 }
 
+TEST(Recognizers, ABorderCutDoorWithASteepTopEdgeIsNumberedFromItsCut) {
+  // Seen from the side and above, the top edge of a door cut by the lower border climbs 60 px
+  // over its 40: its top right corner, not its top left, has the least u + v, where the outline's
+  // clockwise numbering starts (quadrilateral.hpp). The cut (bottom) side is still corners 2-3.
+  cv::Mat image(240, 320, CV_8UC3, kWallBgr);
+  const cv::Scalar door_bgr = kDoorBgr * 0.62;
+  const std::vector<cv::Point> outline{{150, 150}, {190, 90}, {190, 239}, {150, 239}};
+  cv::fillConvexPoly(image, outline, door_bgr);
+  add_noise(image, 19);
+  const std::vector<Blob> blobs{colour_blob(image, door_bgr, 12.0, cv::Rect(0, 0, 320, 240))};
+  DoorRecognizerParameters parameters;
+  parameters.detect_border_cut = true;
+  std::vector<Detection> out;
+  DoorRecognizer(
+      diagonal_model("door", door_descriptor_names(), {1.1, 1.1, 0.95, 0.04, 0.08, 0.7, 0.01},
+                     {0.3, 0.3, 0.1, 0.06, 0.1, 0.5, 0.03}),
+      parameters)
+      .recognize(image, blobs, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].border_cut, BorderCut::kBottom);
+  const std::vector<Eigen::Vector2d>& c = out[0].corners_px;
+  EXPECT_NEAR(c[0].x(), 149.5, 1.5);  // top left
+  EXPECT_NEAR(c[0].y(), 150.0, 1.5);
+  EXPECT_NEAR(c[1].x(), 190.5, 1.5);  // top right
+  EXPECT_NEAR(c[1].y(), 89.5, 1.5);
+  EXPECT_DOUBLE_EQ(c[2].y(), 239.5);  // where the sides leave the image
+  EXPECT_DOUBLE_EQ(c[3].y(), 239.5);
+}
+
 TEST(Recognizers, ModelMustMatchTheDescriptor) {
   const GaussianClassModel handle_model =
       read_recognizer_file("config/recognition/handle.yaml").model;
