@@ -94,7 +94,8 @@ std::optional<Candidate> judge_border_cut_pair(
       left.reference, right.reference, options.pixel_sigma_px, reference_offset_m);
   if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
   // Each side's depth where the images around it correlate, searched around the outlines' depth
-  // (one image's outline may lack a stile); a side that does not correlate keeps the outlines'.
+  // (one image's outline may lack a stile); a side that does not correlate, or not unambiguously,
+  // keeps the outlines'.
   if (correlator) {
     const std::array<Eigen::Vector2d, 4>& c = left.corners_ideal_px;
     const double search_px = kSideSearchPx + kSideSearchWidthFraction * 0.5 *
@@ -107,6 +108,9 @@ std::optional<Candidate> judge_border_cut_pair(
       const auto depth = correlator->correlate(c[top], c[bottom], initial_m, search_px,
                                                options.min_depth_m, options.max_depth_m);
       if (!depth || depth->correlation < options.min_side_correlation) continue;
+      // A run of equal doors repeats every edge a door's width away: a side whose best score
+      // does not beat its second-best distinct peak keeps the outlines' depth.
+      if (depth->second_correlation > depth->correlation - door.min_peak_margin) continue;
       const auto top_point = correlator->point_at(c[top], depth->horizontal_distance_m);
       const auto bottom_point = correlator->point_at(c[bottom], depth->horizontal_distance_m);
       if (!top_point || !bottom_point) continue;

@@ -104,7 +104,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       const config::Node door = classes->at(type);
       door.expect_map();
       door.expect_keys({"typical_height_m", "height_sigma_m", "min_width_m", "max_width_m",
-                        "max_side_tilt_rad"});
+                        "max_side_tilt_rad", "min_peak_margin"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
       parsed.typical_height_m = door.at("typical_height_m").as_double_in(0.01, 100.0);
@@ -116,6 +116,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       }
       if (const auto v = door.find("max_side_tilt_rad")) {
         parsed.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2, as max_side_tilt_rad
+      }
+      if (const auto v = door.find("min_peak_margin")) {
+        parsed.min_peak_margin = v->as_double_in(0.0, 2.0);  // correlations differ by at most 2
       }
       out.border_cut.push_back(parsed);
     }

@@ -493,7 +493,7 @@ stereo:
   single_view_max_bars_inside: 2
   border_cut:
     door: {typical_height_m: 0.7, height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
-           max_side_tilt_rad: 0.09}
+           max_side_tilt_rad: 0.09, min_peak_margin: 0.15}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -530,6 +530,7 @@ stereo:
   EXPECT_EQ(o.border_cut[0].min_width_m, 0.3);
   EXPECT_EQ(o.border_cut[0].max_width_m, 1.0);
   EXPECT_EQ(o.border_cut[0].max_side_tilt_rad, 0.09);
+  EXPECT_EQ(o.border_cut[0].min_peak_margin, 0.15);
 }
 
 std::string stereo_error(const std::string& body) {

@@ -125,11 +125,11 @@ struct StereoMatchOptions {
   // times it (a door seen taller is of some other height, a tall unit's), at most
   // single_view_max_bars_inside bar detections (handles) lie inside each outline, and the centre
   // is within the depth range. With min_side_correlation, each side is placed where the images
-  // around it correlate, as for whole outlines. The centre is the edge's middle moved half the
-  // typical height along the up direction (towards the border that cuts it). Its covariance is the
-  // pixel noise's at the edge's middle plus (height_sigma_m / 2)^2 along the up direction: the
-  // spread of the class's heights. Detections cut along a border, of classes not listed here, are
-  // not paired. Needs the up direction.
+  // around it correlate, as for whole outlines, when that peak is clear (min_peak_margin). The
+  // centre is the edge's middle moved half the typical height along the up direction (towards the
+  // border that cuts it). Its covariance is the pixel noise's at the edge's middle plus
+  // (height_sigma_m / 2)^2 along the up direction: the spread of the class's heights. Detections
+  // cut along a border, of classes not listed here, are not paired. Needs the up direction.
   struct BorderCutDoor {
     std::string type;
     double typical_height_m = 0.0;  // the height of the class's most common door, metres
@@ -140,6 +140,10 @@ struct StereoMatchOptions {
     // off). A cut outline's sides are shorter and end at the border rather than at a corner, so
     // they are fitted less well than a whole outline's.
     double max_side_tilt_rad = 0.0;
+    // With min_side_correlation: a side is placed by correlation only when its best score beats
+    // its second-best distinct peak by this (SideCorrelator::SideDepth::second_correlation; a run
+    // of equal doors repeats every edge), else it keeps the outlines' depth. 0: any best peak.
+    double min_peak_margin = 0.0;
   };
   std::vector<BorderCutDoor> border_cut;
 };
