@@ -6,6 +6,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_correlation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/single_view.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/border_cut.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pair.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_assignment.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_options.cpp

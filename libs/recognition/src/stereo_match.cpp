@@ -1,6 +1,7 @@
-// Left-right cross match and triangulation (paper §2.1): the gates of each pair are here.
-// Geometry: epipolar.hpp (gate) and triangulation.hpp (point and covariance); the one-to-one
-// assignment: stereo_assignment.hpp.
+// Left-right cross match and triangulation (paper §2.1): the gates of each pair, in order. The
+// door outlines' own gates and centre: door_pair.hpp; doors cut by the image border:
+// border_cut.hpp; doors from one image: single_view.hpp. Geometry: epipolar.hpp (gate) and
+// triangulation.hpp (point and covariance); the one-to-one assignment: stereo_assignment.hpp.
 #include "vsl/recognition/stereo_match.hpp"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <optional>
 
 #include "border_cut.hpp"
+#include "door_pair.hpp"
 #include "epipolar.hpp"
 #include "side_correlation.hpp"
 #include "single_view.hpp"
@@ -19,12 +21,6 @@
 
 namespace vsl::recognition {
 namespace {
-
-// rectangle_containment_excess_px: a strip that segmentation adds in one image only is at most
-// this fraction of the longer side (top edge face, shadow: a few pixels). Without the bound the
-// galley gained 3 true and 5 false door percepts (drawer stacks merged in one image); the kitchen
-// was the same for any bound from 0.15 to 1 and lost recall at 0.1.
-constexpr double kMaxRectangleSideMismatch = 0.15;
 
 // Added to each bar's mean width (pixels) before their ratio is compared: the quantization of a
 // thin bar's two edges.
@@ -124,38 +120,6 @@ const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& op
     if (range.type == type) return &range;
   }
   return nullptr;
-}
-
-// How far two views of a rectangle's vertical sides fail to nest along the epipolar direction
-// (pixels): for each side (corners 0-3 and 1-2, clockwise from the top left), the signed
-// distances of the right image's top and bottom ends from the epipolar lines of the left image's
-// (positive down the side). One image's side may lie within the other's: segmentation adds a
-// strip along the top or the bottom of a door in one image only (its top edge face seen from
-// above, the shadow under the worktop), which moves the outline's centre but not its sides. A
-// side shifted as a whole is a wrong pairing, and one more than kMaxRectangleSideMismatch longer
-// than the other is two objects merged in one image (a drawer stack against one drawer front);
-// both count as excess.
-double rectangle_containment_excess_px(const std::vector<detail::IdealPixel>& left,
-                                       const std::vector<detail::IdealPixel>& right,
-                                       const detail::EpipolarGeometry& epipolar) {
-  double excess = 0.0;
-  for (const auto& [top, bottom] : {std::pair{0, 3}, std::pair{1, 2}}) {
-    const Eigen::Vector2d down = right[bottom].ideal_px - right[top].ideal_px;
-    const auto signed_px = [&](int k) {
-      const Eigen::Vector3d line = epipolar.right_line(left[k].ideal_px);
-      const double d = line.head<2>().dot(right[k].ideal_px) + line.z();
-      return line.head<2>().dot(down) >= 0.0 ? d : -d;
-    };
-    const double d_top = signed_px(top), d_bottom = signed_px(bottom);
-    const double right_within_left = std::max({0.0, -d_top, d_bottom});
-    const double left_within_right = std::max({0.0, d_top, -d_bottom});
-    excess = std::max(excess, std::min(right_within_left, left_within_right));
-    const double left_px = (left[bottom].ideal_px - left[top].ideal_px).norm();
-    const double right_px = down.norm();
-    excess = std::max(excess, std::abs(left_px - right_px) -
-                                  kMaxRectangleSideMismatch * std::max(left_px, right_px));
-  }
-  return excess;
 }
 
 }  // namespace
@@ -258,7 +222,8 @@ std::vector<StereoPercept> match_and_triangulate(
         bar ? bar->containment_excess_px
             : epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
     if (rectangles) {
-      epipolar_px = rectangle_containment_excess_px(left_corners[l], right_corners[r], epipolar);
+      epipolar_px =
+          detail::rectangle_containment_excess_px(left_corners[l], right_corners[r], epipolar);
     }
     const double max_epipolar_px =
         rectangles ? std::max(options.max_epipolar_distance_px,
@@ -267,48 +232,13 @@ std::vector<StereoPercept> match_and_triangulate(
     if (!(epipolar_px <= max_epipolar_px)) {
       return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
     }
-    // A pair of outlines with one side that is no door edge in one image (tilted: an
-    // occluder's contour, a neighbour's strip) still has its centre from the three good sides
-    // (Triangulator::rectangle_centre_from_one_side); more than one such side is refused.
-    std::optional<Eigen::Vector3d> one_side_centre;
-    int side_needing_correlation = -1;     // a side placed only if the images correlate it
-    bool side_needing_left_image = false;  // ... tilted in the left outline, not the right
-    double worst_tilt = 0.0;               // sin, of the sides judged by side_tilts
-    if (rectangles && options.max_side_tilt_rad > 0.0 && up_in_left_camera.norm() > 0.0) {
-      const std::array<std::array<double, 2>, 2> tilts = triangulator.side_tilts(
-          corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera);
-      const double max_sin = std::sin(options.max_side_tilt_rad);
-      int bad = 0, bad_side = -1, bad_image = -1;
-      double tilt = 0.0;
-      for (int side = 0; side < 2; ++side) {
-        for (int image = 0; image < 2; ++image) {
-          tilt = std::max(tilt, tilts[side][image]);
-          if (tilts[side][image] > max_sin) {
-            ++bad;
-            bad_side = side;
-            bad_image = image;
-          }
-        }
-      }
-      if (bad == 1) {
-        one_side_centre = triangulator.rectangle_centre_from_one_side(
-            corner_array(left_corners[l]), corner_array(right_corners[r]), up_in_left_camera,
-            1 - bad_side, 1 - bad_image);
-        // Otherwise the side tilted in one outline is still a door edge in the other image: its
-        // depth can come from the images (side_correlation.hpp), swept from that image, instead
-        // of from the horizontal planes, which fail where the door's top or bottom edge is near
-        // the cameras' height (or the outline's corner there is off). The pair is kept only if
-        // that side correlates, and then passes the level-edge gate like any other.
-        if (!one_side_centre && correlator) {
-          side_needing_correlation = bad_side;
-          side_needing_left_image = bad_image == 0;
-        }
-      }
-      worst_tilt = tilt;
-      if (bad > 0 && !one_side_centre && side_needing_correlation < 0) {
-        return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
-                      options.max_side_tilt_rad);
-      }
+    // The side gate of two door outlines (door_pair.hpp).
+    std::optional<detail::DoorSides> sides;
+    if (rectangles) {
+      sides = detail::judge_door_sides(
+          {corner_array(left_corners[l]), corner_array(right_corners[r])}, triangulator,
+          up_in_left_camera, correlator.has_value(), options, trace);
+      if (!sides) return std::nullopt;
     }
     // Size: both cameras are about equally far from the object, so the areas agree.
     // Two views of a bar: their mean widths (one may be a fragment of the other), each with a
@@ -350,80 +280,17 @@ std::vector<StereoPercept> match_and_triangulate(
       point = bar->centre_m;
       triangulation->left_camera_position_m = point + offset * point.normalized();
     }
+    // Two door outlines: the centre from their vertical sides (door_pair.hpp).
     bool rectangle = false;
     if (rectangles) {
-      std::optional<Eigen::Vector3d> centre = one_side_centre;
-      if (!one_side_centre) {
-        std::optional<std::array<Eigen::Vector3d, 4>> ends =
-            triangulator.rectangle_ends(corner_array(left_corners[l]),
-                                        corner_array(right_corners[r]), side_needing_correlation);
-        // Each side's depth from the images around it (side_correlation.hpp), searched around
-        // the outlines' depth by a margin that covers a stile lost in one image.
-        if (!ends && side_needing_correlation >= 0) {
-          return refuse(StereoGate::kSideTilt, std::asin(std::min(worst_tilt, 1.0)),
-                        options.max_side_tilt_rad);
-        }
-        if (ends && correlator) {
-          const std::array<Eigen::Vector2d, 4> corners = corner_array(left_corners[l]);
-          const auto sides = detail::Triangulator::vertical_sides(corners);
-          const double width_px = 0.5 * (corners[sides[0][0]] + corners[sides[0][1]] -
-                                         corners[sides[1][0]] - corners[sides[1][1]])
-                                            .norm();
-          const double search_px =
-              detail::kSideSearchPx + detail::kSideSearchWidthFraction * width_px;
-          for (int s = 0; s < 2; ++s) {
-            const auto [i, j] = sides[static_cast<std::size_t>(s)];
-            // A side tilted in the left outline is searched from the right image's side into
-            // the left image: the same sweep with the cameras' roles swapped.
-            const bool from_right = s == side_needing_correlation && side_needing_left_image;
-            const detail::SideCorrelator& sweep = from_right ? *reverse_correlator : *correlator;
-            const std::array<Eigen::Vector2d, 4> seen =
-                from_right ? corner_array(right_corners[r]) : corners;
-            const Eigen::Isometry3d to_sweep =
-                from_right ? left_T_right.inverse() : Eigen::Isometry3d::Identity();
-            // Around the outlines' depth of the side; for the tilted one, of the good side: the
-            // tilted outline's ends are off, and the two sides of a door differ by a few pixels
-            // of disparity at most (0.5 m turned 40 deg at 2.5 m: 2.5 px).
-            const int from = s == side_needing_correlation ? 1 - s : s;
-            const double initial_m =
-                0.5 * (sweep.horizontal_distance(to_sweep * (*ends)[2 * from]) +
-                       sweep.horizontal_distance(to_sweep * (*ends)[2 * from + 1]));
-            const auto depth = sweep.correlate(seen[i], seen[j], initial_m, search_px,
-                                               options.min_depth_m, options.max_depth_m);
-            const double correlation = depth ? depth->correlation : -1.0;
-            auto top = depth ? sweep.point_at(seen[i], depth->horizontal_distance_m) : std::nullopt;
-            auto bottom =
-                depth ? sweep.point_at(seen[j], depth->horizontal_distance_m) : std::nullopt;
-            if (from_right && top && bottom) {
-              top = left_T_right * *top;
-              bottom = left_T_right * *bottom;
-            }
-            if (correlation < options.min_side_correlation || !top || !bottom) {
-              if (s == side_needing_correlation) {
-                return refuse(StereoGate::kSideTilt, std::asin(std::min(worst_tilt, 1.0)),
-                              options.max_side_tilt_rad);
-              }
-              continue;
-            }
-            (*ends)[2 * s] = *top;
-            (*ends)[2 * s + 1] = *bottom;
-          }
-        }
-        if (ends) {
-          centre = detail::Triangulator::rectangle_centre(*ends);
-          // Both sides measured: the edges between their ends must be level.
-          if (options.max_edge_slope_rad > 0.0) {
-            const std::optional<double> slope =
-                detail::Triangulator::edge_slope(*ends, up_in_left_camera);
-            if (slope && std::atan(*slope) > options.max_edge_slope_rad) {
-              return refuse(StereoGate::kEdgeSlope, std::atan(*slope), options.max_edge_slope_rad);
-            }
-          }
-        }
-      }
-      if (centre) {
-        point = *centre;
-        triangulation->left_camera_position_m = *centre + offset * centre->normalized();
+      const detail::DoorCentre door = detail::door_centre(
+          {corner_array(left_corners[l]), corner_array(right_corners[r])}, *sides, triangulator,
+          correlator ? &*correlator : nullptr, reverse_correlator ? &*reverse_correlator : nullptr,
+          left_T_right, up_in_left_camera, options, trace);
+      if (door.refused) return std::nullopt;
+      if (door.centre) {
+        point = *door.centre;
+        triangulation->left_camera_position_m = point + offset * point.normalized();
         rectangle = true;
       }
     }
