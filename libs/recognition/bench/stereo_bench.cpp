@@ -142,7 +142,7 @@ void BM_BorderCutPair(benchmark::State& state) {
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_edge_slope_rad = 0.3;
-  options.border_cut = {{"door", 0.716, 0.12, 0.3, 1.0, 0.09}};
+  options.border_cut = {{"door", {0.716, 1.246}, 0.12, 0.3, 1.0, 0.09, 0.1}};
   const std::vector<Detection> left_detections{cut_outline(160.0)};
   const std::vector<Detection> right_detections{cut_outline(135.0)};
   double depth_m = 0.0;

@@ -8,8 +8,9 @@
 // whole edge are the door's corners, the others where the side leaves the left image. Then, with
 // u the unit up direction and E_a, E_b the whole edge's two ends,
 //   visible height   h_v = ((T_0 - B_0) . u + (T_1 - B_1) . u) / 2   (T, B: each side's ends),
-//   centre           C   = (E_a + E_b) / 2 + s h_typ / 2 u,   s = +1 under a top cut, -1 a bottom,
-// for h_typ / 2 <= h_v <= 1.05 h_typ (half the door in view, and no taller than typical),
+//   door height      h   = the least typical height h_k with h_v <= 1.05 h_k,
+//   centre           C   = (E_a + E_b) / 2 + s h / 2 u,   s = +1 under a top cut, -1 a bottom,
+// for h_v >= h_1 / 2 (half the least typical door in view) and h_v <= 1.05 h_K (the tallest),
 // and the covariance that of the edge's middle triangulated from the two reference points (the
 // pixel noise) plus (sigma_h / 2)^2 u u^T: the hidden part of the door is known only as the
 // class's spread of heights.
@@ -144,17 +145,22 @@ std::optional<Candidate> judge_border_cut_pair(
   const Eigen::Vector3d normal = (edge_b - edge_a).cross(u).normalized();
   const double cos_viewing = std::abs(normal.dot((0.5 * (edge_a + edge_b)).normalized()));
   if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
-  // At least half a typical door in view, and no more than a typical door: a door seen taller
-  // than that is of another height (a tall unit's), which nothing in view tells.
+  // At least half the least typical door in view, and no more than the tallest: a door seen
+  // taller than any typical one is of a height the class does not give.
   const double visible_m =
       0.5 * (((*ends)[0] - (*ends)[1]).dot(u) + ((*ends)[2] - (*ends)[3]).dot(u));
-  if (visible_m < 0.5 * door.typical_height_m) {
-    return refuse(StereoGate::kHeight, visible_m, 0.5 * door.typical_height_m);
+  if (door.typical_heights_m.empty() || visible_m < 0.5 * door.typical_heights_m.front()) {
+    return refuse(StereoGate::kHeight, visible_m,
+                  door.typical_heights_m.empty() ? 0.0 : 0.5 * door.typical_heights_m.front());
   }
-  const double max_visible_m = kMaxVisibleOfTypical * door.typical_height_m;
-  if (visible_m > max_visible_m) return refuse(StereoGate::kHeight, visible_m, max_visible_m);
-  const Eigen::Vector3d centre =
-      0.5 * (edge_a + edge_b) + (top_cut ? 0.5 : -0.5) * door.typical_height_m * u;
+  // The door's height: the least typical height that the visible part does not exceed.
+  const auto height = std::find_if(door.typical_heights_m.begin(), door.typical_heights_m.end(),
+                                   [&](double h) { return visible_m <= kMaxVisibleOfTypical * h; });
+  if (height == door.typical_heights_m.end()) {
+    const double max_visible_m = kMaxVisibleOfTypical * door.typical_heights_m.back();
+    return refuse(StereoGate::kHeight, visible_m, max_visible_m);
+  }
+  const Eigen::Vector3d centre = 0.5 * (edge_a + edge_b) + (top_cut ? 0.5 : -0.5) * *height * u;
   if (centre.z() < options.min_depth_m) {
     return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
   }

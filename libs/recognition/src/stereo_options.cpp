@@ -1,7 +1,11 @@
 // The `stereo:` config section -> StereoMatchOptions, and the `recognition:` section's
 // `segmentation:` and `stereo:` -> FrameRecognizerOptions. Every key is optional (defaults are the
 // structs'); a wrong value or an unknown key is one line "file:line: key: what".
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "vsl/config/node.hpp"
 #include "vsl/recognition/frame_recognizer.hpp"
@@ -103,12 +107,20 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     for (const std::string& type : classes->keys()) {
       const config::Node door = classes->at(type);
       door.expect_map();
-      door.expect_keys({"typical_height_m", "height_sigma_m", "min_width_m", "max_width_m",
+      door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
                         "max_side_tilt_rad", "min_peak_margin"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
-      parsed.typical_height_m = door.at("typical_height_m").as_double_in(0.01, 100.0);
-      parsed.height_sigma_m = door.at("height_sigma_m").as_double_in(0.0, parsed.typical_height_m);
+      const config::Node heights = door.at("typical_heights_m");
+      parsed.typical_heights_m = heights.as_doubles();
+      const std::vector<double>& h = parsed.typical_heights_m;
+      const bool finite =
+          std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x); });
+      if (h.empty() || !finite || !(h.front() > 0.0) || !(h.back() <= 100.0) ||
+          std::adjacent_find(h.begin(), h.end(), std::greater_equal<>()) != h.end()) {
+        heights.fail("expected a list of heights in metres, ascending, in (0, 100]");
+      }
+      parsed.height_sigma_m = door.at("height_sigma_m").as_double_in(0.0, h.front());
       parsed.min_width_m = door.at("min_width_m").as_double_in(0.0, 100.0);
       parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
       if (!(parsed.max_width_m > parsed.min_width_m)) {

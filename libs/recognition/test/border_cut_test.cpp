@@ -22,7 +22,7 @@ class BorderCutTest : public ::testing::Test {
   BorderCutTest() {
     options_.bar_types = {"handle"};
     options_.max_edge_slope_rad = 0.3;
-    options_.border_cut = {{"door", kHeightM, 0.12, 0.3, 1.0, 0.09}};
+    options_.border_cut = {{"door", {kHeightM}, 0.12, 0.3, 1.0, 0.09, 0.0}};
   }
 
   // A door 0.5 m wide and kHeightM tall, turned `turn_rad` about the vertical, its centre at
@@ -108,7 +108,7 @@ TEST_F(BorderCutTest, CentreFromTheWholeEdgeAndTheTypicalHeight) {
 }
 
 TEST_F(BorderCutTest, ATypicalHeightOffTheDoorsMovesTheCentreByHalfTheDifference) {
-  options_.border_cut[0].typical_height_m = 0.8;
+  options_.border_cut[0].typical_heights_m = {0.8};
   const Pair p = cut_door(kAbove, BorderCut::kTop);
   const std::vector<StereoPercept> percepts = match({p.left}, {p.right});
   ASSERT_EQ(percepts.size(), 1u);
@@ -121,17 +121,24 @@ TEST_F(BorderCutTest, VisibleHeightBetweenHalfAndAlmostAllOfTheTypical) {
   const Pair p = cut_door(kAbove, BorderCut::kTop);
   std::vector<StereoPairTrace> trace;
   // 0.47 m in view: under half of a 1 m door (a drawer front is shorter than half a door) ...
-  options_.border_cut[0].typical_height_m = 1.0;
+  options_.border_cut[0].typical_heights_m = {1.0};
   EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
   EXPECT_NEAR(trace[0].value, 0.47, 0.01);
   EXPECT_DOUBLE_EQ(trace[0].limit, 0.5);
   // ... and more than a 0.4 m door: a door of another height, which nothing in view gives.
-  options_.border_cut[0].typical_height_m = 0.4;
+  options_.border_cut[0].typical_heights_m = {0.4};
   EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
   EXPECT_DOUBLE_EQ(trace[0].limit, 0.42);
+  // With a second, taller typical height of 1 m (a tall unit's door): the door is
+  // placed as one of those, its centre 0.5 m above the bottom edge.
+  options_.border_cut[0].typical_heights_m = {0.4, 1.0};
+  const std::vector<StereoPercept> tall = match({p.left}, {p.right});
+  ASSERT_EQ(tall.size(), 1u);
+  EXPECT_LT((tall[0].left_camera_position_m - (kAbove + 0.5 * (1.0 - kHeightM) * up_)).norm(),
+            2e-3);
 }
 
 TEST_F(BorderCutTest, WidthSideTiltAndEdgeGates) {

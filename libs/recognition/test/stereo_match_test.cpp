@@ -492,7 +492,7 @@ stereo:
   single_view_min_separation_m: 0.25
   single_view_max_bars_inside: 2
   border_cut:
-    door: {typical_height_m: 0.7, height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
+    door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15}
 )",
                                               "stereo.yaml");
@@ -525,7 +525,7 @@ stereo:
   EXPECT_EQ(o.single_view_max_bars_inside, 2);
   ASSERT_EQ(o.border_cut.size(), 1u);
   EXPECT_EQ(o.border_cut[0].type, "door");
-  EXPECT_EQ(o.border_cut[0].typical_height_m, 0.7);
+  EXPECT_EQ(o.border_cut[0].typical_heights_m, (std::vector<double>{0.7, 1.2}));
   EXPECT_EQ(o.border_cut[0].height_sigma_m, 0.1);
   EXPECT_EQ(o.border_cut[0].min_width_m, 0.3);
   EXPECT_EQ(o.border_cut[0].max_width_m, 1.0);
@@ -581,19 +581,24 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
             std::string::npos);
   EXPECT_NE(stereo_error("  min_single_view_correlation: 0.7\n").find("needs min_side_correlation"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_height_m: 0.7, height_sigma_m: 0.1, "
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
                          "min_width_m: 0.5, max_width_m: 0.4}}\n")
                 .find("s.yaml:2: stereo.border_cut.door.max_width_m: must exceed min_width_m"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_height_m: 0.7, height_sigma_m: 0.1, "
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
                          "min_width_m: 0.3}}\n")
                 .find("max_width_m"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_height_m: 0.7, height_sigma_m: 0.9, "
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.9, "
                          "min_width_m: 0.3, max_width_m: 1}}\n")
                 .find("stereo.border_cut.door.height_sigma_m"),
             std::string::npos);
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_height: 0.7}}\n").find("unknown key"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [1.2, 0.7], height_sigma_m: "
+                         "0.1, min_width_m: 0.3, max_width_m: 1}}\n")
+                .find("s.yaml:2: stereo.border_cut.door.typical_heights_m: expected a list of "
+                      "heights in metres, ascending"),
             std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {

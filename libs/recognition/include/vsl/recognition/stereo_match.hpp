@@ -115,26 +115,30 @@ struct StereoMatchOptions {
   int single_view_max_bars_inside = 1;
   // Optional, per class: doors cut by the top or bottom image border along a whole side
   // (Detection::border_cut), placed from the edge they show whole and the class's typical
-  // height. Two detections cut along the same border make a pair when the ends of that edge lie
+  // heights. Two detections cut along the same border make a pair when the ends of that edge lie
   // on each other's epipolar lines (max_epipolar_distance_px, or kRectangleEpipolarFraction of the
-  // visible height), the vertical sides are vertical in 3D (this struct's max_side_tilt_rad, in
-  // place of the whole outlines'), the edge is level
-  // (max_edge_slope_rad) and min_width_m .. max_width_m long (a strip of a door that
-  // segmentation split off is narrower), the sides' visible length is at least half the typical
-  // height (a door half in view; a drawer front of the same colour is shorter) and at most 1.05
-  // times it (a door seen taller is of some other height, a tall unit's), at most
+  // visible height), the edge is about as long in both images, the vertical sides are vertical in
+  // 3D (this struct's max_side_tilt_rad, in place of the whole outlines'), the edge is level
+  // (max_edge_slope_rad), min_width_m .. max_width_m long (a strip of a door that segmentation
+  // split off is narrower) and seen from within about 78 deg of head-on, the sides' visible
+  // length is at least half the least typical height (a door half in view; a drawer front of the
+  // same colour is shorter) and at most 1.05 times the tallest, at most
   // single_view_max_bars_inside bar detections (handles) lie inside each outline, and the centre
   // is within the depth range. With min_side_correlation, each side is placed where the images
   // around it correlate, as for whole outlines, when that peak is clear (min_peak_margin). The
-  // centre is the edge's middle moved half the typical height along the up direction (towards the
-  // border that cuts it). Its covariance is the pixel noise's at the edge's middle plus
-  // (height_sigma_m / 2)^2 along the up direction: the spread of the class's heights. Detections
-  // cut along a border, of classes not listed here, are not paired. Needs the up direction.
+  // centre is the edge's middle moved half the door's height (typical_heights_m) along the up
+  // direction, towards the border that cuts it. Its covariance is the pixel noise's at the edge's
+  // middle plus (height_sigma_m / 2)^2 along the up direction: the spread of the class's
+  // heights. Detections cut along a border, of classes not listed here, are not paired. Needs the
+  // up direction.
   struct BorderCutDoor {
     std::string type;
-    double typical_height_m = 0.0;  // the height of the class's most common door, metres
-    double height_sigma_m = 0.0;    // the spread of the class's heights about it, metres
-    double min_width_m = 0.0;       // of the whole edge
+    // The class's common door heights, ascending, metres. A cut door is as tall as the least of
+    // them that its visible height does not exceed by more than 5%: a door seen taller than a
+    // wall cupboard's is a tall unit's. At least half of the least must be in view.
+    std::vector<double> typical_heights_m;
+    double height_sigma_m = 0.0;  // the spread of the class's heights about them, metres
+    double min_width_m = 0.0;     // of the whole edge
     double max_width_m = 0.0;
     // The sides' tilt from vertical (as StereoMatchOptions::max_side_tilt_rad; 0 turns the test
     // off). A cut outline's sides are shorter and end at the border rather than at a corner, so
