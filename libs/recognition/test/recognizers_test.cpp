@@ -254,6 +254,21 @@ TEST(Recognizers, BlobsOnTheImageBorderAreNotJudged) {
   EXPECT_TRUE(out.empty());
 }
 
+// The detections of the synthetic door model (synthetic_recognizers) with border-cut doors on or
+// off (DoorRecognizerParameters::detect_border_cut).
+std::vector<Detection> synthetic_door_detections(const cv::Mat& image,
+                                                 const std::vector<Blob>& blobs, bool border_cut) {
+  DoorRecognizerParameters parameters;
+  parameters.detect_border_cut = border_cut;
+  std::vector<Detection> out;
+  DoorRecognizer(
+      diagonal_model("door", door_descriptor_names(), {1.1, 1.1, 0.95, 0.04, 0.08, 0.7, 0.01},
+                     {0.3, 0.3, 0.1, 0.06, 0.1, 0.5, 0.03}),
+      parameters)
+      .recognize(image, blobs, out);
+  return out;
+}
+
 TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
   // A door panel whose top the image's upper border cuts (a wall cupboard seen from close by),
   // one whose bottom the lower border cuts, one cut by the left border, and a short strip cut by
@@ -269,19 +284,8 @@ TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
   for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, notched}) {
     blobs.push_back(colour_blob(image, door_bgr, 12.0, r));
   }
-  const auto detect = [&](bool on) {
-    DoorRecognizerParameters parameters;
-    parameters.detect_border_cut = on;
-    std::vector<Detection> out;
-    DoorRecognizer(
-        diagonal_model("door", door_descriptor_names(), {1.1, 1.1, 0.95, 0.04, 0.08, 0.7, 0.01},
-                       {0.3, 0.3, 0.1, 0.06, 0.1, 0.5, 0.03}),
-        parameters)
-        .recognize(image, blobs, out);
-    return out;
-  };
-  EXPECT_TRUE(detect(false).empty());
-  const std::vector<Detection> cut = detect(true);
+  EXPECT_TRUE(synthetic_door_detections(image, blobs, false).empty());
+  const std::vector<Detection> cut = synthetic_door_detections(image, blobs, true);
   ASSERT_EQ(cut.size(), 2u);
   // Top cut: the corners on the cut side where the sides leave the image (the outer edge of
   // row 0), the reference point the middle of the bottom edge, the height the visible sides'.
@@ -313,14 +317,7 @@ TEST(Recognizers, ABorderCutDoorWithASteepTopEdgeIsNumberedFromItsCut) {
   cv::fillConvexPoly(image, outline, door_bgr);
   add_noise(image, 19);
   const std::vector<Blob> blobs{colour_blob(image, door_bgr, 12.0, cv::Rect(0, 0, 320, 240))};
-  DoorRecognizerParameters parameters;
-  parameters.detect_border_cut = true;
-  std::vector<Detection> out;
-  DoorRecognizer(
-      diagonal_model("door", door_descriptor_names(), {1.1, 1.1, 0.95, 0.04, 0.08, 0.7, 0.01},
-                     {0.3, 0.3, 0.1, 0.06, 0.1, 0.5, 0.03}),
-      parameters)
-      .recognize(image, blobs, out);
+  const std::vector<Detection> out = synthetic_door_detections(image, blobs, true);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].border_cut, BorderCut::kBottom);
   const std::vector<Eigen::Vector2d>& c = out[0].corners_px;
