@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -184,6 +186,49 @@ TEST_F(BorderCutTest, WidthSideTiltAndEdgeGates) {
   for (const int k : {1, 2}) narrow.right.corners_px[k].x() -= 30.0;
   EXPECT_TRUE(match({narrow.left}, {narrow.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kAreaRatio);
+}
+
+TEST_F(BorderCutTest, ASideIsCorrelatedOnlyWhenItsPeakIsClear) {
+  // A dark door 140 px wide 2 m ahead on a bright wall, its top above the image (200 px of it in
+  // view, 25 px of disparity). In the right image the door is a little lighter (80, not 70: a
+  // score just under 1 at its true edge), and a dark band of the door's own shade stands 35 px
+  // to the left of its left edge: an edge of the same contrast as the left image's, within the
+  // side's search, a perfect match at a wrong depth.
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
+  left(cv::Rect(160, 0, 140, 200)).setTo(70);
+  right(cv::Rect(135, 0, 140, 200)).setTo(80);
+  right(cv::Rect(100, 0, 15, 200)).setTo(70);
+  const auto outline = [](double u) {
+    Detection d;
+    d.type = "door";
+    d.border_cut = BorderCut::kTop;
+    d.corners_px = {{u - 0.5, -0.5}, {u + 139.5, -0.5}, {u + 139.5, 199.5}, {u - 0.5, 199.5}};
+    d.reference_px = {u + 69.5, 199.5};
+    d.height_px = 200.0;
+    d.confidence = 0.9f;
+    return d;
+  };
+  options_.min_side_correlation = 0.7;
+  const auto depths = [&] {
+    std::vector<double> out;
+    for (const StereoPercept& p : match_and_triangulate(
+             {outline(160.0)}, {outline(135.0)}, calibration_.left, calibration_.right,
+             left_T_right_, options_, up_, nullptr, {&left, &right})) {
+      out.push_back(p.left_camera_position_m.z());
+    }
+    return out;
+  };
+  // The outlines' depth: f b / d = 554.3 * 0.09 / 25.
+  const double outline_depth_m = calibration_.left.fx_px * 0.09 / 25.0;
+  // The band's edge scores higher than the door's own: the left side is moved to it, 0.8 m
+  // ahead, and the door is no longer one (refused or misplaced).
+  options_.border_cut[0].min_peak_margin = 0.0;
+  for (const double z : depths()) EXPECT_GT(std::abs(z - outline_depth_m), 0.1);
+  // With a margin, the two peaks are too close to choose: the side keeps the outlines' depth.
+  options_.border_cut[0].min_peak_margin = 0.1;
+  const std::vector<double> kept = depths();
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_NEAR(kept[0], outline_depth_m, 0.02);
 }
 
 TEST_F(BorderCutTest, TwoHandlesInsideAreDrawersOrDoorsMerged) {
