@@ -33,24 +33,35 @@ constexpr double kMinBorderSideSupport = 0.6;
 constexpr int kColourComponent = 6;
 // A door face cut by the border fills the outline of its visible part, less its handle's hole.
 constexpr double kMinBorderCutFill = 0.85;
+// The cut side's corners (the hull's chord along the border) lie this fraction of the visible
+// sides' length from the border row at most: the hull's vertex there can sit some rows in (on
+// both layouts 0.25 kept every true door percept that no bound keeps, and 0.1 lost 3 of each).
+constexpr double kMaxCutCornerOffBorder = 0.25;
 
 double square(double x) {
   return x * x;
 }
 
-// The border that cuts `quad` (fitted with the image's size) along a whole side, and the quad
-// with its corners renumbered so that the cut side is the top (corners 0-1) or the bottom (2-3),
-// and that side moved onto the border. The cut side is the one side without support (its line
-// is only the hull's chord, not necessarily along the border); the blob reaches the border it
-// faces (the top one when its middle is above the opposite side's); the three other sides are
-// seen (kMinBorderSideSupport), the two adjoining it nearer the image vertical. The numbering is
+// A door outline cut along a whole side by the image border: which border, and the outline's
+// corners clockwise from the top left with the cut side moved onto the border.
+struct BorderCutOutline {
+  BorderCut cut = BorderCut::kNone;
+  std::array<Eigen::Vector2d, 4> corners;
+};
+
+// The border that cuts `quad` (fitted with the image's size) along a whole side, and its corners
+// renumbered so that the cut side is the top (corners 0-1) or the bottom (2-3), that side moved
+// onto the border. The cut side is the one side without support (its line is only the hull's
+// chord, not necessarily along the border, but its corners within kMaxCutCornerOffBorder of the
+// visible sides' length of the border row); the blob reaches the border it faces (the top one
+// when its middle is above the opposite side's); the three other sides are seen
+// (kMinBorderSideSupport), the two adjoining it nearer the image vertical. The numbering is
 // otherwise quadrilateral.hpp's clockwise one; its start, the corner of least u + v, is not the
 // top left when the outline's top edge slopes steeply, hence the renumbering. The cut side's
 // corners become where the adjoining sides' lines leave the image (the outer edge of its first
 // or last row). nullopt otherwise.
-std::optional<std::pair<BorderCut, BlobQuadrilateral>> border_cut_of(const BlobQuadrilateral& quad,
-                                                                     const Blob& blob,
-                                                                     int image_rows) {
+std::optional<BorderCutOutline> border_cut_of(const BlobQuadrilateral& quad, const Blob& blob,
+                                              int image_rows) {
   int cut_side = -1;
   for (int side = 0; side < 4; ++side) {
     if (quad.side_support[side] >= kMinBorderSideSupport) continue;
@@ -62,55 +73,61 @@ std::optional<std::pair<BorderCut, BlobQuadrilateral>> border_cut_of(const BlobQ
   const auto middle = [&](int side) { return 0.5 * (q[side] + q[(side + 1) % 4]); };
   const bool top = middle(cut_side).y() < middle((cut_side + 2) % 4).y();
   if (top ? blob.v_min != 0 : blob.v_max != image_rows - 1) return std::nullopt;
-  // Renumbered: out.corners[k] = q[(k + shift) % 4], the cut side becoming side 0 or 2.
+  // Renumbered: c[k] = q[(k + shift) % 4], the cut side becoming side 0 or 2.
   const int shift = (cut_side - (top ? 0 : 2) + 4) % 4;
-  BlobQuadrilateral out = quad;
-  for (int k = 0; k < 4; ++k) {
-    out.corners[k] = q[(k + shift) % 4];
-    out.side_support[k] = quad.side_support[(k + shift) % 4];
-  }
+  BorderCutOutline out;
+  out.cut = top ? BorderCut::kTop : BorderCut::kBottom;
   auto& c = out.corners;
+  for (int k = 0; k < 4; ++k) c[k] = q[(k + shift) % 4];
   const auto upright = [&](int side) {
     const Eigen::Vector2d d = c[(side + 1) % 4] - c[side];
     return std::abs(d.y()) > std::abs(d.x());
   };
   if (!upright(1) || !upright(3)) return std::nullopt;
-  // Where the line through corners a and b crosses the row v.
+  // The cut side runs along the border: a side unseen for another reason (an occluder's
+  // contour, a ragged top) with one corner on it is no cut.
+  const double border_row = top ? -0.5 : image_rows - 0.5;
+  const double tolerance_px =
+      kMaxCutCornerOffBorder * 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
+  const int first = top ? 0 : 2;
+  for (const int k : {first, first + 1}) {
+    if (std::abs(c[k].y() - border_row) > tolerance_px) return std::nullopt;
+  }
+  // Where the line through corners a and b crosses the row v (upright: d.y() is not 0).
   const auto at_row = [&](int a, int b, double v) {
     const Eigen::Vector2d d = c[b] - c[a];
     return Eigen::Vector2d(c[a].x() + d.x() * (v - c[a].y()) / d.y(), v);
   };
   if (top) {
-    const Eigen::Vector2d left = at_row(3, 0, -0.5), right = at_row(2, 1, -0.5);
+    const Eigen::Vector2d left = at_row(3, 0, border_row), right = at_row(2, 1, border_row);
     c[0] = left;
     c[1] = right;
-    return std::pair{BorderCut::kTop, out};
+  } else {
+    const Eigen::Vector2d right = at_row(1, 2, border_row), left = at_row(0, 3, border_row);
+    c[2] = right;
+    c[3] = left;
   }
-  const Eigen::Vector2d right = at_row(1, 2, image_rows - 0.5),
-                        left = at_row(0, 3, image_rows - 0.5);
-  c[2] = right;
-  c[3] = left;
-  return std::pair{BorderCut::kBottom, out};
+  return out;
 }
 
 // The area of a convex quadrilateral (corners in order), pixels.
-double outline_area_px(const BlobQuadrilateral& quad) {
-  const auto& c = quad.corners;
+double outline_area_px(const std::array<Eigen::Vector2d, 4>& c) {
   const Eigen::Vector2d a = c[2] - c[0], b = c[3] - c[1];
   return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
 }
 
 // The detection of a blob that border_cut_of found cut (Detection::border_cut).
 Detection border_cut_detection(const std::string& type, const Blob& blob, int blob_index,
-                               const BlobQuadrilateral& quad, BorderCut cut, const BlobAxes& axes,
+                               const BorderCutOutline& outline, const BlobAxes& axes,
                                double colour_d2) {
   Detection detection;
   detection.type = type;
   detection.blob_index = blob_index;
+  const BorderCut cut = outline.cut;
   detection.border_cut = cut;
-  detection.corners_px.assign(quad.corners.begin(), quad.corners.end());
+  detection.corners_px.assign(outline.corners.begin(), outline.corners.end());
   // The edge shown whole: the bottom one (corners 2, 3) under a top cut, else the top (0, 1).
-  const auto& c = quad.corners;
+  const auto& c = outline.corners;
   detection.reference_px = cut == BorderCut::kTop ? 0.5 * (c[2] + c[3]) : 0.5 * (c[0] + c[1]);
   detection.height_px = 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
   detection.area_px = blob.area_px;
@@ -149,7 +166,13 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
       v->fail("must be 0 (off) or a finite D^2 at least the model's max_mahalanobis2");
     }
   }
-  if (const auto v = section.find("detect_border_cut")) out.detect_border_cut = v->as_bool();
+  if (const auto v = section.find("detect_border_cut")) {
+    out.detect_border_cut = v->as_bool();
+    // Border-cut blobs are those min_border_distance_px finds at the border.
+    if (out.detect_border_cut && out.min_border_distance_px < 1) {
+      v->fail("needs min_border_distance_px >= 1 (0 judges no blob as cut by the border)");
+    }
+  }
   return out;
 }
 
@@ -210,9 +233,9 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
         if (parameters_.detect_border_cut && blob.u_min >= border &&
             blob.u_max < bgr_image.cols - border && model_.accepts(colour_d2)) {
           const auto cut = border_cut_of(*quad, blob, bgr_image.rows);
-          if (cut && blob.area_px >= kMinBorderCutFill * outline_area_px(cut->second)) {
-            out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i),
-                                               cut->second, cut->first, axes, colour_d2));
+          if (cut && blob.area_px >= kMinBorderCutFill * outline_area_px(cut->corners)) {
+            out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i), *cut, axes,
+                                               colour_d2));
           }
         }
         continue;

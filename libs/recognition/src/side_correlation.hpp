@@ -30,6 +30,12 @@ namespace vsl::recognition::detail {
 //   raw = (fx x' + cx, fy y' + cy).
 Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntrinsics& intrinsics);
 
+// The side correlation's search around an outline's depth (pixels of image motion either way):
+// a margin, plus this fraction of the outline's width, which covers a stile (60 mm of a 0.3-0.6
+// m door) that one image's outline lacks.
+inline constexpr double kSideSearchPx = 6.0;
+inline constexpr double kSideSearchWidthFraction = 0.25;
+
 // A vertical side seen in the left image, placed in 3D by a plane sweep along the epipolar lines.
 //
 // Derivation. Every point of a vertical 3D line has the same horizontal offset from the left
@@ -45,12 +51,6 @@ Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntri
 // assumption). The sweep steps lambda by one pixel of the window's motion in the right image,
 // and the normalized cross-correlation's peak is refined by a parabola through it and its two
 // neighbours.
-// The side correlation's search around an outline's depth (pixels of image motion either way):
-// a margin, plus this fraction of the outline's width, which covers a stile (60 mm of a 0.3-0.6
-// m door) that one image's outline lacks.
-inline constexpr double kSideSearchPx = 6.0;
-inline constexpr double kSideSearchWidthFraction = 0.25;
-
 class SideCorrelator {
  public:
   // Grey images (CV_8UC1, raw pixels) of one stereo frame; `up` in the left camera frame.

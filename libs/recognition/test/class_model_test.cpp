@@ -337,7 +337,11 @@ TEST(ModelFile, EveryValidationError) {
                    .door.detect_border_cut);
   expect_error(replaced(door_text.str(), "min_border_distance_px: 1",
                         "min_border_distance_px: 1\n  detect_border_cut: 3"),
-               "parameters.detect_border_cut", "");
+               "parameters.detect_border_cut", "expected true or false");
+  // Border-cut blobs are the ones min_border_distance_px finds at the border: 0 finds none.
+  expect_error(replaced(door_text.str(), "min_border_distance_px: 1",
+                        "min_border_distance_px: 0\n  detect_border_cut: true"),
+               "parameters.detect_border_cut", "needs min_border_distance_px >= 1");
 }
 
 }  // namespace

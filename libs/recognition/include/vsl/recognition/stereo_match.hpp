@@ -241,11 +241,13 @@ struct StereoPairTrace {
 // would give c^2, penalizing every stereo percept for having been seen twice). A single-view
 // door's is its detection's confidence times its lower side score.
 //
-// `pair_trace`, when given, receives one entry per pair of detections of the same type: the first
-// gate that refused it, or none and whether the assignment kept it (a debug aid: where the
-// evaluation's ground-truth pairs were lost). `images`: the frame's grey images, for the door
-// sides' correlation (StereoMatchOptions::min_side_correlation) and the single-view doors;
-// without them both are off.
+// `pair_trace`, when given, receives one entry per pair of detections of the same type that is
+// judged: the first gate that refused it, or none and whether the assignment kept it (a debug
+// aid: where the evaluation's ground-truth pairs were lost). A door cut by the image border and
+// one not cut, or cut along the other border, are not judged as a pair, nor are cut doors of a
+// class without StereoMatchOptions::border_cut or without the up direction. `images`: the frame's
+// grey images, for the door sides' correlation (StereoMatchOptions::min_side_correlation) and the
+// single-view doors; without them both are off.
 std::vector<StereoPercept> match_and_triangulate(
     const std::vector<Detection>& left, const std::vector<Detection>& right,
     const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
