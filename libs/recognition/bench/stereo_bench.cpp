@@ -20,6 +20,7 @@
 
 #include "../src/side_correlation.hpp"
 #include "../src/single_view.hpp"
+#include "support/cut_door.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -128,23 +129,12 @@ void BM_BorderCutPair(benchmark::State& state) {
   cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
   left(cv::Rect(160, 0, 140, 200)).setTo(70);
   right(cv::Rect(135, 0, 140, 200)).setTo(70);
-  const auto cut_outline = [](double u) {
-    Detection d;
-    d.type = "door";
-    d.border_cut = BorderCut::kTop;
-    d.corners_px = {{u - 0.5, -0.5}, {u + 139.5, -0.5}, {u + 139.5, 199.5}, {u - 0.5, 199.5}};
-    d.reference_px = {u + 69.5, 199.5};
-    d.height_px = 200.0;
-    d.area_px = 28000.0;
-    d.confidence = 0.9f;
-    return d;
-  };
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_edge_slope_rad = 0.3;
   options.border_cut = {{"door", {0.716, 1.246}, 0.12, 0.3, 1.0, 0.09, 0.1}};
-  const std::vector<Detection> left_detections{cut_outline(160.0)};
-  const std::vector<Detection> right_detections{cut_outline(135.0)};
+  const std::vector<Detection> left_detections{test::top_cut_door_outline(160.0)};
+  const std::vector<Detection> right_detections{test::top_cut_door_outline(135.0)};
   double depth_m = 0.0;
   for (auto _ : state) {
     const std::vector<StereoPercept> percepts = match_and_triangulate(

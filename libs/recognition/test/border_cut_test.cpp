@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "support/cut_door.hpp"
 #include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -198,22 +199,13 @@ TEST_F(BorderCutTest, ASideIsCorrelatedOnlyWhenItsPeakIsClear) {
   left(cv::Rect(160, 0, 140, 200)).setTo(70);
   right(cv::Rect(135, 0, 140, 200)).setTo(80);
   right(cv::Rect(100, 0, 15, 200)).setTo(70);
-  const auto outline = [](double u) {
-    Detection d;
-    d.type = "door";
-    d.border_cut = BorderCut::kTop;
-    d.corners_px = {{u - 0.5, -0.5}, {u + 139.5, -0.5}, {u + 139.5, 199.5}, {u - 0.5, 199.5}};
-    d.reference_px = {u + 69.5, 199.5};
-    d.height_px = 200.0;
-    d.confidence = 0.9f;
-    return d;
-  };
   options_.min_side_correlation = 0.7;
   const auto depths = [&] {
     std::vector<double> out;
     for (const StereoPercept& p : match_and_triangulate(
-             {outline(160.0)}, {outline(135.0)}, calibration_.left, calibration_.right,
-             left_T_right_, options_, up_, nullptr, {&left, &right})) {
+             {test::top_cut_door_outline(160.0)}, {test::top_cut_door_outline(135.0)},
+             calibration_.left, calibration_.right, left_T_right_, options_, up_, nullptr,
+             {&left, &right})) {
       out.push_back(p.left_camera_position_m.z());
     }
     return out;
