@@ -85,19 +85,15 @@ std::optional<SingleViewDoor> place_single_view_door(
   return out;
 }
 
-std::optional<StereoPercept> single_view_percept(
-    const Detection& detection, int index, int image, const std::array<Eigen::Vector2d, 4>& corners,
-    const IdealPixel& reference_ideal, const SideCorrelator& sweep,
-    const Triangulator& triangulator, const StereoRig& rig, const StereoMatchOptions& options,
-    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m) {
+std::optional<StereoPercept> one_image_percept(const Detection& detection, int index, int image,
+                                               const Eigen::Vector3d& centre_in_own_m, double score,
+                                               double up_sigma_m, const IdealPixel& reference_ideal,
+                                               const Triangulator& triangulator,
+                                               const StereoRig& rig,
+                                               const StereoMatchOptions& options,
+                                               double reference_offset_m) {
   const Eigen::Isometry3d right_T_left = rig.left_T_right.inverse();
-  const std::optional<SingleViewDoor> door = place_single_view_door(
-      corners, sweep, image == 0 ? rig.left : rig.right,
-      image == 0 ? rig.up_in_left_camera
-                 : Eigen::Vector3d(right_T_left.linear() * rig.up_in_left_camera),
-      options, height_range);
-  if (!door) return std::nullopt;
-  const Eigen::Vector3d centre = image == 0 ? door->centre_m : rig.left_T_right * door->centre_m;
+  const Eigen::Vector3d centre = image == 0 ? centre_in_own_m : rig.left_T_right * centre_in_own_m;
   // Disparity range, as depth along the left optical axis (as for pairs).
   if (centre.z() < options.min_depth_m || centre.z() > options.max_depth_m) return std::nullopt;
   const Eigen::Vector3d centre_in_right = right_T_left * centre;
@@ -116,14 +112,34 @@ std::optional<StereoPercept> single_view_percept(
   (image == 0 ? percept.left_detection : percept.right_detection) = index;
   percept.left_camera_position_m = centre + reference_offset_m * centre.normalized();
   percept.left_camera_covariance_m2 = triangulation->left_camera_covariance_m2;
+  if (up_sigma_m > 0.0 && rig.up_in_left_camera.norm() > 0.0) {
+    const Eigen::Vector3d u = rig.up_in_left_camera.normalized();
+    percept.left_camera_covariance_m2 += up_sigma_m * up_sigma_m * u * u.transpose();
+  }
   percept.left_px = image == 0 ? detection.reference_px : distort(left_point.ideal_px, rig.left);
   percept.right_px = image == 1 ? detection.reference_px : distort(right_point.ideal_px, rig.right);
   // One image's evidence: the detection's confidence, scaled by its sides' agreement with the
   // other image.
   percept.confidence =
       static_cast<float>(std::clamp(static_cast<double>(detection.confidence), 0.0, 1.0) *
-                         std::clamp(door->worst_side_correlation, 0.0, 1.0));
+                         std::clamp(score, 0.0, 1.0));
   return percept;
+}
+
+std::optional<StereoPercept> single_view_percept(
+    const Detection& detection, int index, int image, const std::array<Eigen::Vector2d, 4>& corners,
+    const IdealPixel& reference_ideal, const SideCorrelator& sweep,
+    const Triangulator& triangulator, const StereoRig& rig, const StereoMatchOptions& options,
+    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m) {
+  const Eigen::Isometry3d right_T_left = rig.left_T_right.inverse();
+  const std::optional<SingleViewDoor> door = place_single_view_door(
+      corners, sweep, image == 0 ? rig.left : rig.right,
+      image == 0 ? rig.up_in_left_camera
+                 : Eigen::Vector3d(right_T_left.linear() * rig.up_in_left_camera),
+      options, height_range);
+  if (!door) return std::nullopt;
+  return one_image_percept(detection, index, image, door->centre_m, door->worst_side_correlation,
+                           0.0, reference_ideal, triangulator, rig, options, reference_offset_m);
 }
 
 }  // namespace vsl::recognition::detail

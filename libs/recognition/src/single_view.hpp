@@ -43,6 +43,21 @@ struct StereoRig {
   Eigen::Vector3d up_in_left_camera;
 };
 
+// The percept of a detection (`index` into its image's detections) of image `image` (0 left, 1
+// right) placed from that image alone at `centre_in_own_m` (that image's camera frame, on the
+// face): within the depth range (along the left optical axis), `reference_offset_m` behind the
+// face along the ray, its covariance the one the pixel noise gives a pair at that point (the
+// centre's projections into both images, with the lens Jacobian of `reference_ideal`, the
+// detection's own reference point) plus up_sigma_m^2 along the up direction, the other image's
+// pixel the centre's projection, and the confidence the detection's times `score` (in [0, 1]).
+std::optional<StereoPercept> one_image_percept(const Detection& detection, int index, int image,
+                                               const Eigen::Vector3d& centre_in_own_m, double score,
+                                               double up_sigma_m, const IdealPixel& reference_ideal,
+                                               const Triangulator& triangulator,
+                                               const StereoRig& rig,
+                                               const StereoMatchOptions& options,
+                                               double reference_offset_m);
+
 // The percept of an unpaired door detection (`index` into its image's detections) of image
 // `image` (0 left, 1 right), placed from that image alone by `sweep` (built over that image and
 // the other one) with place_single_view_door: its centre in the left camera frame within the

@@ -14,6 +14,7 @@
 #include "border_cut.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
+#include "side_beyond_border.hpp"
 #include "side_correlation.hpp"
 #include "single_view.hpp"
 #include "stereo_assignment.hpp"
@@ -434,18 +435,43 @@ std::vector<StereoPercept> match_and_triangulate(
       const std::vector<char>& paired = image == 0 ? left_paired : right_paired;
       for (std::size_t d = 0; d < detections.size(); ++d) {
         const Detection& detection = detections[d];
-        if (paired[d] || detection.needs_partner || detection.border_cut != BorderCut::kNone ||
+        const StereoMatchOptions::BorderCutDoor* cut_door =
+            border_cut_door(options, detection.type);
+        const bool beyond_border = cut_door && cut_door->side_beyond_border;
+        const bool cut = detection.border_cut != BorderCut::kNone;
+        if (paired[d] || detection.needs_partner || (cut && !beyond_border) ||
             corners[d].size() != 4) {
           continue;
         }
         if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
           continue;
         }
-        const std::optional<StereoPercept> percept = detail::single_view_percept(
-            detection, static_cast<int>(d), image, corner_array(corners[d]),
-            (image == 0 ? left_ideal : right_ideal)[d],
-            image == 0 ? *correlator : *reverse_correlator, triangulator, rig, options,
-            height_range(options, detection.type), reference_depth_offset(options, detection.type));
+        const detail::SideCorrelator& sweep = image == 0 ? *correlator : *reverse_correlator;
+        const detail::IdealPixel& reference = (image == 0 ? left_ideal : right_ideal)[d];
+        const double offset_m = reference_depth_offset(options, detection.type);
+        std::optional<StereoPercept> percept;
+        if (!cut) {
+          percept = detail::single_view_percept(
+              detection, static_cast<int>(d), image, corner_array(corners[d]), reference, sweep,
+              triangulator, rig, options, height_range(options, detection.type), offset_m);
+        }
+        // Not placed from both sides: perhaps one lies beyond the other image's border.
+        if (!percept && beyond_border) {
+          const Eigen::Isometry3d other_T_own = image == 0 ? left_T_right.inverse() : left_T_right;
+          const Eigen::Vector3d up_in_own =
+              image == 0 ? up_in_left_camera
+                         : Eigen::Vector3d(left_T_right.linear().transpose() * up_in_left_camera);
+          const auto door = detail::place_side_beyond_border_door(
+              corner_array(corners[d]), detection.border_cut, image, sweep,
+              image == 0 ? left_intrinsics : right_intrinsics,
+              image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,
+              *cut_door, height_range(options, detection.type));
+          if (door) {
+            percept = detail::one_image_percept(
+                detection, static_cast<int>(d), image, door->centre_m, door->side_correlation,
+                door->height_sigma_m, reference, triangulator, rig, options, offset_m);
+          }
+        }
         if (!percept) continue;
         // A second outline of a door that a percept already places.
         const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {

@@ -493,7 +493,7 @@ stereo:
   single_view_max_bars_inside: 2
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
-           max_side_tilt_rad: 0.09, min_peak_margin: 0.15}
+           max_side_tilt_rad: 0.09, min_peak_margin: 0.15, side_beyond_border: true}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -531,6 +531,7 @@ stereo:
   EXPECT_EQ(o.border_cut[0].max_width_m, 1.0);
   EXPECT_EQ(o.border_cut[0].max_side_tilt_rad, 0.09);
   EXPECT_EQ(o.border_cut[0].min_peak_margin, 0.15);
+  EXPECT_TRUE(o.border_cut[0].side_beyond_border);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -599,6 +600,19 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                          "0.1, min_width_m: 0.3, max_width_m: 1}}\n")
                 .find("s.yaml:2: stereo.border_cut.door.typical_heights_m: expected a list of "
                       "heights in metres, ascending"),
+            std::string::npos);
+  // The side beyond the border is swept as a single-view door's sides are.
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+                         "min_width_m: 0.3, max_width_m: 1, side_beyond_border: true}}\n")
+                .find("s.yaml:2: stereo.border_cut.door.side_beyond_border: needs "
+                      "min_single_view_correlation > 0"),
+            std::string::npos)
+      << stereo_error(
+             "  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+             "min_width_m: 0.3, max_width_m: 1, side_beyond_border: true}}\n");
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+                         "min_width_m: 0.3, max_width_m: 1, side_beyond_border: 2}}\n")
+                .find("stereo.border_cut.door.side_beyond_border"),
             std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {

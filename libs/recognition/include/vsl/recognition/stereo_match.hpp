@@ -148,6 +148,19 @@ struct StereoMatchOptions {
     // its second-best distinct peak by this (SideCorrelator::SideDepth::second_correlation; a run
     // of equal doors repeats every edge), else it keeps the outlines' depth. 0: any best peak.
     double min_peak_margin = 0.0;
+    // With min_single_view_correlation: a door outline that no pair took and item 11 did not
+    // place (whole, or cut by its own image's top or bottom border) whose one vertical side lies
+    // beyond the other image's left or right border is placed from the side the other image
+    // shows (swept as in item 11: min_single_view_correlation, single_view_min_peak_margin) and
+    // the level planes of its ends (a door's top and bottom edges are level): the other side's
+    // corners are where the own rays meet them. Kept when those corners project beyond the other
+    // image's border, the edges are min_width_m .. max_width_m long and seen from within about
+    // 78 deg of head-on, a whole outline's other side is vertical and both a door's height
+    // (height_range_m), a cut one's visible height as for pairs above; at most
+    // single_view_max_bars_inside handles inside, no percept of its type within
+    // single_view_min_separation_m. The covariance is item 11's, plus (height_sigma_m / 2)^2 along
+    // the up direction for a cut door (side_beyond_border.hpp).
+    bool side_beyond_border = false;
   };
   std::vector<BorderCutDoor> border_cut;
 };

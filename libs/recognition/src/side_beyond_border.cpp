@@ -1,0 +1,189 @@
+// A door with one vertical side beyond the other image's border (side_beyond_border.hpp).
+//
+// Geometry, in the own camera frame, u the unit up direction. The inner side (the one the other
+// image shows: the right side of a left-image outline, the left side of a right-image one) is
+// swept into the other image over the whole depth range (SideCorrelator); at its horizontal
+// distance D its ends are I_top and I_bottom (for a cut door, the end on the cut edge is where
+// the side leaves the image, no corner). A door's top and bottom edges are level, so the outer
+// side's corner q on an edge lies on the own ray r = K^-1 (q, 1) at the height of the inner
+// end of the same edge:
+//   X = s r,   s = (I . u) / (r . u),
+// defined when the ray is at least 0.05 rad from that level plane (|r . u| / |r| >= sin 0.05)
+// and s > 0. The door is kept when
+//   - the outer side's real corners project beyond the other image's border on their side (or
+//     within kMaxInsideBorderPx of it): else the other image shows that side, and item 11 is the
+//     construction that uses it;
+//   - each edge between an inner end and an outer corner is min_width_m .. max_width_m long and
+//     seen from within about 78 deg of head-on (as border_cut.cpp);
+//   - whole outlines: the outer side's two corners so placed are vertical (they lean
+//     horizontally by at most 30% of the inner side's length, as
+//     Triangulator::rectangle_centre_from_one_side), and both sides are a door's height;
+//   - cut outlines: the inner side's visible height h_v is at least half the least typical
+//     height and at most 1.05 times the tallest (border_cut.cpp).
+// The centre is the mean of the four ends for a whole door; for a cut one, the middle of the
+// edge shown whole moved half the door's typical height (the least h_k with h_v <= 1.05 h_k)
+// towards the cut.
+#include "side_beyond_border.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "triangulation.hpp"
+
+namespace vsl::recognition::detail {
+namespace {
+
+// A projection this close to the border (pixels, inside) still counts as beyond it: the outer
+// side runs along the border there and the other image's blob ends at it.
+constexpr double kMaxInsideBorderPx = 8.0;
+// A ray closer than this to the level plane it is intersected with gives no point (radians, as
+// Triangulator::rectangle_centre_from_one_side).
+constexpr double kMinRayToPlaneRad = 0.05;
+// The outer side found by the level planes leans by at most this fraction of the inner side's
+// length (as Triangulator::rectangle_centre_from_one_side).
+constexpr double kMaxOuterLean = 0.3;
+// As border_cut.cpp: the least cosine between the door's normal and the view, and how much of a
+// typical height the visible part may exceed.
+constexpr double kMinCosViewing = 0.2;
+constexpr double kMaxVisibleOfTypical = 1.05;
+
+// The whole depth range of the sweep, in pixels of image motion: every step.
+constexpr double kWholeRangePx = 1e4;
+
+}  // namespace
+
+std::optional<SideBeyondBorderDoor> place_side_beyond_border_door(
+    const std::array<Eigen::Vector2d, 4>& c, BorderCut cut, int own_image,
+    const SideCorrelator& sweep, const head::CameraIntrinsics& own,
+    const head::CameraIntrinsics& other, const Eigen::Isometry3d& other_T_own,
+    const Eigen::Vector3d& up_in_own_camera, const StereoMatchOptions& options,
+    const StereoMatchOptions::BorderCutDoor& door,
+    const StereoMatchOptions::ExtentRange* height_range) {
+  if (!(up_in_own_camera.norm() > 0.0) || door.typical_heights_m.empty()) return std::nullopt;
+  const Eigen::Vector3d u = up_in_own_camera.normalized();
+  Eigen::Matrix3d k;
+  k << own.fx_px, 0.0, own.cx_px, 0.0, own.fy_px, own.cy_px, 0.0, 0.0, 1.0;
+  const Eigen::Matrix3d k_inverse = k.inverse();
+
+  // The two vertical sides, each as (top corner, bottom corner) by image row; the outer one is
+  // the left side in the left image and the right side in the right image.
+  const auto sides = Triangulator::vertical_sides(c);
+  std::array<std::array<int, 2>, 2> side{};
+  for (int s = 0; s < 2; ++s) {
+    const auto [i, j] = sides[static_cast<std::size_t>(s)];
+    side[static_cast<std::size_t>(s)] =
+        c[i].y() <= c[j].y() ? std::array<int, 2>{i, j} : std::array<int, 2>{j, i};
+  }
+  const auto mean_u = [&](int s) {
+    return c[side[static_cast<std::size_t>(s)][0]].x() +
+           c[side[static_cast<std::size_t>(s)][1]].x();
+  };
+  const int left_side = mean_u(0) <= mean_u(1) ? 0 : 1;
+  const std::array<int, 2> outer =
+      side[static_cast<std::size_t>(own_image == 0 ? left_side : 1 - left_side)];
+  const std::array<int, 2> inner =
+      side[static_cast<std::size_t>(own_image == 0 ? 1 - left_side : left_side)];
+
+  // Both sides vertical in 3D, seen from the own camera (as single_view.cpp).
+  const double max_tilt_rad =
+      cut == BorderCut::kNone ? options.max_side_tilt_rad : door.max_side_tilt_rad;
+  if (max_tilt_rad > 0.0) {
+    for (const auto& [top, bottom] : {outer, inner}) {
+      const Eigen::Vector3d n =
+          (k_inverse * c[top].homogeneous()).cross(k_inverse * c[bottom].homogeneous());
+      if (!(n.norm() > 0.0) || std::abs(n.dot(u)) / n.norm() > std::sin(max_tilt_rad)) {
+        return std::nullopt;
+      }
+    }
+  }
+
+  // The inner side's depth: its peak over the whole range, and when the second-best peak is
+  // within single_view_min_peak_margin (a run of equal doors repeats every edge), that one too;
+  // the door's shape must single out exactly one (as single_view.cpp).
+  const double initial_m = std::sqrt(options.min_depth_m * options.max_depth_m);
+  const auto depth = sweep.correlate(c[inner[0]], c[inner[1]], initial_m, kWholeRangePx,
+                                     options.min_depth_m, options.max_depth_m);
+  if (!depth || depth->correlation < options.min_single_view_correlation) return std::nullopt;
+  std::vector<double> candidates_m{depth->horizontal_distance_m};
+  if (depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
+    candidates_m.push_back(depth->second_distance_m);
+  }
+
+  // The outer side's real corners (0 top, 1 bottom): a cut removes the one on the cut edge.
+  const std::array<bool, 2> real{cut != BorderCut::kTop, cut != BorderCut::kBottom};
+  const auto door_at = [&](double distance_m) -> std::optional<SideBeyondBorderDoor> {
+    const auto inner_top = sweep.point_at(c[inner[0]], distance_m);
+    const auto inner_bottom = sweep.point_at(c[inner[1]], distance_m);
+    if (!inner_top || !inner_bottom) return std::nullopt;
+    const std::array<Eigen::Vector3d, 2> inner_end{*inner_top, *inner_bottom};
+    std::array<Eigen::Vector3d, 2> outer_end{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    for (std::size_t e = 0; e < 2; ++e) {
+      if (!real[e]) continue;
+      const Eigen::Vector3d ray = k_inverse * c[outer[e]].homogeneous();
+      const double along_up = ray.dot(u);
+      if (std::abs(along_up) < std::sin(kMinRayToPlaneRad) * ray.norm()) return std::nullopt;
+      const double s = inner_end[e].dot(u) / along_up;
+      if (!(s > 0.0)) return std::nullopt;
+      const Eigen::Vector3d x = s * ray;
+      outer_end[e] = x;
+      // Beyond the other image's border on the outer side's side.
+      const Eigen::Vector3d in_other = other_T_own * x;
+      if (!(in_other.z() > 0.0)) return std::nullopt;
+      const Eigen::Vector2d ideal(other.fx_px * in_other.x() / in_other.z() + other.cx_px,
+                                  other.fy_px * in_other.y() / in_other.z() + other.cy_px);
+      const double raw_u = distort(ideal, other).x();
+      const bool beyond = own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
+                                         : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx;
+      if (!beyond) return std::nullopt;
+      // A door's width, seen from within about 78 deg of head-on.
+      const Eigen::Vector3d along = x - inner_end[e];
+      const double width_m = along.norm();
+      if (width_m < door.min_width_m || width_m > door.max_width_m) return std::nullopt;
+      const Eigen::Vector3d middle = 0.5 * (x + inner_end[e]);
+      const Eigen::Vector3d normal = along.cross(u).normalized();
+      if (std::abs(normal.dot(middle.normalized())) < kMinCosViewing) return std::nullopt;
+    }
+    SideBeyondBorderDoor out;
+    const double inner_height_m = (inner_end[0] - inner_end[1]).dot(u);
+    if (cut == BorderCut::kNone) {
+      const Eigen::Vector3d outer_side = outer_end[0] - outer_end[1];
+      const double outer_height_m = outer_side.dot(u);
+      const double lean_m = (outer_side - outer_height_m * u).norm();
+      if (lean_m > kMaxOuterLean * inner_height_m) return std::nullopt;
+      if (height_range) {
+        for (const double h : {inner_height_m, outer_height_m}) {
+          if (h < height_range->min_m || h > height_range->max_m) return std::nullopt;
+        }
+      }
+      out.centre_m = 0.25 * (inner_end[0] + inner_end[1] + outer_end[0] + outer_end[1]);
+      return out;
+    }
+    const std::vector<double>& typical = door.typical_heights_m;
+    if (inner_height_m < 0.5 * typical.front()) return std::nullopt;
+    const auto height = std::find_if(typical.begin(), typical.end(), [&](double h) {
+      return inner_height_m <= kMaxVisibleOfTypical * h;
+    });
+    if (height == typical.end()) return std::nullopt;
+    const bool top_cut = cut == BorderCut::kTop;
+    const std::size_t e = top_cut ? 1 : 0;  // the edge shown whole
+    out.centre_m = 0.5 * (inner_end[e] + outer_end[e]) + (top_cut ? 0.5 : -0.5) * *height * u;
+    out.height_sigma_m = 0.5 * door.height_sigma_m;
+    return out;
+  };
+  std::optional<SideBeyondBorderDoor> found;
+  int admissible = 0;
+  for (const double distance_m : candidates_m) {
+    if (auto placed = door_at(distance_m)) {
+      found = placed;
+      ++admissible;
+    }
+  }
+  if (admissible != 1) return std::nullopt;
+  found->side_correlation = depth->correlation;
+  return found;
+}
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,45 @@
+// A door of which the other image shows only one vertical side: the other lies beyond that
+// image's left or right border (StereoMatchOptions::BorderCutDoor::side_beyond_border). Near the
+// left border of the left image a door is cut by the right image's left border (the right camera
+// sees everything further left), near the right border of the right image by the left image's
+// right border; so a door whole in one image, or cut only by its top or bottom border, is cut
+// along a side in the other, no pair is made, and the sweep of item 11 (single_view.hpp) finds
+// no side there. Internal to vsl_recognition.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
+
+#include "side_correlation.hpp"
+#include "vsl/head/camera_intrinsics.hpp"
+#include "vsl/recognition/detection.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition::detail {
+
+struct SideBeyondBorderDoor {
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // the sweep's own camera frame, metres
+  double side_correlation = 0.0;                       // the inner side's score
+  // The spread of the centre along `up` that the class's heights add (metres, standard
+  // deviation): BorderCutDoor::height_sigma_m / 2 for a door cut by its own image's top or
+  // bottom border, 0 for a whole one.
+  double height_sigma_m = 0.0;
+};
+
+// `corners_ideal_px`: the outline in its own image (`own_image`: 0 left, 1 right; ideal pixels,
+// clockwise from the top left; for a door cut by the top or bottom border, `cut`, the two on
+// that side where its vertical sides leave the image). `sweep` is built over (own, other) with
+// `up_in_own_camera`; `other_T_own` takes own camera points into the other camera.
+// `height_range`: the class's height range (whole doors), or nullptr. nullopt unless every test
+// of BorderCutDoor::side_beyond_border passes.
+std::optional<SideBeyondBorderDoor> place_side_beyond_border_door(
+    const std::array<Eigen::Vector2d, 4>& corners_ideal_px, BorderCut cut, int own_image,
+    const SideCorrelator& sweep, const head::CameraIntrinsics& own,
+    const head::CameraIntrinsics& other, const Eigen::Isometry3d& other_T_own,
+    const Eigen::Vector3d& up_in_own_camera, const StereoMatchOptions& options,
+    const StereoMatchOptions::BorderCutDoor& door,
+    const StereoMatchOptions::ExtentRange* height_range);
+
+}  // namespace vsl::recognition::detail
