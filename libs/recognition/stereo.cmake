@@ -6,7 +6,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_correlation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/single_view.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/border_cut.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/side_beyond_border.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pair.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_assignment.cpp
@@ -17,7 +17,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/test/side_beyond_border_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/one_side_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_correlation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)
 list(APPEND VSL_RECOGNITION_BENCHES ${CMAKE_CURRENT_SOURCE_DIR}/bench/stereo_bench.cpp

@@ -14,7 +14,7 @@
 #include "border_cut.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
-#include "side_beyond_border.hpp"
+#include "one_side_door.hpp"
 #include "side_correlation.hpp"
 #include "single_view.hpp"
 #include "stereo_assignment.hpp"
@@ -437,9 +437,9 @@ std::vector<StereoPercept> match_and_triangulate(
         const Detection& detection = detections[d];
         const StereoMatchOptions::BorderCutDoor* cut_door =
             border_cut_door(options, detection.type);
-        const bool beyond_border = cut_door && cut_door->side_beyond_border;
+        const bool from_one_side = cut_door && cut_door->from_one_side;
         const bool cut = detection.border_cut != BorderCut::kNone;
-        if (paired[d] || detection.needs_partner || (cut && !beyond_border) ||
+        if (paired[d] || detection.needs_partner || (cut && !from_one_side) ||
             corners[d].size() != 4) {
           continue;
         }
@@ -455,13 +455,14 @@ std::vector<StereoPercept> match_and_triangulate(
               detection, static_cast<int>(d), image, corner_array(corners[d]), reference, sweep,
               triangulator, rig, options, height_range(options, detection.type), offset_m);
         }
-        // Not placed from both sides: perhaps one lies beyond the other image's border.
-        if (!percept && beyond_border) {
+        // Not placed from both sides: from one side and the level planes of its edges (the other
+        // side beyond the other image's border, or one of two peaks of a repeated edge).
+        if (!percept && from_one_side) {
           const Eigen::Isometry3d other_T_own = image == 0 ? left_T_right.inverse() : left_T_right;
           const Eigen::Vector3d up_in_own =
               image == 0 ? up_in_left_camera
                          : Eigen::Vector3d(left_T_right.linear().transpose() * up_in_left_camera);
-          const auto door = detail::place_side_beyond_border_door(
+          const std::optional<detail::OneSideDoor> door = detail::place_one_side_door(
               corner_array(corners[d]), detection.border_cut, image, sweep,
               image == 0 ? left_intrinsics : right_intrinsics,
               image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,

@@ -108,7 +108,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       const config::Node door = classes->at(type);
       door.expect_map();
       door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
-                        "max_side_tilt_rad", "min_peak_margin", "side_beyond_border"});
+                        "max_side_tilt_rad", "min_peak_margin", "from_one_side"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
       const config::Node heights = door.at("typical_heights_m");
@@ -132,10 +132,10 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       if (const auto v = door.find("min_peak_margin")) {
         parsed.min_peak_margin = v->as_double_in(0.0, 2.0);  // correlations differ by at most 2
       }
-      if (const auto v = door.find("side_beyond_border")) {
-        parsed.side_beyond_border = v->as_bool();
+      if (const auto v = door.find("from_one_side")) {
+        parsed.from_one_side = v->as_bool();
         // It sweeps as item 11 does, with its thresholds.
-        if (parsed.side_beyond_border && !(out.min_single_view_correlation > 0.0)) {
+        if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
           v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
         }
       }

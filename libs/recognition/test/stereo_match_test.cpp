@@ -493,7 +493,7 @@ stereo:
   single_view_max_bars_inside: 2
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
-           max_side_tilt_rad: 0.09, min_peak_margin: 0.15, side_beyond_border: true}
+           max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -531,7 +531,7 @@ stereo:
   EXPECT_EQ(o.border_cut[0].max_width_m, 1.0);
   EXPECT_EQ(o.border_cut[0].max_side_tilt_rad, 0.09);
   EXPECT_EQ(o.border_cut[0].min_peak_margin, 0.15);
-  EXPECT_TRUE(o.border_cut[0].side_beyond_border);
+  EXPECT_TRUE(o.border_cut[0].from_one_side);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -603,16 +603,16 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
             std::string::npos);
   // The side beyond the border is swept as a single-view door's sides are.
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-                         "min_width_m: 0.3, max_width_m: 1, side_beyond_border: true}}\n")
-                .find("s.yaml:2: stereo.border_cut.door.side_beyond_border: needs "
+                         "min_width_m: 0.3, max_width_m: 1, from_one_side: true}}\n")
+                .find("s.yaml:2: stereo.border_cut.door.from_one_side: needs "
                       "min_single_view_correlation > 0"),
             std::string::npos)
       << stereo_error(
              "  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-             "min_width_m: 0.3, max_width_m: 1, side_beyond_border: true}}\n");
+             "min_width_m: 0.3, max_width_m: 1, from_one_side: true}}\n");
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-                         "min_width_m: 0.3, max_width_m: 1, side_beyond_border: 2}}\n")
-                .find("stereo.border_cut.door.side_beyond_border"),
+                         "min_width_m: 0.3, max_width_m: 1, from_one_side: 2}}\n")
+                .find("stereo.border_cut.door.from_one_side"),
             std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {

@@ -149,18 +149,20 @@ struct StereoMatchOptions {
     // of equal doors repeats every edge), else it keeps the outlines' depth. 0: any best peak.
     double min_peak_margin = 0.0;
     // With min_single_view_correlation: a door outline that no pair took and item 11 did not
-    // place (whole, or cut by its own image's top or bottom border) whose one vertical side lies
-    // beyond the other image's left or right border is placed from the side the other image
-    // shows (swept as in item 11: min_single_view_correlation, single_view_min_peak_margin) and
-    // the level planes of its ends (a door's top and bottom edges are level): the other side's
-    // corners are where the own rays meet them. Kept when those corners project beyond the other
-    // image's border, the edges are min_width_m .. max_width_m long and seen from within about
-    // 78 deg of head-on, a whole outline's other side is vertical and both a door's height
-    // (height_range_m), a cut one's visible height as for pairs above; at most
+    // place (whole, or cut by its own image's top or bottom border) is placed from one vertical
+    // side and the level planes of its top and bottom edges (one_side_door.hpp): the side the
+    // other image shows even near its border (the right side of a left-image outline) is swept
+    // as in item 11 (min_single_view_correlation; a second peak within
+    // single_view_min_peak_margin is tried too, and exactly one must pass), and the other side's
+    // corners are where the own rays meet the planes of the swept side's ends. Kept when those
+    // corners project beyond the other image's left or right border, or the other image shows
+    // that side where they put it; the edges are min_width_m .. max_width_m long and seen from
+    // within about 78 deg of head-on; a whole outline's other side is vertical and both are a
+    // door's height (height_range_m), a cut one's visible height as for pairs above; at most
     // single_view_max_bars_inside handles inside, no percept of its type within
-    // single_view_min_separation_m. The covariance is item 11's, plus (height_sigma_m / 2)^2 along
-    // the up direction for a cut door (side_beyond_border.hpp).
-    bool side_beyond_border = false;
+    // single_view_min_separation_m. The covariance is item 11's, plus (height_sigma_m / 2)^2
+    // along the up direction for a cut door.
+    bool from_one_side = false;
   };
   std::vector<BorderCutDoor> border_cut;
 };

@@ -1,10 +1,11 @@
-// A door of which the other image shows only one vertical side: the other lies beyond that
-// image's left or right border (StereoMatchOptions::BorderCutDoor::side_beyond_border). Near the
-// left border of the left image a door is cut by the right image's left border (the right camera
-// sees everything further left), near the right border of the right image by the left image's
-// right border; so a door whole in one image, or cut only by its top or bottom border, is cut
-// along a side in the other, no pair is made, and the sweep of item 11 (single_view.hpp) finds
-// no side there. Internal to vsl_recognition.
+// A door outline of one image placed from one vertical side and the level planes of its top and
+// bottom edges (StereoMatchOptions::BorderCutDoor::from_one_side), when no pair took it and the
+// sweep of both sides (single_view.hpp) did not place it. Near the left border of the left image a
+// door is cut along its left side by the right image's left border (the right camera sees
+// everything further left), near the right border of the right image along its right side by
+// the left image's right border: that side has nothing to correlate with. Elsewhere a side's
+// sweep over the whole depth range may peak twice (a run of equal doors repeats every edge),
+// while the door's shape fixes where that side must be. Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,7 +20,7 @@
 
 namespace vsl::recognition::detail {
 
-struct SideBeyondBorderDoor {
+struct OneSideDoor {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // the sweep's own camera frame, metres
   double side_correlation = 0.0;                       // the inner side's score
   // The spread of the centre along `up` that the class's heights add (metres, standard
@@ -33,8 +34,8 @@ struct SideBeyondBorderDoor {
 // that side where its vertical sides leave the image). `sweep` is built over (own, other) with
 // `up_in_own_camera`; `other_T_own` takes own camera points into the other camera.
 // `height_range`: the class's height range (whole doors), or nullptr. nullopt unless every test
-// of BorderCutDoor::side_beyond_border passes.
-std::optional<SideBeyondBorderDoor> place_side_beyond_border_door(
+// of BorderCutDoor::from_one_side passes.
+std::optional<OneSideDoor> place_one_side_door(
     const std::array<Eigen::Vector2d, 4>& corners_ideal_px, BorderCut cut, int own_image,
     const SideCorrelator& sweep, const head::CameraIntrinsics& own,
     const head::CameraIntrinsics& other, const Eigen::Isometry3d& other_T_own,
