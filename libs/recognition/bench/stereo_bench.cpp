@@ -5,6 +5,9 @@
 // wide), twice per door pair. BM_SingleViewDoor: a door outline placed from its own image alone
 // (single_view.hpp), both sides swept over the whole depth range. BM_BorderCutPair: one pair of
 // door outlines cut by the top border matched and placed (border_cut.hpp), both sides correlated,
+// the correlators' set-up included. BM_OneSideDoor: the same door, its outline in the left image
+// only, placed from its right side swept over the whole depth range and the level plane of its
+// bottom edge, its left side found in the right image where that plane puts it (one_side_door.hpp),
 // the correlators' set-up included. No main here: the fragments share vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
@@ -146,6 +149,32 @@ void BM_BorderCutPair(benchmark::State& state) {
   state.counters["depth_m"] = depth_m;
 }
 BENCHMARK(BM_BorderCutPair)->Unit(benchmark::kMicrosecond);
+
+void BM_OneSideDoor(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
+  left(cv::Rect(160, 0, 140, 200)).setTo(70);
+  right(cv::Rect(135, 0, 140, 200)).setTo(70);
+  StereoMatchOptions options;
+  options.min_side_correlation = 0.7;
+  options.min_single_view_correlation = 0.7;
+  options.single_view_min_peak_margin = 0.2;
+  options.max_edge_slope_rad = 0.3;
+  options.border_cut = {{"door", {0.716, 1.246}, 0.12, 0.3, 1.0, 0.09, 0.1, true}};
+  const std::vector<Detection> left_detections{test::top_cut_door_outline(160.0)};
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        left_detections, {}, calibration.left, calibration.right, left_T_right, options,
+        Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
+    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    benchmark::DoNotOptimize(depth_m);
+  }
+  state.counters["depth_m"] = depth_m;
+}
+BENCHMARK(BM_OneSideDoor)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition
