@@ -18,17 +18,19 @@
 //     seen from within about 78 deg of head-on (as border_cut.cpp);
 //   - whole outlines: the outer side's two corners so placed are vertical (they lean
 //     horizontally by at most 30% of the inner side's length, as
-//     Triangulator::rectangle_centre_from_one_side), and both sides are a door's height;
+//     Triangulator::rectangle_centre_from_one_side), and the inner side is a door's height (the
+//     outer corners are at its ends' heights);
 //   - cut outlines: the inner side's visible height h_v is at least half the least typical
 //     height and at most 1.05 times the tallest (border_cut.cpp).
 // When the inner side's sweep peaks twice within single_view_min_peak_margin, both peaks are
-// tried and exactly one must pass. The centre is the mean of the four ends for a whole door; for
-// a cut one, the middle of the edge shown whole moved half the door's typical height (the least
-// h_k with h_v <= 1.05 h_k) towards the cut.
+// tried (the second refined) and exactly one must pass, scoring min_single_view_correlation. The
+// centre is the mean of the four ends for a whole door; for a cut one, the middle of the edge shown
+// whole moved half the door's typical height (the least h_k with h_v <= 1.05 h_k) towards the cut.
 #include "one_side_door.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "triangulation.hpp"
@@ -42,8 +44,8 @@ namespace {
 // with one false.)
 constexpr double kMaxInsideBorderPx = 8.0;
 // The outer side's own sweep agrees with the level planes within this fraction of its distance
-// (3% of 2.3 m is 7 cm, 0.7 px of disparity; on the kitchen 1.5%, 3% and 6% gave 269, 270 and
-// 271 true door percepts, with 25, 25 and 27 false).
+// (3% of 2.3 m is 7 cm, 0.7 px of disparity; on the kitchen, with this check for cut outlines
+// only, 1.5%, 3% and 6% gave 269, 270 and 271 true door percepts, with 25, 25 and 27 false).
 constexpr double kMaxOuterDepthMismatch = 0.03;
 // A ray closer than this to the level plane it is intersected with gives no point (radians, as
 // Triangulator::rectangle_centre_from_one_side).
@@ -113,9 +115,18 @@ std::optional<OneSideDoor> place_one_side_door(
   const auto depth = sweep.correlate(c[inner[0]], c[inner[1]], initial_m, kWholeRangePx,
                                      options.min_depth_m, options.max_depth_m);
   if (!depth || depth->correlation < options.min_single_view_correlation) return std::nullopt;
-  std::vector<double> candidates_m{depth->horizontal_distance_m};
-  if (depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
-    candidates_m.push_back(depth->second_distance_m);
+  // Candidates: (distance, score). A second peak within the margin is tried too, refined by a
+  // sweep of a pixel either way (the outer side's check below is finer than a sweep step): when
+  // the door's shape fits there as well, the side is ambiguous and the door is not placed; when
+  // it fits there alone, that peak must itself score min_single_view_correlation.
+  std::vector<std::pair<double, double>> candidates{
+      {depth->horizontal_distance_m, depth->correlation}};
+  if (depth->second_correlation > -1.0 &&
+      depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
+    const auto second = sweep.correlate(c[inner[0]], c[inner[1]], depth->second_distance_m, 1.0,
+                                        options.min_depth_m, options.max_depth_m);
+    candidates.emplace_back(second ? second->horizontal_distance_m : depth->second_distance_m,
+                            second ? second->correlation : depth->second_correlation);
   }
 
   // The outer side's real corners (0 top, 1 bottom): a cut removes the one on the cut edge.
@@ -154,7 +165,11 @@ std::optional<OneSideDoor> place_one_side_door(
       if (std::abs(normal.dot(middle.normalized())) < kMinCosViewing) return std::nullopt;
     }
     if (verify_outer) {
-      const double outer_m = sweep.horizontal_distance(outer_end[real[0] ? 0 : 1]);
+      // The outer side's horizontal distance: the mean of its real corners'.
+      const double outer_m = real[0] && real[1]
+                                 ? 0.5 * (sweep.horizontal_distance(outer_end[0]) +
+                                          sweep.horizontal_distance(outer_end[1]))
+                                 : sweep.horizontal_distance(outer_end[real[0] ? 0 : 1]);
       const auto found = sweep.correlate(c[outer[0]], c[outer[1]], outer_m, kSideSearchPx,
                                          options.min_depth_m, options.max_depth_m);
       if (!found || found->correlation < options.min_single_view_correlation ||
@@ -169,10 +184,10 @@ std::optional<OneSideDoor> place_one_side_door(
       const double outer_height_m = outer_side.dot(u);
       const double lean_m = (outer_side - outer_height_m * u).norm();
       if (lean_m > kMaxOuterLean * inner_height_m) return std::nullopt;
-      if (height_range) {
-        for (const double h : {inner_height_m, outer_height_m}) {
-          if (h < height_range->min_m || h > height_range->max_m) return std::nullopt;
-        }
+      // The outer side's corners are at its inner ends' heights: one height for both sides.
+      if (height_range &&
+          (inner_height_m < height_range->min_m || inner_height_m > height_range->max_m)) {
+        return std::nullopt;
       }
       out.centre_m = 0.25 * (inner_end[0] + inner_end[1] + outer_end[0] + outer_end[1]);
       return out;
@@ -191,14 +206,16 @@ std::optional<OneSideDoor> place_one_side_door(
   };
   std::optional<OneSideDoor> found;
   int admissible = 0;
-  for (const double distance_m : candidates_m) {
+  for (const auto& [distance_m, score] : candidates) {
     if (auto placed = door_at(distance_m)) {
       found = placed;
+      found->side_correlation = score;
       ++admissible;
     }
   }
-  if (admissible != 1) return std::nullopt;
-  found->side_correlation = depth->correlation;
+  if (admissible != 1 || found->side_correlation < options.min_single_view_correlation) {
+    return std::nullopt;
+  }
   return found;
 }
 

@@ -41,7 +41,9 @@ std::optional<SingleViewDoor> place_single_view_door(
     if (!depth || depth->correlation < options.min_single_view_correlation) return std::nullopt;
     correlation[static_cast<std::size_t>(s)] = depth->correlation;
     candidates_m[static_cast<std::size_t>(s)].push_back(depth->horizontal_distance_m);
-    if (depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
+    // (second_correlation is -1 when there is no second peak, whatever the margin.)
+    if (depth->second_correlation > -1.0 &&
+        depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
       candidates_m[static_cast<std::size_t>(s)].push_back(depth->second_distance_m);
     }
   }

@@ -429,61 +429,70 @@ std::vector<StereoPercept> match_and_triangulate(
       right_paired[static_cast<std::size_t>(c.right)] = 1;
     }
     const detail::StereoRig rig{left_intrinsics, right_intrinsics, left_T_right, up_in_left_camera};
-    for (int image = 0; image < 2; ++image) {
-      const std::vector<Detection>& detections = image == 0 ? left : right;
-      const auto& corners = image == 0 ? left_corners : right_corners;
-      const std::vector<char>& paired = image == 0 ? left_paired : right_paired;
-      for (std::size_t d = 0; d < detections.size(); ++d) {
-        const Detection& detection = detections[d];
-        const StereoMatchOptions::BorderCutDoor* cut_door =
-            border_cut_door(options, detection.type);
-        const bool from_one_side = cut_door && cut_door->from_one_side;
-        const bool cut = detection.border_cut != BorderCut::kNone;
-        if (paired[d] || detection.needs_partner || (cut && !from_one_side) ||
-            corners[d].size() != 4) {
-          continue;
-        }
-        if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
-          continue;
-        }
-        const detail::SideCorrelator& sweep = image == 0 ? *correlator : *reverse_correlator;
-        const detail::IdealPixel& reference = (image == 0 ? left_ideal : right_ideal)[d];
-        const double offset_m = reference_depth_offset(options, detection.type);
-        std::optional<StereoPercept> percept;
-        if (!cut) {
-          percept = detail::single_view_percept(
-              detection, static_cast<int>(d), image, corner_array(corners[d]), reference, sweep,
-              triangulator, rig, options, height_range(options, detection.type), offset_m);
-        }
-        // Not placed from both sides: from one side and the level planes of its edges (the other
-        // side beyond the other image's border, or one of two peaks of a repeated edge).
-        if (!percept && from_one_side) {
-          const Eigen::Isometry3d other_T_own = image == 0 ? left_T_right.inverse() : left_T_right;
-          const Eigen::Vector3d up_in_own =
-              image == 0 ? up_in_left_camera
-                         : Eigen::Vector3d(left_T_right.linear().transpose() * up_in_left_camera);
-          const std::optional<detail::OneSideDoor> door = detail::place_one_side_door(
-              corner_array(corners[d]), detection.border_cut, image, sweep,
-              image == 0 ? left_intrinsics : right_intrinsics,
-              image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,
-              *cut_door, height_range(options, detection.type));
-          if (door) {
-            percept = detail::one_image_percept(
-                detection, static_cast<int>(d), image, door->centre_m, door->side_correlation,
-                door->height_sigma_m, reference, triangulator, rig, options, offset_m);
+    // Pass 0 places whole outlines from both sides (item 11) in both images; pass 1 then places
+    // what is left from one side (item 13), so that a one-side percept, less exact, never
+    // displaces the other image's two-sided one of the same door (single_view_min_separation_m).
+    std::array<std::vector<char>, 2> placed{std::vector<char>(left.size(), 0),
+                                            std::vector<char>(right.size(), 0)};
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int image = 0; image < 2; ++image) {
+        const std::vector<Detection>& detections = image == 0 ? left : right;
+        const auto& corners = image == 0 ? left_corners : right_corners;
+        const std::vector<char>& paired = image == 0 ? left_paired : right_paired;
+        for (std::size_t d = 0; d < detections.size(); ++d) {
+          const Detection& detection = detections[d];
+          const StereoMatchOptions::BorderCutDoor* cut_door =
+              border_cut_door(options, detection.type);
+          const bool from_one_side = cut_door && cut_door->from_one_side;
+          const bool cut = detection.border_cut != BorderCut::kNone;
+          if (paired[d] || detection.needs_partner || corners[d].size() != 4) continue;
+          if (pass == 0 ? cut : !from_one_side || placed[static_cast<std::size_t>(image)][d]) {
+            continue;
           }
+          if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
+            continue;
+          }
+          const detail::SideCorrelator& sweep = image == 0 ? *correlator : *reverse_correlator;
+          const detail::IdealPixel& reference = (image == 0 ? left_ideal : right_ideal)[d];
+          const double offset_m = reference_depth_offset(options, detection.type);
+          std::optional<StereoPercept> percept;
+          if (pass == 0) {
+            percept = detail::single_view_percept(
+                detection, static_cast<int>(d), image, corner_array(corners[d]), reference, sweep,
+                triangulator, rig, options, height_range(options, detection.type), offset_m);
+            if (percept) placed[static_cast<std::size_t>(image)][d] = 1;
+          } else {
+            // Not placed from both sides: from one side and the level planes of its edges (the
+            // other side beyond the other image's border, or one of two peaks of a repeated edge).
+            const Eigen::Isometry3d other_T_own =
+                image == 0 ? left_T_right.inverse() : left_T_right;
+            const Eigen::Vector3d up_in_own =
+                image == 0 ? up_in_left_camera
+                           : Eigen::Vector3d(left_T_right.linear().transpose() * up_in_left_camera);
+            const std::optional<detail::OneSideDoor> door = detail::place_one_side_door(
+                corner_array(corners[d]), detection.border_cut, image, sweep,
+                image == 0 ? left_intrinsics : right_intrinsics,
+                image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,
+                *cut_door, height_range(options, detection.type));
+            if (door) {
+              percept = detail::one_image_percept(
+                  detection, static_cast<int>(d), image, door->centre_m, door->side_correlation,
+                  door->height_sigma_m, reference, triangulator, rig, options, offset_m);
+            }
+          }
+          if (!percept) continue;
+          // A second outline of a door that a percept already places.
+          const bool near_another =
+              std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
+                const Detection& other =
+                    p.left_detection >= 0 ? left[p.left_detection] : right[p.right_detection];
+                return other.type == detection.type &&
+                       (p.left_camera_position_m - percept->left_camera_position_m).norm() <
+                           options.single_view_min_separation_m;
+              });
+          if (near_another) continue;
+          out.push_back(*percept);
         }
-        if (!percept) continue;
-        // A second outline of a door that a percept already places.
-        const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
-          const Detection& other =
-              p.left_detection >= 0 ? left[p.left_detection] : right[p.right_detection];
-          return other.type == detection.type &&
-                 (p.left_camera_position_m - percept->left_camera_position_m).norm() <
-                     options.single_view_min_separation_m;
-        });
-        if (near_another) continue;
-        out.push_back(*percept);
       }
     }
   }

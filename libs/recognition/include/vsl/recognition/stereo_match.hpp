@@ -157,11 +157,11 @@ struct StereoMatchOptions {
     // corners are where the own rays meet the planes of the swept side's ends. Kept when those
     // corners project beyond the other image's left or right border, or the other image shows
     // that side where they put it; the edges are min_width_m .. max_width_m long and seen from
-    // within about 78 deg of head-on; a whole outline's other side is vertical and both are a
-    // door's height (height_range_m), a cut one's visible height as for pairs above; at most
-    // single_view_max_bars_inside handles inside, no percept of its type within
-    // single_view_min_separation_m. The covariance is item 11's, plus (height_sigma_m / 2)^2
-    // along the up direction for a cut door.
+    // within about 78 deg of head-on; a whole outline's other side is vertical and the swept one a
+    // door's height (height_range_m; the other's corners are at its ends' heights), a cut one's
+    // visible height as for pairs above; at most single_view_max_bars_inside handles inside, no
+    // percept of its type within single_view_min_separation_m. The covariance is item 11's, plus
+    // (height_sigma_m / 2)^2 along the up direction for a cut door.
     bool from_one_side = false;
   };
   std::vector<BorderCutDoor> border_cut;
