@@ -23,13 +23,6 @@
 namespace vsl::recognition::detail {
 namespace {
 
-// A typical door seen whole up to the border measures its height plus the noise of its ends and
-// of the border's row: up to this fraction of the typical height.
-constexpr double kMaxVisibleOfTypical = 1.05;
-// The least cosine of the angle between the door's normal and the view (about 78 deg): at more
-// grazing angles no door of the evaluations was recognized whole either (docs/recognition.md).
-constexpr double kMinCosViewing = 0.2;
-
 // The corners of the edge the outline shows whole: bottom (3, 2) under a top cut, top (0, 1).
 std::array<int, 2> whole_edge_corners(BorderCut cut) {
   return cut == BorderCut::kTop ? std::array<int, 2>{3, 2} : std::array<int, 2>{0, 1};

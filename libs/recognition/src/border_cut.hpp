@@ -17,6 +17,14 @@
 
 namespace vsl::recognition::detail {
 
+// A typical door seen whole up to the border measures its height plus the noise of its ends and
+// of the border's row: up to this fraction of the typical height (also one_side_door.cpp).
+inline constexpr double kMaxVisibleOfTypical = 1.05;
+// The least cosine of the angle between the door's normal and the view (about 78 deg): at more
+// grazing angles no door of the evaluations was recognized whole either (docs/recognition.md;
+// also one_side_door.cpp).
+inline constexpr double kMinCosViewing = 0.2;
+
 // One image's view of a cut door: its detection, outline corners (ideal pixels, clockwise from
 // the top left, the two on the cut side where the vertical sides leave the image) and reference
 // point (the middle of the edge shown whole).

@@ -33,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include "border_cut.hpp"
 #include "triangulation.hpp"
 
 namespace vsl::recognition::detail {
@@ -53,10 +54,6 @@ constexpr double kMinRayToPlaneRad = 0.05;
 // The outer side found by the level planes leans by at most this fraction of the inner side's
 // length (as Triangulator::rectangle_centre_from_one_side).
 constexpr double kMaxOuterLean = 0.3;
-// As border_cut.cpp: the least cosine between the door's normal and the view, and how much of a
-// typical height the visible part may exceed.
-constexpr double kMinCosViewing = 0.2;
-constexpr double kMaxVisibleOfTypical = 1.05;
 
 // The whole depth range of the sweep, in pixels of image motion: every step.
 constexpr double kWholeRangePx = 1e4;
