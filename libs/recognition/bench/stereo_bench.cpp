@@ -8,7 +8,9 @@
 // the correlators' set-up included. BM_OneSideDoor: the same door, its outline in the left image
 // only, placed from its right side swept over the whole depth range and the level plane of its
 // bottom edge, its left side found in the right image where that plane puts it (one_side_door.hpp),
-// the correlators' set-up included. No main here: the fragments share vsl_recognition_bench's.
+// the correlators' set-up included. BM_OccludedCornerDoor: a pair of door outlines whose
+// bottom-left corner an occluder hides in both images, placed from the other three corners
+// (occluded_corner_door.hpp). No main here: the fragments share vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
 #include <benchmark/benchmark.h>
@@ -123,15 +125,31 @@ void BM_SingleViewDoor(benchmark::State& state) {
 }
 BENCHMARK(BM_SingleViewDoor)->Unit(benchmark::kMicrosecond);
 
-void BM_BorderCutPair(benchmark::State& state) {
-  const head::StereoCalibration calibration =
+// BM_BorderCutPair's and BM_OneSideDoor's scene: a dark door 140 px wide 2 m ahead on a bright
+// wall, its top above the image: 200 px (0.72 m) of it in view, 25 px of disparity.
+struct TopCutDoorScene {
+  head::StereoCalibration calibration =
       head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
-  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  // A dark door 140 px wide 2 m ahead on a bright wall, its top above the image: 200 px (0.72 m)
-  // of it in view, 25 px of disparity.
-  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
-  left(cv::Rect(160, 0, 140, 200)).setTo(70);
-  right(cv::Rect(135, 0, 140, 200)).setTo(70);
+  Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  cv::Mat left{480, 640, CV_8UC1, cv::Scalar(190)};
+  cv::Mat right{480, 640, CV_8UC1, cv::Scalar(190)};
+  TopCutDoorScene() {
+    left(cv::Rect(160, 0, 140, 200)).setTo(70);
+    right(cv::Rect(135, 0, 140, 200)).setTo(70);
+  }
+  // The first percept's depth for these detections (0 for none).
+  double depth_m(const std::vector<Detection>& left_detections,
+                 const std::vector<Detection>& right_detections,
+                 const StereoMatchOptions& options) const {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
+        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
+    return percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+  }
+};
+
+void BM_BorderCutPair(benchmark::State& state) {
+  const TopCutDoorScene scene;
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_edge_slope_rad = 0.3;
@@ -140,10 +158,7 @@ void BM_BorderCutPair(benchmark::State& state) {
   const std::vector<Detection> right_detections{test::top_cut_door_outline(135.0)};
   double depth_m = 0.0;
   for (auto _ : state) {
-    const std::vector<StereoPercept> percepts = match_and_triangulate(
-        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
-        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
-    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    depth_m = scene.depth_m(left_detections, right_detections, options);
     benchmark::DoNotOptimize(depth_m);
   }
   state.counters["depth_m"] = depth_m;
@@ -151,12 +166,7 @@ void BM_BorderCutPair(benchmark::State& state) {
 BENCHMARK(BM_BorderCutPair)->Unit(benchmark::kMicrosecond);
 
 void BM_OneSideDoor(benchmark::State& state) {
-  const head::StereoCalibration calibration =
-      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
-  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
-  left(cv::Rect(160, 0, 140, 200)).setTo(70);
-  right(cv::Rect(135, 0, 140, 200)).setTo(70);
+  const TopCutDoorScene scene;
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.min_single_view_correlation = 0.7;
@@ -166,15 +176,60 @@ void BM_OneSideDoor(benchmark::State& state) {
   const std::vector<Detection> left_detections{test::top_cut_door_outline(160.0)};
   double depth_m = 0.0;
   for (auto _ : state) {
-    const std::vector<StereoPercept> percepts = match_and_triangulate(
-        left_detections, {}, calibration.left, calibration.right, left_T_right, options,
-        Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
-    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    depth_m = scene.depth_m(left_detections, {}, options);
     benchmark::DoNotOptimize(depth_m);
   }
   state.counters["depth_m"] = depth_m;
 }
 BENCHMARK(BM_OneSideDoor)->Unit(benchmark::kMicrosecond);
+
+void BM_OccludedCornerDoor(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  // A door 0.5 m x 0.7 m turned 0.7 rad, 2.5 m ahead, the camera pitched 0.4 rad down; a chair's
+  // back half-way to it hides its bottom-left corner in both images.
+  const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
+  const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));
+  const Eigen::Vector3d across = (turned - turned.dot(down) * down).normalized();
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const std::array<Eigen::Vector3d, 4> corners{
+      centre - 0.25 * across - 0.35 * down, centre + 0.25 * across - 0.35 * down,
+      centre + 0.25 * across + 0.35 * down, centre - 0.25 * across + 0.35 * down};
+  const Eigen::Vector3d contour = corners[3] + 0.175 * across - 0.175 * down;
+  Detection left, right;
+  for (Detection* d : {&left, &right}) {
+    const bool is_left = d == &left;
+    const auto image = [&](const Eigen::Vector3d& x) {
+      return is_left ? project(x, calibration.left)
+                     : project(left_T_right.inverse() * x, calibration.right);
+    };
+    d->type = "door";
+    d->reference_px = image(centre);
+    d->area_px = 9000.0;
+    d->major_axis_angle_rad = M_PI / 2;
+    d->major_extent_px = 150.0;
+    d->minor_extent_px = 60.0;
+    d->confidence = 0.9f;
+    for (const Eigen::Vector3d& c : corners) d->corners_px.push_back(image(c));
+    d->corners_px[3] = image(is_left ? contour : Eigen::Vector3d(0.5 * contour));
+    d->height_px = (d->corners_px[2] - d->corners_px[1]).norm();
+  }
+  StereoMatchOptions options;
+  options.max_side_tilt_rad = 0.03;
+  options.max_edge_slope_rad = 0.3;
+  options.height_range_m = {{"door", 0.5, 2.5}};
+  options.border_cut = {{"door", {0.716, 1.246}, 0.12, 0.3, 1.0, 0.09, 0.1, false, true}};
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        {left}, {right}, calibration.left, calibration.right, left_T_right, options, -down);
+    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    benchmark::DoNotOptimize(depth_m);
+  }
+  state.counters["depth_m"] = depth_m;
+}
+BENCHMARK(BM_OccludedCornerDoor)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition

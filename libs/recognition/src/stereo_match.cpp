@@ -14,6 +14,7 @@
 #include "border_cut.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
+#include "occluded_corner_door.hpp"
 #include "one_side_door.hpp"
 #include "side_correlation.hpp"
 #include "single_view.hpp"
@@ -230,16 +231,37 @@ std::vector<StereoPercept> match_and_triangulate(
         rectangles ? std::max(options.max_epipolar_distance_px,
                               kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px))
                    : options.max_epipolar_distance_px;
+    // Two door outlines that the position or the side gate refuses may show a door with one
+    // corner hidden by an occluder in both images (occluded_corner_door.hpp, Doors item 14).
+    std::optional<detail::OccludedCornerDoor> occluded;
+    const auto place_occluded_corner = [&]() {
+      const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
+      if (!rectangles || !door || !door->occluded_corner || !(up_in_left_camera.norm() > 0.0) ||
+          std::max(bars_inside(left, dl, options), bars_inside(right, dr, options)) >
+              options.single_view_max_bars_inside) {
+        return false;
+      }
+      occluded = detail::place_occluded_corner_door(
+          {corner_array(left_corners[l]), corner_array(right_corners[r])}, triangulator,
+          up_in_left_camera.normalized(), options.max_side_tilt_rad,
+          options.max_epipolar_distance_px, *door, height_range(options, dl.type));
+      if (!occluded) return false;
+      trace.refused_by = StereoGate::kNone;
+      trace.value = trace.limit = 0.0;
+      epipolar_px = occluded->residual_px;
+      return true;
+    };
     if (!(epipolar_px <= max_epipolar_px)) {
-      return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+      refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+      if (!place_occluded_corner()) return std::nullopt;
     }
     // The side gate of two door outlines (door_pair.hpp).
     std::optional<detail::DoorSides> sides;
-    if (rectangles) {
+    if (rectangles && !occluded) {
       sides = detail::judge_door_sides(
           {corner_array(left_corners[l]), corner_array(right_corners[r])}, triangulator,
           up_in_left_camera, correlator.has_value(), options, trace);
-      if (!sides) return std::nullopt;
+      if (!sides && !place_occluded_corner()) return std::nullopt;
     }
     // Size: both cameras are about equally far from the object, so the areas agree.
     // Two views of a bar: their mean widths (one may be a fragment of the other), each with a
@@ -283,7 +305,11 @@ std::vector<StereoPercept> match_and_triangulate(
     }
     // Two door outlines: the centre from their vertical sides (door_pair.hpp).
     bool rectangle = false;
-    if (rectangles) {
+    if (occluded) {
+      point = occluded->centre_m;
+      triangulation->left_camera_position_m = point + offset * point.normalized();
+      rectangle = true;
+    } else if (rectangles) {
       const detail::DoorCentre door = detail::door_centre(
           {corner_array(left_corners[l]), corner_array(right_corners[r])}, *sides, triangulator,
           correlator ? &*correlator : nullptr, reverse_correlator ? &*reverse_correlator : nullptr,

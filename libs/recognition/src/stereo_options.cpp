@@ -108,7 +108,8 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       const config::Node door = classes->at(type);
       door.expect_map();
       door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
-                        "max_side_tilt_rad", "min_peak_margin", "from_one_side"});
+                        "max_side_tilt_rad", "min_peak_margin", "from_one_side",
+                        "occluded_corner"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
       const config::Node heights = door.at("typical_heights_m");
@@ -137,6 +138,13 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         // It sweeps as item 11 does, with its thresholds.
         if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
           v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
+        }
+      }
+      if (const auto v = door.find("occluded_corner")) {
+        parsed.occluded_corner = v->as_bool();
+        // The rectangle's sides are judged by the whole outlines' side gate.
+        if (parsed.occluded_corner && !(out.max_side_tilt_rad > 0.0)) {
+          v->fail("needs max_side_tilt_rad > 0 (the good side's test)");
         }
       }
       out.border_cut.push_back(parsed);

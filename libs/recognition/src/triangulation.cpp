@@ -25,9 +25,35 @@ constexpr double kMaxBarUpOutOfPlaneSin = 0.3;
 
 Triangulator::Triangulator(const head::CameraIntrinsics& left, const head::CameraIntrinsics& right,
                            const Eigen::Isometry3d& left_T_right)
-    : left_k_inverse_(camera_matrix(left).inverse()),
+    : left_k_(camera_matrix(left)),
+      left_k_inverse_(left_k_.inverse()),
       right_k_inverse_in_left_(left_T_right.linear() * camera_matrix(right).inverse()),
+      right_k_from_left_(camera_matrix(right) * left_T_right.linear().transpose()),
       right_centre_m_(left_T_right.translation()) {}
+
+std::optional<Eigen::Vector2d> Triangulator::project_left(const Eigen::Vector3d& point_m) const {
+  if (!(point_m.z() > 0.0)) return std::nullopt;
+  return (left_k_ * point_m).hnormalized();
+}
+
+std::optional<Eigen::Vector2d> Triangulator::project_right(const Eigen::Vector3d& point_m) const {
+  const Eigen::Vector3d h = right_k_from_left_ * (point_m - right_centre_m_);
+  if (!(h.z() > 0.0)) return std::nullopt;
+  return h.hnormalized();
+}
+
+std::optional<Eigen::Vector3d> Triangulator::left_ray_on_level_plane(
+    const Eigen::Vector2d& left_ideal_px, const Eigen::Vector3d& on_plane_m,
+    const Eigen::Vector3d& up) const {
+  if (!(up.norm() > 0.0)) return std::nullopt;
+  const Eigen::Vector3d u = up.normalized();
+  const Eigen::Vector3d ray = (left_k_inverse_ * left_ideal_px.homogeneous()).normalized();
+  const double ur = u.dot(ray);
+  if (!(std::abs(ur) > kMinRayElevationSin)) return std::nullopt;
+  const double s = u.dot(on_plane_m) / ur;
+  if (!(s > 0.0)) return std::nullopt;
+  return Eigen::Vector3d(s * ray);
+}
 
 namespace {
 

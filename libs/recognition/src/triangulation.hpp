@@ -136,6 +136,18 @@ class Triangulator {
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
       const Eigen::Vector3d& up_in_left_camera) const;
 
+  // The ideal pixel of a point (left camera frame, metres) in the left or right image, nullopt
+  // when it is not in front of that camera.
+  std::optional<Eigen::Vector2d> project_left(const Eigen::Vector3d& point_m) const;
+  std::optional<Eigen::Vector2d> project_right(const Eigen::Vector3d& point_m) const;
+
+  // Where the left camera's ray through `left_ideal_px` meets the horizontal plane (normal `up`,
+  // left camera frame) through `on_plane_m`; nullopt when the ray runs within 0.05 rad of the
+  // plane (as in rectangle_centre_from_one_side) or meets it behind the camera.
+  std::optional<Eigen::Vector3d> left_ray_on_level_plane(const Eigen::Vector2d& left_ideal_px,
+                                                         const Eigen::Vector3d& on_plane_m,
+                                                         const Eigen::Vector3d& up) const;
+
   double max_side_tilt(const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
                        const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
                        const Eigen::Vector3d& up_in_left_camera) const;
@@ -160,8 +172,10 @@ class Triangulator {
                                           const Eigen::Vector2d& right_ideal_px, double& s,
                                           double& w) const;
 
+  Eigen::Matrix3d left_k_;
   Eigen::Matrix3d left_k_inverse_;
   Eigen::Matrix3d right_k_inverse_in_left_;  // R K_r^-1
+  Eigen::Matrix3d right_k_from_left_;        // K_r R^T
   Eigen::Vector3d right_centre_m_;           // t
 };
 

@@ -213,6 +213,69 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
             1u);
 }
 
+TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
+  // The camera pitched 0.4 rad down, the door (0.5 m x 0.7 m, turned 0.7 rad) 2.5 m away. A
+  // chair's back half-way to the door hides its bottom-left corner in both images: the
+  // outline's corner there is a point of the chair's contour, in the left image where the door's
+  // face shows at 35% of the width and 25% of the height in from that corner, in the right image
+  // at the chair's depth, half the face point's distance (some 17 px further left).
+  const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
+  const Eigen::Vector3d up = -down;
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const Pair p = door_pair(centre, calibration_, left_T_right_, down);
+  options_.max_side_tilt_rad = 0.03;
+  options_.height_range_m.push_back({"door", 0.5, 2.5});
+  StereoMatchOptions::BorderCutDoor door;
+  door.type = "door";
+  door.typical_heights_m = {0.7};
+  door.min_width_m = 0.3;
+  door.max_width_m = 1.0;
+  door.occluded_corner = true;
+  options_.border_cut.push_back(door);
+  const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));
+  const Eigen::Vector3d across = (turned - turned.dot(down) * down).normalized();
+  const Eigen::Vector3d bottom_left = centre - 0.25 * across + 0.35 * down;
+  const auto hide_bottom_left = [&](const Eigen::Vector3d& face_point_m, double nearer) {
+    Pair out = p;
+    out.left.corners_px[3] =
+        project(face_point_m, calibration_.left, Eigen::Isometry3d::Identity());
+    out.right.corners_px[3] = project(nearer * face_point_m, calibration_.right, left_T_right_);
+    return out;
+  };
+  const Pair hidden = hide_bottom_left(bottom_left + 0.35 * 0.5 * across - 0.25 * 0.7 * down, 0.5);
+  std::vector<StereoPairTrace> trace;
+  const auto placed =
+      match_and_triangulate({hidden.left}, {hidden.right}, calibration_.left, calibration_.right,
+                            left_T_right_, options_, up, &trace);
+  ASSERT_EQ(placed.size(), 1u);
+  EXPECT_LT((placed[0].left_camera_position_m - centre).norm(), 1e-3);
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
+  const auto refused_by = [&](const Pair& pair) {
+    const auto out = match_and_triangulate({pair.left}, {pair.right}, calibration_.left,
+                                           calibration_.right, left_T_right_, options_, up, &trace);
+    EXPECT_TRUE(out.empty());
+    return trace.at(0).refused_by;
+  };
+  // Off: the tilted side refuses the pair, as before.
+  options_.border_cut[0].occluded_corner = false;
+  EXPECT_NE(refused_by(hidden), StereoGate::kNone);
+  options_.border_cut[0].occluded_corner = true;
+  // The contour's point outside the door (below it): an object added to the outline, no door
+  // corner hidden.
+  EXPECT_NE(refused_by(hide_bottom_left(bottom_left + 0.1 * down, 0.6)), StereoGate::kNone);
+  // Both bottom corners hidden: no vertical side is whole, nothing fixes the door's height.
+  Pair both = hidden;
+  const Eigen::Vector3d bottom_right = centre + 0.25 * across + 0.35 * down;
+  const Eigen::Vector3d face = bottom_right - 0.1 * across - 0.2 * down;
+  both.left.corners_px[2] = project(face, calibration_.left, Eigen::Isometry3d::Identity());
+  both.right.corners_px[2] = project(0.6 * face, calibration_.right, left_T_right_);
+  EXPECT_NE(refused_by(both), StereoGate::kNone);
+  // Too narrow for a door (the width bound of the class): refused.
+  options_.border_cut[0].min_width_m = 0.6;
+  EXPECT_NE(refused_by(hidden), StereoGate::kNone);
+}
+
 TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
   // The camera pitched 0.4 rad down, the door below the eyes: its top and bottom edges between
   // the sides' 3D ends are level for exact outlines.
@@ -493,7 +556,8 @@ stereo:
   single_view_max_bars_inside: 2
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
-           max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true}
+           max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
+           occluded_corner: true}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -532,6 +596,7 @@ stereo:
   EXPECT_EQ(o.border_cut[0].max_side_tilt_rad, 0.09);
   EXPECT_EQ(o.border_cut[0].min_peak_margin, 0.15);
   EXPECT_TRUE(o.border_cut[0].from_one_side);
+  EXPECT_TRUE(o.border_cut[0].occluded_corner);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -614,6 +679,16 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                          "min_width_m: 0.3, max_width_m: 1, from_one_side: 2}}\n")
                 .find("stereo.border_cut.door.from_one_side"),
             std::string::npos);
+  // The good side of a door with an occluded corner is judged by the whole outlines' side gate.
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+                         "min_width_m: 0.3, max_width_m: 1, occluded_corner: true}}\n")
+                .find("s.yaml:2: stereo.border_cut.door.occluded_corner: needs "
+                      "max_side_tilt_rad > 0"),
+            std::string::npos);
+  EXPECT_EQ(stereo_error("  max_side_tilt_rad: 0.03\n  border_cut: {door: {typical_heights_m: "
+                         "[0.7], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1, "
+                         "occluded_corner: true}}\n"),
+            "");
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;

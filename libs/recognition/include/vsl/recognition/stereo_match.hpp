@@ -163,6 +163,18 @@ struct StereoMatchOptions {
     // percept of its type within single_view_min_separation_m. The covariance is item 11's, plus
     // (height_sigma_m / 2)^2 along the up direction for a cut door.
     bool from_one_side = false;
+    // A pair of whole door outlines that the position or the side gate refused, placed from
+    // three corners when an occluder in front of the door (a chair's back, a table top) hides
+    // the fourth in both images (occluded_corner_door.hpp): one vertical side is vertical in 3D
+    // in both images (max_side_tilt_rad above, the whole outlines') and both cameras see its
+    // ends at the same points; of the other side's corners exactly one is where the level plane
+    // of the good side's end at that edge puts it in both images (max_epipolar_distance_px, or
+    // kRectangleEpipolarFraction of the outlines' height), and the other lies within the
+    // rectangle so completed; the good side is a door's height (height_range_m), the level edge
+    // min_width_m .. max_width_m long and seen from within about 78 deg of head-on; at most
+    // single_view_max_bars_inside handles inside each outline. The other gates of a pair then
+    // apply; its covariance is a pair's.
+    bool occluded_corner = false;
   };
   std::vector<BorderCutDoor> border_cut;
 };
