@@ -58,7 +58,8 @@ struct StereoMatchOptions {
   // occluder's contour or a neighbour's strip gave the outline a side). When only one side in
   // one image is so tilted, the pair's centre comes from the other three (the good side from
   // both images, the other side from the image where it is vertical, its ends at the heights of
-  // the good side's ends); otherwise the pair is refused. Needs the up direction
+  // the good side's ends); otherwise the pair is refused (but see BorderCutDoor::occluded_corner
+  // for a side that is no door edge in both images). Needs the up direction
   // (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
   // Rectangle outlines whose centre comes from both vertical sides (Triangulator::
