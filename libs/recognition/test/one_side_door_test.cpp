@@ -79,12 +79,15 @@ class OneSideDoorTest : public ::testing::Test {
   Detection outline(const std::array<Eigen::Vector3d, 4>& corners, int image,
                     BorderCut cut = BorderCut::kNone) const {
     auto px = pixels(corners, image);
+    const auto at_row = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double v) {
+      return Eigen::Vector2d(a.x() + (b.x() - a.x()) * (v - a.y()) / (b.y() - a.y()), v);
+    };
     if (cut == BorderCut::kBottom) {
-      const auto at_row = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double v) {
-        return Eigen::Vector2d(a.x() + (b.x() - a.x()) * (v - a.y()) / (b.y() - a.y()), v);
-      };
       px[2] = at_row(px[1], px[2], 479.5);
       px[3] = at_row(px[0], px[3], 479.5);
+    } else if (cut == BorderCut::kTop) {
+      px[0] = at_row(px[3], px[0], -0.5);
+      px[1] = at_row(px[2], px[1], -0.5);
     }
     Detection d;
     d.type = "door";
@@ -92,7 +95,8 @@ class OneSideDoorTest : public ::testing::Test {
     d.corners_px.assign(px.begin(), px.end());
     d.reference_px = cut == BorderCut::kNone
                          ? Eigen::Vector2d(0.25 * (px[0] + px[1] + px[2] + px[3]))
-                         : Eigen::Vector2d(0.5 * (px[0] + px[1]));
+                     : cut == BorderCut::kTop ? Eigen::Vector2d(0.5 * (px[2] + px[3]))
+                                              : Eigen::Vector2d(0.5 * (px[0] + px[1]));
     d.height_px = 0.5 * ((px[3] - px[0]).norm() + (px[2] - px[1]).norm());
     d.area_px = 5000.0;
     d.confidence = 0.8f;
@@ -191,6 +195,47 @@ TEST_F(OneSideDoorTest, TheEdgesMustBeADoorsWidth) {
   EXPECT_TRUE(match({outline(corners, 0)}, {}).empty());
   options_.border_cut[0].max_width_m = 0.55;
   EXPECT_EQ(match({outline(corners, 0)}, {}).size(), 1u);
+}
+
+TEST_F(OneSideDoorTest, ACutByTheTopBorderTakesTheTypicalHeightDownwards) {
+  // A wall cupboard's door above the eyes, its top above both images and its left side beyond
+  // the right image's left border: placed from its right side and the level plane of its bottom
+  // edge, its centre half a typical height above that edge.
+  const Eigen::Vector3d centre(-1.01, -0.75, 2.3);
+  const auto corners = door_corners(centre, 0.2);
+  render(corners);
+  ASSERT_LT(pixels(corners, 0)[1].y(), 0.0);
+  ASSERT_GT(pixels(corners, 0)[3].y(), 0.0);
+  ASSERT_LT(pixels(corners, 1)[3].x(), 0.0);
+  const Detection door = outline(corners, 0, BorderCut::kTop);
+  const std::vector<StereoPercept> percepts = match({door}, {});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
+  EXPECT_GT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.06 * 0.06);
+  options_.border_cut[0].from_one_side = false;
+  EXPECT_TRUE(match({door}, {}).empty());
+}
+
+TEST_F(OneSideDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOnce) {
+  // The right image shows a second edge like the door's right side 13 px further right (a
+  // neighbour's dark stripe): the inner side's sweep peaks there (5 m from the camera,
+  // horizontally) before the door's own edge (2.5 m, within the margin of 0.2). At 5 m the level
+  // planes make a door about 1 m wide: for doors up to 0.9 m only 2.5 m fits.
+  options_.border_cut[0].max_width_m = 0.9;
+  const auto corners = door_corners(kNearLeftBorder, 0.2);
+  render(corners);
+  const double edge_px = pixels(corners, 1)[1].x();
+  right_(cv::Rect(static_cast<int>(edge_px) + 7, 0, 6, 480)).setTo(70);
+  const Detection door = outline(corners, 0);
+  const std::vector<StereoPercept> percepts = match({door}, {});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - kNearLeftBorder).norm(), 0.02);
+  // Doors up to 1.5 m wide: the shape fits at both peaks, and the door is not placed.
+  options_.border_cut[0].max_width_m = 1.5;
+  EXPECT_TRUE(match({door}, {}).empty());
+  // Without the second edge the same bounds place it.
+  render(corners);
+  EXPECT_EQ(match({door}, {}).size(), 1u);
 }
 
 }  // namespace
