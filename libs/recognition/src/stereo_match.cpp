@@ -203,6 +203,13 @@ std::vector<StereoPercept> match_and_triangulate(
     // rectangle outlines, their vertical sides nest along the epipolar direction
     // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height.
     const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
+    // A stack of drawer fronts merged into one door-shaped blob carries a handle per front.
+    if (rectangles && options.pair_max_bars_inside > 0) {
+      const int bars = std::max(bars_inside(left, dl, options), bars_inside(right, dr, options));
+      if (bars > options.pair_max_bars_inside) {
+        return refuse(StereoGate::kBarsInside, bars, options.pair_max_bars_inside);
+      }
+    }
     // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in
     // 3D, and the position gate as the containment of the shorter segment in the longer.
     std::optional<detail::Triangulator::BarSpan> bar;

@@ -17,13 +17,26 @@ namespace vsl::recognition {
 StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   StereoMatchOptions out;
   section.expect_map();
-  section.expect_keys({"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
-                       "max_orientation_difference_rad", "min_elongation_for_orientation",
-                       "pixel_sigma_px", "reference_depth_offset_m", "major_extent_range_m",
-                       "height_range_m", "max_side_tilt_rad", "max_edge_slope_rad", "bar_types",
-                       "min_side_correlation", "min_single_view_correlation",
-                       "single_view_min_peak_margin", "single_view_min_separation_m",
-                       "single_view_max_bars_inside", "border_cut"});
+  section.expect_keys({"max_epipolar_distance_px",
+                       "min_depth_m",
+                       "max_depth_m",
+                       "max_area_ratio",
+                       "max_orientation_difference_rad",
+                       "min_elongation_for_orientation",
+                       "pixel_sigma_px",
+                       "reference_depth_offset_m",
+                       "major_extent_range_m",
+                       "height_range_m",
+                       "max_side_tilt_rad",
+                       "max_edge_slope_rad",
+                       "bar_types",
+                       "min_side_correlation",
+                       "min_single_view_correlation",
+                       "single_view_min_peak_margin",
+                       "single_view_min_separation_m",
+                       "single_view_max_bars_inside",
+                       "pair_max_bars_inside",
+                       "border_cut"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -67,6 +80,11 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     const std::int64_t bars = v->as_int();
     if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
     out.single_view_max_bars_inside = static_cast<int>(bars);
+  }
+  if (const auto v = section.find("pair_max_bars_inside")) {
+    const std::int64_t bars = v->as_int();
+    if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
+    out.pair_max_bars_inside = static_cast<int>(bars);
   }
   if (const auto v = section.find("max_side_tilt_rad")) {
     out.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2: sin() still grows

@@ -276,6 +276,43 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   EXPECT_NE(refused_by(hidden), StereoGate::kNone);
 }
 
+TEST_F(StereoMatchTest, ADoorPairWithAHandlePerDrawerFrontInsideIsRefused) {
+  // Three handles inside both outlines: a stack of drawer fronts merged into one door-shaped blob.
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const Pair door = door_pair(centre, calibration_, left_T_right_);
+  options_.bar_types = {"handle"};
+  std::vector<Detection> left{door.left}, right{door.right};
+  const auto add_handle = [&](double dy_m) {
+    const Pair h = pair_of(centre + Eigen::Vector3d(0.0, dy_m, 0.0));
+    left.push_back(h.left);
+    right.push_back(h.right);
+  };
+  const auto door_placed = [&] {
+    for (const StereoPercept& p : match(left, right)) {
+      if (p.left_detection == 0 && p.right_detection == 0) return true;
+    }
+    return false;
+  };
+  add_handle(-0.2);
+  add_handle(0.0);
+  options_.pair_max_bars_inside = 2;
+  EXPECT_TRUE(door_placed());  // two: a door's own handle and its neighbour's
+  add_handle(0.2);
+  EXPECT_FALSE(door_placed());
+  std::vector<StereoPairTrace> trace;
+  match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_, options_,
+                        Eigen::Vector3d::Zero(), &trace);
+  bool refused = false;
+  for (const StereoPairTrace& t : trace) {
+    if (t.left_detection == 0 && t.right_detection == 0) {
+      refused = t.refused_by == StereoGate::kBarsInside && t.value == 3.0;
+    }
+  }
+  EXPECT_TRUE(refused);
+  options_.pair_max_bars_inside = 0;  // off
+  EXPECT_TRUE(door_placed());
+}
+
 TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
   // The camera pitched 0.4 rad down, the door below the eyes: its top and bottom edges between
   // the sides' 3D ends are level for exact outlines.
@@ -554,6 +591,7 @@ stereo:
   single_view_min_peak_margin: 0.15
   single_view_min_separation_m: 0.25
   single_view_max_bars_inside: 2
+  pair_max_bars_inside: 3
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
@@ -587,6 +625,7 @@ stereo:
   EXPECT_EQ(o.single_view_min_peak_margin, 0.15);
   EXPECT_EQ(o.single_view_min_separation_m, 0.25);
   EXPECT_EQ(o.single_view_max_bars_inside, 2);
+  EXPECT_EQ(o.pair_max_bars_inside, 3);
   ASSERT_EQ(o.border_cut.size(), 1u);
   EXPECT_EQ(o.border_cut[0].type, "door");
   EXPECT_EQ(o.border_cut[0].typical_heights_m, (std::vector<double>{0.7, 1.2}));

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string>
 
 #include "vsl/world/world_io.hpp"
 #include "vsl/worldgen/inspect.hpp"
@@ -185,6 +186,26 @@ TEST(Kitchen, ShippedWorldIsExactlyWhatTheGeneratorMakes) {
         << kWorld << " is stale or was edited by hand (line " << number << " is '" << a
         << "', the generator makes '" << b << "'); regenerate it from the repository root with\n"
         << "  vsl-worldgen kitchen config/layouts/kitchen.yaml -o config/worlds/kitchen.yaml";
+  }
+}
+
+// The evaluation layouts of recognition (docs/recognition.md): the galley and the L-shaped
+// check layout are shipped as generated worlds too, and must stay what their layouts make.
+TEST(Kitchen, ShippedEvaluationWorldsAreWhatTheirLayoutsMake) {
+  for (const std::string name : {"kitchen_galley", "kitchen_l"}) {
+    const std::string layout = "config/layouts/" + name + ".yaml";
+    const std::string world = "config/worlds/" + name + ".yaml";
+    std::ifstream in(world, std::ios::binary);
+    ASSERT_TRUE(in) << world << " is missing";
+    std::stringstream file;
+    file << in.rdbuf();
+    std::string body, line;
+    while (std::getline(file, line)) {
+      if (line.rfind("#", 0) != 0) body += line + "\n";
+    }
+    EXPECT_EQ(body, text_of(generate_kitchen(load_kitchen_layout(layout))))
+        << world << " is stale or was edited by hand; regenerate it from the repository root "
+        << "with\n  vsl-worldgen kitchen " << layout << " -o " << world;
   }
 }
 

@@ -114,6 +114,12 @@ struct StereoMatchOptions {
   double single_view_min_peak_margin = 0.1;
   double single_view_min_separation_m = 0.2;
   int single_view_max_bars_inside = 1;
+  // A pair of whole door outlines (detections with corners) is refused when more than this many
+  // detections of a bar type (handles) lie inside either outline: a door carries one handle, and
+  // a neighbour's may stand within its outline's slack (a double door's two handles are a few
+  // centimetres apart), but three or more are a stack of drawer fronts, or several doors, merged
+  // into one door-shaped blob in both images. Needs bar_types; 0 turns it off.
+  int pair_max_bars_inside = 0;
   // Optional, per class: doors cut by the top or bottom image border along a whole side
   // (Detection::border_cut), placed from the edge they show whole and the class's typical
   // heights. Two detections cut along the same border make a pair when the ends of that edge lie
