@@ -150,8 +150,9 @@ std::optional<OneSideDoor> place_one_side_door(
       const Eigen::Vector2d ideal(other.fx_px * in_other.x() / in_other.z() + other.cx_px,
                                   other.fy_px * in_other.y() / in_other.z() + other.cy_px);
       const double raw_u = distort(ideal, other).x();
-      const bool beyond = own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
-                                         : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx;
+      const bool beyond = past_distortion_fold(ideal, other) ||
+                          (own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
+                                          : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx);
       verify_outer = verify_outer || !beyond;
       // A door's width, seen from within about 78 deg of head-on.
       const Eigen::Vector3d along = x - inner_end[e];

@@ -49,6 +49,14 @@ Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntri
   return {k.fx_px * xd + k.cx_px, k.fy_px * yd + k.cy_px};
 }
 
+bool past_distortion_fold(const Eigen::Vector2d& ideal_px, const head::CameraIntrinsics& k) {
+  const double x = (ideal_px.x() - k.cx_px) / k.fx_px;
+  const double y = (ideal_px.y() - k.cy_px) / k.fy_px;
+  const double r2 = x * x + y * y;
+  const auto& d = k.distortion;  // k1, k2, p1, p2, k3
+  return !(1.0 + r2 * (3.0 * d[0] + r2 * (5.0 * d[1] + r2 * 7.0 * d[4])) > 0.0);
+}
+
 SideCorrelator::SideCorrelator(const cv::Mat& left_grey, const cv::Mat& right_grey,
                                const head::CameraIntrinsics& left,
                                const head::CameraIntrinsics& right,

@@ -30,6 +30,13 @@ namespace vsl::recognition::detail {
 //   raw = (fx x' + cx, fy y' + cy).
 Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntrinsics& intrinsics);
 
+// Whether an ideal pixel lies past the fold of that model's radial term: r (1 + k1 r^2 + k2 r^4 +
+// k3 r^6) stops growing where its derivative 1 + 3 k1 r^2 + 5 k2 r^4 + 7 k3 r^6 reaches zero
+// (strong barrel distortion, k1 < 0), and beyond it distort() maps points far outside the view
+// back into the image. Such a point is outside the image, wherever distort() puts it.
+bool past_distortion_fold(const Eigen::Vector2d& ideal_px,
+                          const head::CameraIntrinsics& intrinsics);
+
 // The side correlation's search around an outline's depth (pixels of image motion either way):
 // a margin, plus this fraction of the outline's width, which covers a stile (60 mm of a 0.3-0.6
 // m door) that one image's outline lacks.

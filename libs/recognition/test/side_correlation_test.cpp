@@ -137,6 +137,24 @@ TEST(DistortTest, IsOpenCvsModelForward) {
   EXPECT_EQ(detail::distort({100.25, 40.5}, camera), Eigen::Vector2d(100.25, 40.5));
 }
 
+TEST(DistortTest, PastTheFoldOfStrongBarrelDistortion) {
+  head::CameraIntrinsics camera;
+  camera.fx_px = camera.fy_px = 562.0;
+  camera.cx_px = 320.0;
+  camera.cy_px = 240.0;
+  // k1 = -0.5: r (1 - 0.5 r^2) peaks at r^2 = 2/3 (r = 0.82, 459 px from the centre); a point
+  // 562 px right of the centre (r = 1) comes back to 281 px, inside the image.
+  camera.distortion = {-0.5, 0.0, 0.0, 0.0, 0.0};
+  const Eigen::Vector2d far_right(320.0 + 562.0, 240.0);
+  EXPECT_LT(detail::distort(far_right, camera).x(), 640.0);
+  EXPECT_TRUE(detail::past_distortion_fold(far_right, camera));
+  EXPECT_FALSE(detail::past_distortion_fold({320.0 + 400.0, 240.0}, camera));
+  EXPECT_FALSE(detail::past_distortion_fold({320.0, 240.0}, camera));
+  // Without distortion there is no fold.
+  camera.distortion = {};
+  EXPECT_FALSE(detail::past_distortion_fold({1e4, 1e4}, camera));
+}
+
 TEST_F(SideCorrelationTest, FindsTheSideFromAWrongStart) {
   const detail::SideCorrelator correlator(left_grey_, right_grey_, calibration_.left,
                                           calibration_.right, left_T_right_, up());
