@@ -21,6 +21,11 @@
 
 namespace vsl::recognition::detail {
 
+// Which vertical side is swept: the inner one, the other placed on the level planes
+// (BorderCutDoor::from_one_side), or, for a whole outline, the outer one, the inner one placed
+// where the other image shows it or shows no edge at all (BorderCutDoor::merged_side).
+enum class SweptSide { kInner, kOuter };
+
 struct OneSideDoor {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // the sweep's own camera frame, metres
   double side_correlation = 0.0;                       // the inner side's score
@@ -42,6 +47,6 @@ std::optional<OneSideDoor> place_one_side_door(
     const head::CameraIntrinsics& other, const Eigen::Isometry3d& other_T_own,
     const Eigen::Vector3d& up_in_own_camera, const StereoMatchOptions& options,
     const StereoMatchOptions::BorderCutDoor& door,
-    const StereoMatchOptions::ExtentRange* height_range);
+    const StereoMatchOptions::ExtentRange* height_range, SweptSide swept = SweptSide::kInner);
 
 }  // namespace vsl::recognition::detail

@@ -155,6 +155,7 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
   const int steps = static_cast<int>(std::floor((lambda_max - lambda_min) / step)) + 1;
 
   std::vector<double> scores(static_cast<std::size_t>(steps), -2.0);  // -2: window left the image
+  std::vector<double> contrasts(static_cast<std::size_t>(steps), 0.0);
   std::vector<double> right_values(n);
   for (int k = 0; k < steps; ++k) {
     const double lambda = lambda_min + k * step;
@@ -177,6 +178,7 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
     // 2 cov / (var_l + var_r): the correlation, times 2 k / (1 + k^2) for a contrast ratio k of
     // the two windows, so that a faint groove does not match a door's outer edge.
     scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm * left_norm + right_norm2);
+    contrasts[static_cast<std::size_t>(k)] = std::sqrt(right_norm2) / left_norm;
   }
   const auto best = std::max_element(scores.begin(), scores.end());
   if (*best < -1.5) return std::nullopt;
@@ -190,6 +192,7 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
   SideDepth out;
   out.horizontal_distance_m = 1.0 / (lambda_min + (k + offset) * step);
   out.correlation = *best;
+  out.contrast_ratio = contrasts[static_cast<std::size_t>(k)];
   // The second peak: the best local maximum outside the main peak's lobe (the steps over which
   // the scores fall monotonically from it) and at least kDistinctPeakSteps away. Steps where the
   // window left the image are no neighbours: a maximum at the edge of the image still counts.

@@ -502,11 +502,15 @@ std::vector<StereoPercept> match_and_triangulate(
             const Eigen::Vector3d up_in_own =
                 image == 0 ? up_in_left_camera
                            : Eigen::Vector3d(left_T_right.linear().transpose() * up_in_left_camera);
-            const std::optional<detail::OneSideDoor> door = detail::place_one_side_door(
-                corner_array(corners[d]), detection.border_cut, image, sweep,
-                image == 0 ? left_intrinsics : right_intrinsics,
-                image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,
-                *cut_door, height_range(options, detection.type));
+            const auto place = [&](detail::SweptSide swept) {
+              return detail::place_one_side_door(
+                  corner_array(corners[d]), detection.border_cut, image, sweep,
+                  image == 0 ? left_intrinsics : right_intrinsics,
+                  image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,
+                  *cut_door, height_range(options, detection.type), swept);
+            };
+            std::optional<detail::OneSideDoor> door = place(detail::SweptSide::kInner);
+            if (!door && cut_door->merged_side) door = place(detail::SweptSide::kOuter);
             if (door) {
               percept = detail::one_image_percept(
                   detection, static_cast<int>(d), image, door->centre_m, door->side_correlation,

@@ -126,7 +126,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       const config::Node door = classes->at(type);
       door.expect_map();
       door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
-                        "max_side_tilt_rad", "min_peak_margin", "from_one_side",
+                        "max_side_tilt_rad", "min_peak_margin", "from_one_side", "merged_side",
                         "occluded_corner"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
@@ -156,6 +156,12 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         // It sweeps as item 11 does, with its thresholds.
         if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
           v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
+        }
+      }
+      if (const auto v = door.find("merged_side")) {
+        parsed.merged_side = v->as_bool();
+        if (parsed.merged_side && !parsed.from_one_side) {
+          v->fail("needs from_one_side (it is item 13 with the sides' roles swapped)");
         }
       }
       if (const auto v = door.find("occluded_corner")) {

@@ -238,5 +238,30 @@ TEST_F(OneSideDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOn
   EXPECT_EQ(match({door}, {}).size(), 1u);
 }
 
+TEST_F(OneSideDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
+  // A door in the middle of both images; in the right image a neighbour of the door's colour
+  // continues past its right side, with no reveal between them (segmentation merged the two
+  // there). Item 11 and item 13 sweep the right side and find nothing; swept from its left side,
+  // with its right side on the level planes where the right image shows no edge, it is placed.
+  const Eigen::Vector3d centre(-0.3, 0.55, 2.3);
+  const auto corners = door_corners(centre, 0.2);
+  options_.border_cut[0].merged_side = true;
+  render(corners);
+  const auto right_px = pixels(corners, 1);
+  const int side_u = static_cast<int>(std::lround(0.5 * (right_px[1].x() + right_px[2].x())));
+  right_(cv::Rect(side_u - 2, 0, 60, 480)).setTo(70);
+  const Detection door = outline(corners, 0);
+  const std::vector<StereoPercept> percepts = match({door}, {});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
+  options_.border_cut[0].merged_side = false;
+  EXPECT_TRUE(match({door}, {}).empty());
+  options_.border_cut[0].merged_side = true;
+  // The right image shows an edge there, but not the door's (bright inside, dark beyond): no
+  // merge, another surface; the door is not placed.
+  right_(cv::Rect(side_u - 8, 0, 8, 480)).setTo(200);
+  EXPECT_TRUE(match({door}, {}).empty());
+}
+
 }  // namespace
 }  // namespace vsl::recognition

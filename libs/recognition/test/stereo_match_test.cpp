@@ -595,7 +595,7 @@ stereo:
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
-           occluded_corner: true}
+           merged_side: true, occluded_corner: true}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -636,6 +636,7 @@ stereo:
   EXPECT_EQ(o.border_cut[0].min_peak_margin, 0.15);
   EXPECT_TRUE(o.border_cut[0].from_one_side);
   EXPECT_TRUE(o.border_cut[0].occluded_corner);
+  EXPECT_TRUE(o.border_cut[0].merged_side);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -717,6 +718,11 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
                          "min_width_m: 0.3, max_width_m: 1, from_one_side: 2}}\n")
                 .find("stereo.border_cut.door.from_one_side"),
+            std::string::npos);
+  // A merged side is item 13 with the roles swapped.
+  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+                         "min_width_m: 0.3, max_width_m: 1, merged_side: true}}\n")
+                .find("s.yaml:2: stereo.border_cut.door.merged_side: needs from_one_side"),
             std::string::npos);
   // The good side of a door with an occluded corner is judged by the whole outlines' side gate.
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "

@@ -170,6 +170,13 @@ struct StereoMatchOptions {
     // percept of its type within single_view_min_separation_m. The covariance is item 11's, plus
     // (height_sigma_m / 2)^2 along the up direction for a cut door.
     bool from_one_side = false;
+    // With from_one_side: a whole door outline that item 13 did not place is tried once more
+    // with the roles swapped: its outer side swept, its inner side placed on the level planes,
+    // and kept when the other image shows the inner side there or shows no edge at all there
+    // (its window's contrast under 0.3 of the own image's: the reveal between the door and a
+    // neighbour of its colour, unseen in the other image, where segmentation merged the two).
+    // The other tests are item 13's.
+    bool merged_side = false;
     // A pair of whole door outlines that the position or the side gate refused, placed from
     // three corners when an occluder in front of the door (a chair's back, a table top) hides
     // the fourth in both images (occluded_corner_door.hpp): one vertical side is vertical in 3D
