@@ -187,7 +187,7 @@ void BM_OccludedCornerDoor(benchmark::State& state) {
   const head::StereoCalibration calibration =
       head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
   const Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  // A door 0.5 m x 0.7 m turned 0.7 rad, 2.5 m ahead, the camera pitched 0.4 rad down; a chair's
+  // A door 0.5 m x 0.7 m turned 0.7 rad, 2.5 m ahead, the camera pitched 0.4 rad up; a chair's
   // back half-way to it hides its bottom-left corner in both images.
   const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
   const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));

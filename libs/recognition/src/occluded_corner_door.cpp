@@ -8,11 +8,14 @@
 // b_e lies on the horizontal plane through G_e: P_e is where the left ray through b_e meets it.
 // Where b_e is the door's corner, the right camera sees it there too; where it is a point of an
 // occluder's contour, the right image's b_e lies at the occluder's depth, off P_e's projection by
-// the difference in disparity (a chair 1 m before a door 3 m away: 9 px). The rectangle is
+// the difference in disparity between the occluder and P_e (the level plane's point on the left
+// ray, which lies on the door's plane only for the door's corner). A contour point that happens
+// to be as far as P_e confirms both corners, and the pair stays refused. The rectangle is
 // G_0, G_1 and the corner P_e that both cameras confirm; its fourth corner is
 // C_h = P_e + (G_h - G_e) (h = 1 - e: the sides are parallel), its centre the mean of the four.
 #include "occluded_corner_door.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 

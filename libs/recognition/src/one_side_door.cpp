@@ -162,9 +162,12 @@ std::optional<OneSideDoor> place_one_side_door(
       const Eigen::Vector2d ideal(other.fx_px * in_other.x() / in_other.z() + other.cx_px,
                                   other.fy_px * in_other.y() / in_other.z() + other.cy_px);
       const double raw_u = distort(ideal, other).x();
-      const bool beyond = past_distortion_fold(ideal, other) ||
-                          (own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
-                                          : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx);
+      // (Past the distortion's fold on that side of the image, the point is beyond it too.)
+      const bool folded = past_distortion_fold(ideal, other) &&
+                          (own_image == 0 ? ideal.x() < other.cx_px : ideal.x() > other.cx_px);
+      const bool beyond =
+          folded || (own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
+                                    : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx);
       // (A swept outer side leaves the inner one, placed, on the side away from that border.)
       verify_outer = verify_outer || swapped || !beyond;
       // A door's width, seen from within about 78 deg of head-on.

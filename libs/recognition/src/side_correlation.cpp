@@ -3,6 +3,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "epipolar.hpp"
@@ -54,7 +55,29 @@ bool past_distortion_fold(const Eigen::Vector2d& ideal_px, const head::CameraInt
   const double y = (ideal_px.y() - k.cy_px) / k.fy_px;
   const double r2 = x * x + y * y;
   const auto& d = k.distortion;  // k1, k2, p1, p2, k3
-  return !(1.0 + r2 * (3.0 * d[0] + r2 * (5.0 * d[1] + r2 * 7.0 * d[4])) > 0.0);
+  // With s = r^2 the derivative is p(s) = 1 + 3 k1 s + 5 k2 s^2 + 7 k3 s^3, p(0) = 1. The point
+  // is past the fold when p reaches zero anywhere on [0, r^2] (the radius stops growing there,
+  // even if it grows again further out): p's least value on the interval is at an end or where
+  // p'(s) = 3 k1 + 10 k2 s + 21 k3 s^2 vanishes.
+  const auto p = [&](double s) {
+    return 1.0 + s * (3.0 * d[0] + s * (5.0 * d[1] + s * 7.0 * d[4]));
+  };
+  if (!(p(r2) > 0.0)) return true;
+  const double a = 21.0 * d[4], b = 10.0 * d[1], c = 3.0 * d[0];
+  std::array<double, 2> critical{-1.0, -1.0};
+  if (a != 0.0) {
+    const double discriminant = b * b - 4.0 * a * c;
+    if (discriminant >= 0.0) {
+      const double root = std::sqrt(discriminant);
+      critical = {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)};
+    }
+  } else if (b != 0.0) {
+    critical[0] = -c / b;
+  }
+  for (const double s : critical) {
+    if (s > 0.0 && s < r2 && !(p(s) > 0.0)) return true;
+  }
+  return false;
 }
 
 SideCorrelator::SideCorrelator(const cv::Mat& left_grey, const cv::Mat& right_grey,

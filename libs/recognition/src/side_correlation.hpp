@@ -30,10 +30,11 @@ namespace vsl::recognition::detail {
 //   raw = (fx x' + cx, fy y' + cy).
 Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntrinsics& intrinsics);
 
-// Whether an ideal pixel lies past the fold of that model's radial term: r (1 + k1 r^2 + k2 r^4 +
-// k3 r^6) stops growing where its derivative 1 + 3 k1 r^2 + 5 k2 r^4 + 7 k3 r^6 reaches zero
-// (strong barrel distortion, k1 < 0), and beyond it distort() maps points far outside the view
-// back into the image. Such a point is outside the image, wherever distort() puts it.
+// Whether an ideal pixel lies past the first fold of that model's radial term: r (1 + k1 r^2 +
+// k2 r^4 + k3 r^6) stops growing where its derivative 1 + 3 k1 r^2 + 5 k2 r^4 + 7 k3 r^6 first
+// reaches zero (strong barrel distortion, k1 < 0), and beyond it distort() maps points far
+// outside the view back into the image, even where the radius grows again further out. Such a
+// point is outside the image, wherever distort() puts it.
 bool past_distortion_fold(const Eigen::Vector2d& ideal_px,
                           const head::CameraIntrinsics& intrinsics);
 

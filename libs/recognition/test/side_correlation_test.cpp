@@ -76,7 +76,8 @@ struct DoorScene {
 
 class SideCorrelationTest : public ::testing::Test {
  protected:
-  // The head pitched 0.4 rad down, the door below the eyes, turned 40 deg about the vertical.
+  // The head pitched 0.4 rad up (world down is (0, cos, -sin) in the camera), the door 0.4 m
+  // above the eyes, turned 40 deg about the vertical.
   SideCorrelationTest() {
     const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));
     door_.centre_m = Eigen::Vector3d(0.1, 0.6, 2.5);
@@ -150,6 +151,12 @@ TEST(DistortTest, PastTheFoldOfStrongBarrelDistortion) {
   EXPECT_TRUE(detail::past_distortion_fold(far_right, camera));
   EXPECT_FALSE(detail::past_distortion_fold({320.0 + 400.0, 240.0}, camera));
   EXPECT_FALSE(detail::past_distortion_fold({320.0, 240.0}, camera));
+  // k2 > 0 turns the radius back up past a second root (r^2 in (1, 2) for k1 = -0.5, k2 = 0.1):
+  // points beyond that are still past the first fold.
+  camera.distortion = {-0.5, 0.1, 0.0, 0.0, 0.0};
+  EXPECT_FALSE(detail::past_distortion_fold({320.0 + 0.9 * 562.0, 240.0}, camera));
+  EXPECT_TRUE(detail::past_distortion_fold({320.0 + 1.2 * 562.0, 240.0}, camera));
+  EXPECT_TRUE(detail::past_distortion_fold({320.0 + 2.0 * 562.0, 240.0}, camera));
   // Without distortion there is no fold.
   camera.distortion = {};
   EXPECT_FALSE(detail::past_distortion_fold({1e4, 1e4}, camera));

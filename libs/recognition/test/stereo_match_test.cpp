@@ -166,7 +166,7 @@ TEST_F(StereoMatchTest, HeightRangeGate) {
 }
 
 TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
-  // The camera pitched 0.4 rad down: the door's vertical sides converge in the image, but each
+  // The camera pitched 0.4 rad up: the door's vertical sides converge in the image, but each
   // spans a plane holding the up direction.
   const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
   const Eigen::Vector3d up = -down;
@@ -214,11 +214,11 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
 }
 
 TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
-  // The camera pitched 0.4 rad down, the door (0.5 m x 0.7 m, turned 0.7 rad) 2.5 m away. A
+  // The camera pitched 0.4 rad up, the door (0.5 m x 0.7 m, turned 0.7 rad) 2.5 m away. A
   // chair's back half-way to the door hides its bottom-left corner in both images: the
   // outline's corner there is a point of the chair's contour, in the left image where the door's
   // face shows at 35% of the width and 25% of the height in from that corner, in the right image
-  // at the chair's depth, half the face point's distance (some 17 px further left).
+  // at the chair's depth, half the face point's distance (some 21 px further left).
   const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
   const Eigen::Vector3d up = -down;
   const Eigen::Vector3d centre(0.1, 0.3, 2.5);
@@ -257,6 +257,21 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
     EXPECT_TRUE(out.empty());
     return trace.at(0).refused_by;
   };
+  // The right image's contour corner at another point of the occluder's contour (45% of the
+  // height up, not 25%): the outlines' sides no longer nest, and the position gate refuses the
+  // pair before the side gate; the three corners still place the door.
+  Pair elsewhere = hidden;
+  elsewhere.right.corners_px[3] =
+      project(0.5 * Eigen::Vector3d(bottom_left + 0.35 * 0.5 * across - 0.45 * 0.7 * down),
+              calibration_.right, left_T_right_);
+  const auto placed_elsewhere =
+      match_and_triangulate({elsewhere.left}, {elsewhere.right}, calibration_.left,
+                            calibration_.right, left_T_right_, options_, up, &trace);
+  ASSERT_EQ(placed_elsewhere.size(), 1u);
+  EXPECT_LT((placed_elsewhere[0].left_camera_position_m - centre).norm(), 1e-3);
+  options_.border_cut[0].occluded_corner = false;
+  EXPECT_EQ(refused_by(elsewhere), StereoGate::kEpipolar);
+  options_.border_cut[0].occluded_corner = true;
   // Off: the tilted side refuses the pair, as before.
   options_.border_cut[0].occluded_corner = false;
   EXPECT_NE(refused_by(hidden), StereoGate::kNone);
@@ -314,7 +329,7 @@ TEST_F(StereoMatchTest, ADoorPairWithAHandlePerDrawerFrontInsideIsRefused) {
 }
 
 TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
-  // The camera pitched 0.4 rad down, the door below the eyes: its top and bottom edges between
+  // The camera pitched 0.4 rad up, the door above the eyes: its top and bottom edges between
   // the sides' 3D ends are level for exact outlines.
   const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
   const Eigen::Vector3d up = -down;

@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "../src/triangulation.hpp"
 #include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -79,6 +80,26 @@ TEST_F(TriangulationTest, VergedAndRaisedRightCameraRecoversThePoint) {
   for (const Eigen::Vector3d& x : points_in_view(50, 2)) {
     EXPECT_LT((triangulate(x).left_camera_position_m - x).norm(), 1e-9) << x.transpose();
   }
+}
+
+TEST_F(TriangulationTest, ProjectionsIntoBothImagesWithVergedEyes) {
+  // Triangulator::project_left / project_right (ideal pixels) against the test's own projection,
+  // for a right camera turned and raised: K_r R^T (X - t) with left_T_right = (R, t).
+  left_T_right_.linear() = (Eigen::AngleAxisd(-0.3, Eigen::Vector3d::UnitY()) *
+                            Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitX()))
+                               .toRotationMatrix();
+  left_T_right_.translation() = Eigen::Vector3d(0.09, 0.01, -0.005);
+  const detail::Triangulator triangulator(calibration_.left, calibration_.right, left_T_right_);
+  for (const Eigen::Vector3d& x : points_in_view(50, 3)) {
+    const auto left = triangulator.project_left(x);
+    const auto right = triangulator.project_right(x);
+    ASSERT_TRUE(left && right);
+    EXPECT_LT((*left - project(x, calibration_.left, Eigen::Isometry3d::Identity())).norm(), 1e-9);
+    EXPECT_LT((*right - project(x, calibration_.right, left_T_right_)).norm(), 1e-9);
+  }
+  // Behind a camera: no pixel.
+  EXPECT_FALSE(triangulator.project_left({0.0, 0.0, -1.0}).has_value());
+  EXPECT_FALSE(triangulator.project_right({0.0, 0.0, -1.0}).has_value());
 }
 
 TEST_F(TriangulationTest, DistortionIsUndoneFirst) {

@@ -182,8 +182,8 @@ struct StereoMatchOptions {
     // the fourth in both images (occluded_corner_door.hpp): one vertical side is vertical in 3D
     // in both images (max_side_tilt_rad above, the whole outlines') and both cameras see its
     // ends at the same points; of the other side's corners exactly one is where the level plane
-    // of the good side's end at that edge puts it in both images (max_epipolar_distance_px, or
-    // kRectangleEpipolarFraction of the outlines' height), and the other lies within the
+    // of the good side's end at that edge puts it in both images (max_epipolar_distance_px), and
+    // the other lies within the
     // rectangle so completed; the good side is a door's height (height_range_m), the level edge
     // min_width_m .. max_width_m long and seen from within about 78 deg of head-on; at most
     // single_view_max_bars_inside handles inside each outline. The other gates of a pair then
@@ -243,8 +243,10 @@ enum class StereoGate {
   kDepth,
   kExtent,
   kHeight,
-  kWeakPair,   // both detections weak (Detection::needs_partner)
-  kBarsInside  // border-cut doors: more bar detections inside an outline than allowed
+  kWeakPair,  // both detections weak (Detection::needs_partner)
+  // more bar detections inside an outline than allowed (border-cut doors:
+  // single_view_max_bars_inside; whole door pairs: pair_max_bars_inside)
+  kBarsInside
 };
 const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
 
