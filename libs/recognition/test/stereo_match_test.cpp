@@ -53,6 +53,13 @@ class StereoMatchTest : public ::testing::Test {
     return match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_,
                                  options_);
   }
+  // With the up direction (left camera frame) and, optionally, the pairs' trace.
+  std::vector<StereoPercept> match(const std::vector<Detection>& left,
+                                   const std::vector<Detection>& right, const Eigen::Vector3d& up,
+                                   std::vector<StereoPairTrace>* trace = nullptr) const {
+    return match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_,
+                                 options_, up, trace);
+  }
 
   head::StereoCalibration calibration_ = sim_calibration();
   Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
@@ -172,10 +179,7 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
   const Eigen::Vector3d up = -down;
   const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_, down);
   options_.max_side_tilt_rad = 0.03;
-  EXPECT_EQ(match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
-                                  left_T_right_, options_, up)
-                .size(),
-            1u);
+  EXPECT_EQ(match({p.left}, {p.right}, up).size(), 1u);
   // An occluder cut the bottom-left corner off the left outline (a chair's contour became its
   // side): 8 px off the door's edge, a side some 0.05 rad from vertical. The other three sides
   // are door edges: the left side from the right image, at the heights of the right side's ends,
@@ -184,33 +188,24 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
   Pair cut = p;
   cut.left.corners_px[3].x() += 8.0;
   std::vector<StereoPairTrace> trace;
-  const auto one_side =
-      match_and_triangulate({cut.left}, {cut.right}, calibration_.left, calibration_.right,
-                            left_T_right_, options_, up, &trace);
+  const auto one_side = match({cut.left}, {cut.right}, up, &trace);
   ASSERT_EQ(one_side.size(), 1u);
   EXPECT_LT((one_side[0].left_camera_position_m - centre).norm(), 1e-3);
   // The right image's left side is cut too (the occluder in both views): refused, as is an
   // outline with both sides tilted in one image.
   Pair both = cut;
   both.right.corners_px[3].x() += 8.0;
-  EXPECT_TRUE(match_and_triangulate({both.left}, {both.right}, calibration_.left,
-                                    calibration_.right, left_T_right_, options_, up, &trace)
-                  .empty());
+  EXPECT_TRUE(match({both.left}, {both.right}, up, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
   EXPECT_GT(trace[0].value, 0.03);
   Pair two = cut;
   two.left.corners_px[2].x() -= 8.0;
-  EXPECT_TRUE(match_and_triangulate({two.left}, {two.right}, calibration_.left, calibration_.right,
-                                    left_T_right_, options_, up)
-                  .empty());
+  EXPECT_TRUE(match({two.left}, {two.right}, up).empty());
   // Without the up direction or with the gate off, the sides are not checked.
   EXPECT_EQ(match({both.left}, {both.right}).size(), 1u);
   options_.max_side_tilt_rad = 0.0;
-  EXPECT_EQ(match_and_triangulate({both.left}, {both.right}, calibration_.left, calibration_.right,
-                                  left_T_right_, options_, up)
-                .size(),
-            1u);
+  EXPECT_EQ(match({both.left}, {both.right}, up).size(), 1u);
 }
 
 TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
@@ -244,16 +239,13 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   };
   const Pair hidden = hide_bottom_left(bottom_left + 0.35 * 0.5 * across - 0.25 * 0.7 * down, 0.5);
   std::vector<StereoPairTrace> trace;
-  const auto placed =
-      match_and_triangulate({hidden.left}, {hidden.right}, calibration_.left, calibration_.right,
-                            left_T_right_, options_, up, &trace);
+  const auto placed = match({hidden.left}, {hidden.right}, up, &trace);
   ASSERT_EQ(placed.size(), 1u);
   EXPECT_LT((placed[0].left_camera_position_m - centre).norm(), 1e-3);
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
   const auto refused_by = [&](const Pair& pair) {
-    const auto out = match_and_triangulate({pair.left}, {pair.right}, calibration_.left,
-                                           calibration_.right, left_T_right_, options_, up, &trace);
+    const auto out = match({pair.left}, {pair.right}, up, &trace);
     EXPECT_TRUE(out.empty());
     return trace.at(0).refused_by;
   };
@@ -264,9 +256,7 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   elsewhere.right.corners_px[3] =
       project(0.5 * Eigen::Vector3d(bottom_left + 0.35 * 0.5 * across - 0.45 * 0.7 * down),
               calibration_.right, left_T_right_);
-  const auto placed_elsewhere =
-      match_and_triangulate({elsewhere.left}, {elsewhere.right}, calibration_.left,
-                            calibration_.right, left_T_right_, options_, up, &trace);
+  const auto placed_elsewhere = match({elsewhere.left}, {elsewhere.right}, up, &trace);
   ASSERT_EQ(placed_elsewhere.size(), 1u);
   EXPECT_LT((placed_elsewhere[0].left_camera_position_m - centre).norm(), 1e-3);
   options_.border_cut[0].occluded_corner = false;
@@ -336,10 +326,7 @@ TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
   const Pair p = door_pair({0.1, 0.6, 2.5}, calibration_, left_T_right_, down);
   options_.max_edge_slope_rad = 0.3;
   std::vector<StereoPairTrace> trace;
-  EXPECT_EQ(match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
-                                  left_T_right_, options_, up, &trace)
-                .size(),
-            1u);
+  EXPECT_EQ(match({p.left}, {p.right}, up, &trace).size(), 1u);
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
   // The right outline lost the stile of the door's right side (8 px): that side's disparity, so
@@ -347,9 +334,7 @@ TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
   Pair lost = p;
   lost.right.corners_px[1].x() -= 8.0;
   lost.right.corners_px[2].x() -= 8.0;
-  EXPECT_TRUE(match_and_triangulate({lost.left}, {lost.right}, calibration_.left,
-                                    calibration_.right, left_T_right_, options_, up, &trace)
-                  .empty());
+  EXPECT_TRUE(match({lost.left}, {lost.right}, up, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
   EXPECT_GT(trace[0].value, 0.3);
@@ -357,10 +342,7 @@ TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
   // Off, or without the up direction: not checked.
   EXPECT_EQ(match({lost.left}, {lost.right}).size(), 1u);
   options_.max_edge_slope_rad = 0.0;
-  EXPECT_EQ(match_and_triangulate({lost.left}, {lost.right}, calibration_.left, calibration_.right,
-                                  left_T_right_, options_, up)
-                .size(),
-            1u);
+  EXPECT_EQ(match({lost.left}, {lost.right}, up).size(), 1u);
 }
 
 TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
@@ -721,34 +703,31 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                 .find("s.yaml:2: stereo.border_cut.door.typical_heights_m: expected a list of "
                       "heights in metres, ascending"),
             std::string::npos);
+  // A door entry with its required keys and `extra` ("key: value"), after `before`.
+  const auto cut_door_error = [](const std::string& extra, const std::string& before = "") {
+    return stereo_error(before +
+                        "  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+                        "min_width_m: 0.3, max_width_m: 1, " +
+                        extra + "}}\n");
+  };
   // The side beyond the border is swept as a single-view door's sides are.
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-                         "min_width_m: 0.3, max_width_m: 1, from_one_side: true}}\n")
+  EXPECT_NE(cut_door_error("from_one_side: true")
                 .find("s.yaml:2: stereo.border_cut.door.from_one_side: needs "
                       "min_single_view_correlation > 0"),
             std::string::npos)
-      << stereo_error(
-             "  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-             "min_width_m: 0.3, max_width_m: 1, from_one_side: true}}\n");
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-                         "min_width_m: 0.3, max_width_m: 1, from_one_side: 2}}\n")
-                .find("stereo.border_cut.door.from_one_side"),
+      << cut_door_error("from_one_side: true");
+  EXPECT_NE(cut_door_error("from_one_side: 2").find("stereo.border_cut.door.from_one_side"),
             std::string::npos);
   // A merged side is item 13 with the roles swapped.
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-                         "min_width_m: 0.3, max_width_m: 1, merged_side: true}}\n")
+  EXPECT_NE(cut_door_error("merged_side: true")
                 .find("s.yaml:2: stereo.border_cut.door.merged_side: needs from_one_side"),
             std::string::npos);
   // The good side of a door with an occluded corner is judged by the whole outlines' side gate.
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
-                         "min_width_m: 0.3, max_width_m: 1, occluded_corner: true}}\n")
+  EXPECT_NE(cut_door_error("occluded_corner: true")
                 .find("s.yaml:2: stereo.border_cut.door.occluded_corner: needs "
                       "max_side_tilt_rad > 0"),
             std::string::npos);
-  EXPECT_EQ(stereo_error("  max_side_tilt_rad: 0.03\n  border_cut: {door: {typical_heights_m: "
-                         "[0.7], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1, "
-                         "occluded_corner: true}}\n"),
-            "");
+  EXPECT_EQ(cut_door_error("occluded_corner: true", "  max_side_tilt_rad: 0.03\n"), "");
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;
