@@ -112,6 +112,19 @@ std::optional<Eigen::Vector3d> SideCorrelator::point_at(const Eigen::Vector2d& q
 std::optional<SideCorrelator::SideDepth> SideCorrelator::correlate(
     const Eigen::Vector2d& a, const Eigen::Vector2d& b, double initial_distance_m, double search_px,
     double min_distance_m, double max_distance_m) const {
+  const std::array<double, 8> arguments{
+      a.x(), a.y(), b.x(), b.y(), initial_distance_m, search_px, min_distance_m, max_distance_m};
+  for (const Sweep& earlier : sweeps_) {
+    if (earlier.arguments == arguments) return earlier.result;
+  }
+  sweeps_.push_back(
+      {arguments, sweep(a, b, initial_distance_m, search_px, min_distance_m, max_distance_m)});
+  return sweeps_.back().result;
+}
+
+std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
+    const Eigen::Vector2d& a, const Eigen::Vector2d& b, double initial_distance_m, double search_px,
+    double min_distance_m, double max_distance_m) const {
   const Eigen::Vector2d along = b - a;
   const double length = along.norm();
   if (!(length >= kMinSideLengthPx) || !(up_.norm() > 0.0) || !(initial_distance_m > 0.0)) {

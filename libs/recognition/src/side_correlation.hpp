@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -86,6 +87,9 @@ class SideCorrelator {
   // around `initial_distance_m` and within [min_distance_m, max_distance_m]. nullopt when the
   // side is shorter than 8 px, its window has no contrast, or the window leaves the right image
   // (or falls behind the right camera) over the whole search.
+  // The same call twice returns the first result without sweeping again: single-view doors
+  // (item 11), doors from one side (item 13) and their swapped form (item 16) sweep the same
+  // sides of one outline over the whole depth range.
   std::optional<SideDepth> correlate(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                      double initial_distance_m, double search_px,
                                      double min_distance_m, double max_distance_m) const;
@@ -97,6 +101,16 @@ class SideCorrelator {
   double horizontal_distance(const Eigen::Vector3d& p) const;
 
  private:
+  std::optional<SideDepth> sweep(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                 double initial_distance_m, double search_px, double min_distance_m,
+                                 double max_distance_m) const;
+
+  // Earlier calls of this frame: their arguments (a, b, initial, search, min, max) and result.
+  struct Sweep {
+    std::array<double, 8> arguments;
+    std::optional<SideDepth> result;
+  };
+  mutable std::vector<Sweep> sweeps_;
   const cv::Mat& left_grey_;
   const cv::Mat& right_grey_;
   head::CameraIntrinsics left_;
