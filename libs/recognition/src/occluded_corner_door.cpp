@@ -20,36 +20,16 @@
 #include <cmath>
 
 #include "border_cut.hpp"
+#include "convex_polygon.hpp"
 
 namespace vsl::recognition::detail {
 namespace {
 
-// Whether `p` lies inside the convex quadrilateral `quad` (either winding), up to `margin_px`.
-bool inside(const std::array<Eigen::Vector2d, 4>& quad, const Eigen::Vector2d& p,
-            double margin_px) {
-  const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-    return u.x() * v.y() - u.y() * v.x();
-  };
-  double area = 0.0;
-  for (int k = 0; k < 4; ++k) area += cross(quad[k], quad[(k + 1) % 4]);
-  if (!(std::abs(area) > 0.0)) return false;
-  const double winding = area > 0.0 ? 1.0 : -1.0;
-  for (int k = 0; k < 4; ++k) {
-    const Eigen::Vector2d edge = quad[(k + 1) % 4] - quad[k];
-    const double length = edge.norm();
-    if (!(length > 0.0)) return false;
-    if (winding * cross(edge, p - quad[k]) / length < -margin_px) return false;
-  }
-  return true;
-}
-
 std::optional<OccludedCornerDoor> with_good_side(
     int good, const DoorOutlines& outlines, const Triangulator& triangulator,
-    const Eigen::Vector3d& up, double max_side_tilt_rad, double max_residual_px,
-    const StereoMatchOptions::BorderCutDoor& door,
+    const Eigen::Vector3d& up, const std::array<std::array<double, 2>, 2>& tilts,
+    double max_side_tilt_rad, double max_residual_px, const StereoMatchOptions::BorderCutDoor& door,
     const StereoMatchOptions::ExtentRange* height_range) {
-  const std::array<std::array<double, 2>, 2> tilts =
-      triangulator.side_tilts(outlines.left, outlines.right, up);
   const double max_sin = std::sin(max_side_tilt_rad);
   if (!(tilts[good][0] <= max_sin && tilts[good][1] <= max_sin)) return std::nullopt;
   const std::array<std::array<int, 2>, 2> sides = Triangulator::vertical_sides(outlines.left);
@@ -108,7 +88,9 @@ std::optional<OccludedCornerDoor> with_good_side(
       quad[k] = *px;
     }
     const auto& corners = image == 0 ? outlines.left : outlines.right;
-    if (!inside(quad, corners[out.hidden_corner], max_residual_px)) return std::nullopt;
+    if (!(depth_inside_convex(quad, quad.size(), corners[out.hidden_corner]) >= -max_residual_px)) {
+      return std::nullopt;
+    }
   }
   return out;
 }
@@ -121,9 +103,12 @@ std::optional<OccludedCornerDoor> place_occluded_corner_door(
     const StereoMatchOptions::BorderCutDoor& door,
     const StereoMatchOptions::ExtentRange* height_range) {
   if (!(up_in_left_camera.norm() > 0.0) || !(max_side_tilt_rad > 0.0)) return std::nullopt;
-  const auto first = with_good_side(0, outlines, triangulator, up_in_left_camera, max_side_tilt_rad,
-                                    max_residual_px, door, height_range);
-  const auto second = with_good_side(1, outlines, triangulator, up_in_left_camera,
+  // The sides' tilts in both images ([side][image], Triangulator::side_tilts), for both tries.
+  const std::array<std::array<double, 2>, 2> tilts =
+      triangulator.side_tilts(outlines.left, outlines.right, up_in_left_camera);
+  const auto first = with_good_side(0, outlines, triangulator, up_in_left_camera, tilts,
+                                    max_side_tilt_rad, max_residual_px, door, height_range);
+  const auto second = with_good_side(1, outlines, triangulator, up_in_left_camera, tilts,
                                      max_side_tilt_rad, max_residual_px, door, height_range);
   if (first.has_value() == second.has_value()) return std::nullopt;
   return first ? first : second;

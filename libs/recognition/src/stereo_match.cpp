@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "border_cut.hpp"
+#include "convex_polygon.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
 #include "occluded_corner_door.hpp"
@@ -55,27 +56,14 @@ bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
 constexpr double kBarInsideMarginPx = 2.0;
 
 // How many detections of a bar type in `detections` (one image's) have their reference point
-// inside the convex outline of `outline` (raw pixels, corners clockwise in the image), by
-// kBarInsideMarginPx: the signed distance from each side, the cross product of the side and the
-// point from its start over the side's length, has the outline's orientation's sign.
+// inside the convex outline of `outline` (raw pixels), by kBarInsideMarginPx.
 int bars_inside(const std::vector<Detection>& detections, const Detection& outline,
                 const StereoMatchOptions& options) {
   const std::vector<Eigen::Vector2d>& c = outline.corners_px;
   int count = 0;
   for (const Detection& d : detections) {
     if (!is_bar_type(options, d.type)) continue;
-    double least_positive = std::numeric_limits<double>::infinity();
-    double least_negative = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < c.size(); ++k) {
-      const Eigen::Vector2d edge = c[(k + 1) % c.size()] - c[k];
-      const Eigen::Vector2d to = d.reference_px - c[k];
-      const double length = edge.norm();
-      if (!(length > 0.0)) continue;
-      const double distance = (edge.x() * to.y() - edge.y() * to.x()) / length;
-      least_positive = std::min(least_positive, distance);
-      least_negative = std::min(least_negative, -distance);
-    }
-    count += least_positive >= kBarInsideMarginPx || least_negative >= kBarInsideMarginPx;
+    count += detail::depth_inside_convex(c, c.size(), d.reference_px) >= kBarInsideMarginPx;
   }
   return count;
 }
