@@ -22,7 +22,8 @@ TEST(VslEvalRecognition, PrintsPrecisionRecallErrorAndTiming) {
       300.0);
   ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
   for (const char* text : {"3 stereo frames", "precision", "recall", "door ", "handle ", "2-3 m",
-                           "time per stereo pair: median"}) {
+                           "time per stereo pair: median",
+                           "recall of flat objects by viewing angle", "door     30-45 deg"}) {
     EXPECT_NE(result.out.find(text), std::string::npos) << text << "\n" << result.out;
   }
   EXPECT_NE(result.err.find("frame 3/3"), std::string::npos) << result.err;  // the status line
@@ -38,8 +39,9 @@ TEST(VslEvalRecognition, JsonOnStandardOutput) {
   ASSERT_FALSE(result.out.empty());
   EXPECT_EQ(result.out.front(), '{') << result.out;
   for (const char* key :
-       {"\"frames\":2", "\"type\":\"door\"", "\"type\":\"handle\"", "\"precision\":", "\"recall\":",
-        "\"error_by_distance_band\":", "\"median_error_m\":", "\"time_per_stereo_pair_ms\":"}) {
+       {"\"frames\":2", "\"type\":\"door\"", "\"type\":\"handle\"",
+        "\"precision\":", "\"recall\":", "\"error_by_distance_band\":", "\"median_error_m\":",
+        "\"recall_by_viewing_angle\":", "\"min_angle_deg\":", "\"time_per_stereo_pair_ms\":"}) {
     EXPECT_NE(result.out.find(key), std::string::npos) << key << "\n" << result.out;
   }
 }
@@ -64,6 +66,7 @@ TEST(VslEvalRecognition, DumpWritesPicturesFunnelLinesAndTheFunnelTable) {
   std::stringstream text;
   text << frame.rdbuf();
   EXPECT_NE(text.str().find("\nfunnel "), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find(" | stage "), std::string::npos) << text.str();  // each funnel line's
   std::filesystem::remove_all(dir);
 }
 

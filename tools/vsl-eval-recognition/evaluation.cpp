@@ -4,11 +4,23 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace vsl::tools {
 
 int distance_band(double distance_m) {
   return std::clamp(static_cast<int>(std::floor(distance_m)), 0, kDistanceBands - 1);
+}
+
+int viewing_angle_band(double facing_cosine) {
+  const double angle_deg =
+      std::acos(std::clamp(facing_cosine, 0.0, 1.0)) * 180.0 / std::numbers::pi;
+  int band = 0;
+  while (band + 1 < kViewingAngleBands &&
+         angle_deg >= kViewingAngleBandStartsDeg[static_cast<std::size_t>(band + 1)]) {
+    ++band;
+  }
+  return band;
 }
 
 double quantile(std::vector<double> values, double q) {
@@ -39,7 +51,13 @@ std::vector<recognition::PerceptMatch> tally_frame(
     for (const recognition::GroundTruthObject& object : ground_truth) {
       if (!object.visible || object.type != c.type) continue;
       ++c.ground_truth;
-      if (recognition::whole_in_both_images(object)) ++c.ground_truth_whole;
+      const bool whole = recognition::whole_in_both_images(object);
+      if (whole) ++c.ground_truth_whole;
+      if (object.flat) {
+        const auto band = static_cast<std::size_t>(viewing_angle_band(object.facing_cosine));
+        ++c.flat_ground_truth[band];
+        if (whole) ++c.flat_ground_truth_whole[band];
+      }
     }
     for (std::size_t i = 0; i < percepts.size(); ++i) {
       if (percepts[i].type != c.type) continue;
@@ -52,7 +70,13 @@ std::vector<recognition::PerceptMatch> tally_frame(
       if (matches[i].ground_truth >= 0) {
         ++c.true_positives;
         const auto& object = ground_truth[static_cast<std::size_t>(matches[i].ground_truth)];
-        if (recognition::whole_in_both_images(object)) ++c.true_positives_whole;
+        const bool whole = recognition::whole_in_both_images(object);
+        if (whole) ++c.true_positives_whole;
+        if (object.flat) {
+          const auto band = static_cast<std::size_t>(viewing_angle_band(object.facing_cosine));
+          ++c.flat_true_positives[band];
+          if (whole) ++c.flat_true_positives_whole[band];
+        }
         c.errors_m[static_cast<std::size_t>(distance_band(object.distance_m))].push_back(
             matches[i].error_m);
         continue;

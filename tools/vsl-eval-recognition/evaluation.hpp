@@ -19,6 +19,15 @@ namespace vsl::tools {
 inline constexpr int kDistanceBands = 4;
 int distance_band(double distance_m);
 
+// Viewing-angle bands of the recall of flat objects (GroundTruthObject::flat, doors), by the angle
+// between the face's normal and the ray to the left camera: [0, 30), [30, 45), [45, 60), [60, 70),
+// [70, 80), [80, 90] degrees. Where the recall is lost: a door seen 80 degrees off its normal is a
+// sliver a twentieth of its width, merged with its neighbour along a run of cupboards.
+inline constexpr int kViewingAngleBands = 6;
+inline constexpr std::array<double, kViewingAngleBands> kViewingAngleBandStartsDeg{0,  30, 45,
+                                                                                   60, 70, 80};
+int viewing_angle_band(double facing_cosine);
+
 struct ClassTally {
   std::string type;
   int ground_truth = 0;  // visible objects of the type, summed over the frames
@@ -35,6 +44,9 @@ struct ClassTally {
   // "difficult" or "don't care" objects in the PASCAL VOC and KITTI benchmarks).
   int false_positives_on_other_objects = 0;
   std::array<std::vector<double>, kDistanceBands> errors_m;  // matched percepts' 3D errors
+  // Flat ground-truth objects and their true positives by viewing-angle band, all and whole.
+  std::array<int, kViewingAngleBands> flat_ground_truth{}, flat_true_positives{};
+  std::array<int, kViewingAngleBands> flat_ground_truth_whole{}, flat_true_positives_whole{};
 
   int false_positives() const {
     return percepts - true_positives - false_positives_on_other_objects;

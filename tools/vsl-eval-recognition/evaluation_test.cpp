@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace vsl::tools {
 namespace {
@@ -98,6 +99,52 @@ TEST(RecognitionEvaluation, RecallOverObjectsWhollyInsideBothImages) {
   EXPECT_EQ(c.true_positives_whole, 0);
   EXPECT_DOUBLE_EQ(c.recall(), 0.5);
   EXPECT_DOUBLE_EQ(c.recall_whole(), 0.0);
+}
+
+TEST(RecognitionEvaluation, ViewingAngleBands) {
+  EXPECT_EQ(viewing_angle_band(1.0), 0);
+  EXPECT_EQ(viewing_angle_band(std::cos(29.0 * std::numbers::pi / 180.0)), 0);
+  EXPECT_EQ(viewing_angle_band(std::cos(31.0 * std::numbers::pi / 180.0)), 1);
+  EXPECT_EQ(viewing_angle_band(0.5), 3);  // 60 degrees starts the fourth band
+  EXPECT_EQ(viewing_angle_band(std::cos(75.0 * std::numbers::pi / 180.0)), 4);
+  EXPECT_EQ(viewing_angle_band(0.0), 5);
+  EXPECT_EQ(viewing_angle_band(-0.1), 5);  // clamped
+}
+
+TEST(RecognitionEvaluation, RecallOfFlatObjectsByViewingAngle) {
+  std::vector<recognition::GroundTruthObject> truth(3);
+  for (auto& t : truth) {
+    t.type = "door";
+    t.visible = true;
+    t.flat = true;
+    t.distance_m = 2.0;
+    t.left_unoccluded_px = t.right_unoccluded_px = 1000;
+    t.left_in_image_px = t.right_in_image_px = 1000;
+  }
+  truth[0].ego_position_m = {2.0, 0.0, 1.0};
+  truth[0].facing_cosine = 0.95;  // 18 degrees: band 0
+  truth[1].ego_position_m = {2.0, 1.0, 1.0};
+  truth[1].facing_cosine = 0.1;  // 84 degrees: band 5
+  truth[2].ego_position_m = {2.0, 2.0, 1.0};
+  truth[2].facing_cosine = 0.09;  // band 5 too, and cut by the border
+  truth[2].left_in_image_px = 600;
+  recognition::FrameResult result;
+  recognition::FramePercept p;
+  p.type = "door";
+  p.confidence = 0.5f;
+  p.ego_position_m = {2.0, 2.0, 1.0};  // finds only the cut one
+  result.percepts = {p};
+  EvaluationTally tally;
+  tally.classes.emplace_back().type = "door";
+  tally_frame(truth, result, 1.0, 4.0, 0.1, tally);
+  const ClassTally& c = tally.classes[0];
+  EXPECT_EQ(c.flat_ground_truth[0], 1);
+  EXPECT_EQ(c.flat_ground_truth[5], 2);
+  EXPECT_EQ(c.flat_ground_truth_whole[5], 1);
+  EXPECT_EQ(c.flat_true_positives[0], 0);
+  EXPECT_EQ(c.flat_true_positives[5], 1);
+  EXPECT_EQ(c.flat_true_positives_whole[5], 0);
+  for (int b = 1; b < 5; ++b) EXPECT_EQ(c.flat_ground_truth[static_cast<std::size_t>(b)], 0);
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ within range: a correct percept of a real object the ground truth leaves out is 
 strict" counts it as false) and the recall (over the objects within 4 m of the left camera and at least half visible in both images; beside it
 the recall over those whose whole outline lies inside both images, not cut by the border), the 3D
 error of the matched percepts (within 10 cm of their object's reference point) by distance band,
-and the time per stereo pair.
+the recall of flat objects (doors) by viewing angle, and the time per stereo pair.
   --world FILE          world model, e.g. config/worlds/kitchen_galley.yaml
 options:
   --views N             robot poses (default 100)
@@ -158,6 +158,44 @@ Options parse(int argc, char** argv) {
 
 const char* const kBandNames[tools::kDistanceBands] = {"0-1 m", "1-2 m", "2-3 m", "3-4 m"};
 
+// Recall of the flat objects (doors) by viewing angle: true positives over ground truth, all and
+// whole in both images, per band; classes without flat objects are left out.
+void print_viewing_angle_table(const tools::EvaluationTally& tally) {
+  bool any = false;
+  for (const tools::ClassTally& c : tally.classes) {
+    for (const int n : c.flat_ground_truth) any = any || n > 0;
+  }
+  if (!any) return;
+  std::printf(
+      "recall of flat objects by viewing angle (between the face's normal and the ray to the left "
+      "camera), true+/objects, and of those whole in both images:\n");
+  std::printf("%-8s %-10s %14s %14s\n", "class", "band", "recall", "recall whole");
+  for (const tools::ClassTally& c : tally.classes) {
+    int total = 0;
+    for (const int n : c.flat_ground_truth) total += n;
+    if (total == 0) continue;
+    for (int b = 0; b < tools::kViewingAngleBands; ++b) {
+      const auto k = static_cast<std::size_t>(b);
+      char band[16];
+      std::snprintf(
+          band, sizeof band, "%.0f-%.0f deg", tools::kViewingAngleBandStartsDeg[k],
+          b + 1 < tools::kViewingAngleBands ? tools::kViewingAngleBandStartsDeg[k + 1] : 90.0);
+      const auto ratio = [](int hit, int all) {
+        char text[32];
+        if (all == 0) {
+          std::snprintf(text, sizeof text, "-");
+        } else {
+          std::snprintf(text, sizeof text, "%d/%d %5.1f%%", hit, all, 100.0 * hit / all);
+        }
+        return std::string(text);
+      };
+      std::printf("%-8s %-10s %14s %14s\n", c.type.c_str(), band,
+                  ratio(c.flat_true_positives[k], c.flat_ground_truth[k]).c_str(),
+                  ratio(c.flat_true_positives_whole[k], c.flat_ground_truth_whole[k]).c_str());
+    }
+  }
+}
+
 void print_table(const Options& options, const tools::EvaluationTally& tally) {
   std::printf(
       "world %s: %d stereo frames (seed %llu), objects within %.1f m, at least half "
@@ -198,6 +236,7 @@ void print_table(const Options& options, const tools::EvaluationTally& tally) {
                   100.0 * tools::quantile(errors, 0.5), 100.0 * tools::quantile(errors, 0.9));
     }
   }
+  print_viewing_angle_table(tally);
   std::printf(
       "time per stereo pair: median %.2f ms, p90 %.2f ms (median segmentation %.2f, "
       "classification %.2f, stereo %.2f ms)\n",
@@ -230,6 +269,21 @@ void write_json(std::ostream& out, const Options& options, const tools::Evaluati
     json.key("ground_truth_objects_whole_in_both_images").number(c.ground_truth_whole);
     json.key("true_positives_whole_in_both_images").number(c.true_positives_whole);
     json.key("recall_whole_in_both_images").number(c.recall_whole());
+    json.key("recall_by_viewing_angle").begin_array();
+    for (int b = 0; b < tools::kViewingAngleBands; ++b) {
+      const auto k = static_cast<std::size_t>(b);
+      json.begin_object();
+      json.key("min_angle_deg").number(tools::kViewingAngleBandStartsDeg[k]);
+      json.key("max_angle_deg")
+          .number(b + 1 < tools::kViewingAngleBands ? tools::kViewingAngleBandStartsDeg[k + 1]
+                                                    : 90.0);
+      json.key("ground_truth_objects").number(c.flat_ground_truth[k]);
+      json.key("true_positives").number(c.flat_true_positives[k]);
+      json.key("ground_truth_objects_whole_in_both_images").number(c.flat_ground_truth_whole[k]);
+      json.key("true_positives_whole_in_both_images").number(c.flat_true_positives_whole[k]);
+      json.end_object();
+    }
+    json.end_array();
     json.key("error_by_distance_band").begin_array();
     for (int b = 0; b < tools::kDistanceBands; ++b) {
       const auto& errors = c.errors_m[static_cast<std::size_t>(b)];
@@ -324,13 +378,14 @@ int main(int argc, char** argv) {
         }
         std::ofstream text(path.substr(0, path.size() - 4) + ".txt");
         text << "# object type distance_m left_visible/in_image/unoccluded_px "
-                "right_visible/in_image/unoccluded_px ground_truth\n";
+                "right_visible/in_image/unoccluded_px ground_truth facing_cosine\n";
         for (const recognition::GroundTruthObject& object : truth) {
           text << world.objects[object.object_index].id << " " << object.type << " "
                << object.distance_m << " " << object.left_visible_px << "/"
                << object.left_in_image_px << "/" << object.left_unoccluded_px << " "
                << object.right_visible_px << "/" << object.right_in_image_px << "/"
-               << object.right_unoccluded_px << " " << (object.visible ? "yes" : "no") << "\n";
+               << object.right_unoccluded_px << " " << (object.visible ? "yes" : "no") << " "
+               << (object.flat ? std::to_string(object.facing_cosine) : std::string("-")) << "\n";
         }
         // Where each ground-truth object was lost: per image, the blob holding most of its
         // pixels (purity, coverage: labelling.hpp), whether a recognizer of its type detected that
@@ -471,10 +526,10 @@ int main(int argc, char** argv) {
               }
             }
           }
-          text << "\n";
-          funnel.add(object.type, recognition::whole_in_both_images(object),
-                     tools::funnel_stage(funnel_sides[0], funnel_sides[1], object_matched[t] != 0),
-                     stereo);
+          const tools::FunnelStage stage =
+              tools::funnel_stage(funnel_sides[0], funnel_sides[1], object_matched[t] != 0);
+          text << " | stage " << tools::funnel_stage_name(stage) << "\n";
+          funnel.add(object.type, recognition::whole_in_both_images(object), stage, stereo);
         }
         // How each percept was made: a pair, one image alone (single_view), or a pair cut by
         // the top or bottom border (cut_top, cut_bottom).

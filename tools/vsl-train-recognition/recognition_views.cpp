@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "vsl/config/node.hpp"
 #include "vsl/scenario/collision_scene.hpp"
@@ -40,6 +41,21 @@ head::CameraIntrinsics widened(head::CameraIntrinsics intrinsics, int margin_px)
 }
 
 }  // namespace
+
+std::optional<double> facing_cosine(const world::ObjectModel& object,
+                                    const Eigen::Vector3d& world_camera_m) {
+  if (!object.size_m) return std::nullopt;
+  const Eigen::Vector3d& size_m = *object.size_m;
+  Eigen::Index thinnest = 0;
+  size_m.minCoeff(&thinnest);
+  for (Eigen::Index axis = 0; axis < 3; ++axis) {
+    if (axis != thinnest && size_m[thinnest] >= 0.1 * size_m[axis]) return std::nullopt;
+  }
+  const Eigen::Vector3d world_normal = object.world_orientation * Eigen::Vector3d::Unit(thinnest);
+  const Eigen::Vector3d ray = world_camera_m - object.world_position_m;
+  if (!(ray.norm() > 0.0)) return 1.0;
+  return std::abs(world_normal.dot(ray.normalized()));
+}
 
 render::RenderOptions simulated_camera_options() {
   render::RenderOptions options;  // noise and exposure variation as config/sim_head.yaml
@@ -188,6 +204,10 @@ std::vector<recognition::GroundTruthObject> GroundTruthRenderer::objects(
     truth.right_unoccluded_px = free_right_px[k];
     truth.left_in_image_px = in_left_px[k];
     truth.right_in_image_px = in_right_px[k];
+    if (const std::optional<double> cosine = facing_cosine(object, world_left_centre_m)) {
+      truth.flat = true;
+      truth.facing_cosine = *cosine;
+    }
     out.push_back(std::move(truth));
   }
   return out;

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,13 @@ StereoRender render_view(const render::Renderer& renderer, const head::HeadKinem
 // alone (a world of only those objects) through cameras with the same centre and focal length but
 // `margin_px` more image on every side and no distortion, so that an object cut by the image
 // border is partly hidden, as an occluded one is. Objects not in view at all are left out.
+// recognition::GroundTruthObject::facing_cosine of `object` seen from `world_camera_m`: |n . r|,
+// n the object's thinnest axis and r the unit ray from its reference point to the camera centre
+// (both in the world frame); nullopt when the object is not flat (no size, or its thinnest extent
+// at least a tenth of another).
+std::optional<double> facing_cosine(const world::ObjectModel& object,
+                                    const Eigen::Vector3d& world_camera_m);
+
 class GroundTruthRenderer {
  public:
   GroundTruthRenderer(const world::WorldModel& world, const head::HeadKinematics& head,

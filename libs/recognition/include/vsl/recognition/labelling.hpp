@@ -90,6 +90,12 @@ struct GroundTruthObject {
   // margin, beyond the image border).
   int left_in_image_px = 0;
   int right_in_image_px = 0;
+  // A flat object (a door: one extent under a tenth of the others) has a face; `facing_cosine`
+  // is the cosine of the angle between the face's normal and the ray from the reference point to
+  // the left camera centre: 1 seen head-on, 0 edge-on (its apparent width shrinks by this
+  // factor). 1 for other objects.
+  bool flat = false;
+  double facing_cosine = 1.0;
   bool visible = false;  // set by mark_ground_truth_visible()
 };
 
