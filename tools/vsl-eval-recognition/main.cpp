@@ -521,7 +521,8 @@ int main(int argc, char** argv) {
                 text << " " << trace.value << " limit " << trace.limit;
                 stereo = recognition::stereo_gate_name(trace.refused_by);
               } else {
-                text << (trace.assigned ? " assigned" : " not_assigned");
+                text << (trace.assigned ? " assigned" : " not_assigned")
+                     << (trace.occluded_corner ? " occluded_corner" : "");
                 stereo = trace.assigned ? "assigned" : "not_assigned";
               }
             }
@@ -531,8 +532,9 @@ int main(int argc, char** argv) {
           text << " | stage " << tools::funnel_stage_name(stage) << "\n";
           funnel.add(object.type, recognition::whole_in_both_images(object), stage, stereo);
         }
-        // How each percept was made: a pair, one image alone (single_view), or a pair cut by
-        // the top or bottom border (cut_top, cut_bottom).
+        // How each percept was made: a pair, one image alone (single_view), a pair cut by the
+        // top or bottom border (cut_top, cut_bottom), or a pair with one corner hidden
+        // (occluded_corner).
         text << "# percept type left_px right_px distance_m made_by matched_object error_m\n";
         for (std::size_t i = 0; i < result.percepts.size(); ++i) {
           const recognition::FramePercept& p = result.percepts[i];
@@ -544,6 +546,12 @@ int main(int argc, char** argv) {
                 result.left_detections[static_cast<std::size_t>(p.left_detection)].border_cut;
             if (cut == recognition::BorderCut::kTop) made_by = "cut_top";
             if (cut == recognition::BorderCut::kBottom) made_by = "cut_bottom";
+            for (const recognition::StereoPairTrace& trace : pair_trace) {
+              if (trace.occluded_corner && trace.left_detection == p.left_detection &&
+                  trace.right_detection == p.right_detection) {
+                made_by = "occluded_corner";
+              }
+            }
           }
           text << "percept " << p.type << " " << p.left_px.x() << "," << p.left_px.y() << " "
                << p.right_px.x() << "," << p.right_px.y() << " "

@@ -243,6 +243,7 @@ std::vector<StereoPercept> match_and_triangulate(
       if (!occluded) return false;
       trace.refused_by = StereoGate::kNone;
       trace.value = trace.limit = 0.0;
+      trace.occluded_corner = true;
       epipolar_px = occluded->residual_px;
       return true;
     };

@@ -244,6 +244,13 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   EXPECT_LT((placed[0].left_camera_position_m - centre).norm(), 1e-3);
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
+  EXPECT_TRUE(trace[0].occluded_corner);  // the trace says how it was placed
+  {
+    std::vector<StereoPairTrace> whole_trace;  // the whole door: an ordinary pair
+    ASSERT_EQ(match({p.left}, {p.right}, up, &whole_trace).size(), 1u);
+    ASSERT_EQ(whole_trace.size(), 1u);
+    EXPECT_FALSE(whole_trace[0].occluded_corner);
+  }
   const auto refused_by = [&](const Pair& pair) {
     const auto out = match({pair.left}, {pair.right}, up, &trace);
     EXPECT_TRUE(out.empty());
@@ -259,6 +266,7 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   const auto placed_elsewhere = match({elsewhere.left}, {elsewhere.right}, up, &trace);
   ASSERT_EQ(placed_elsewhere.size(), 1u);
   EXPECT_LT((placed_elsewhere[0].left_camera_position_m - centre).norm(), 1e-3);
+  EXPECT_TRUE(trace.at(0).occluded_corner);
   options_.border_cut[0].occluded_corner = false;
   EXPECT_EQ(refused_by(elsewhere), StereoGate::kEpipolar);
   options_.border_cut[0].occluded_corner = true;

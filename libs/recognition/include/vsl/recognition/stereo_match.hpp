@@ -259,6 +259,9 @@ struct StereoPairTrace {
   double limit = 0.0;
   double cost = 0.0;      // a candidate's normalized cost
   bool assigned = false;  // a candidate the assignment kept (a percept)
+  // A candidate placed by the occluded-corner construction after the position or side gate
+  // refused it (BorderCutDoor::occluded_corner, docs/recognition.md Doors item 14).
+  bool occluded_corner = false;
 };
 
 // Matches detections of the same type one to one (each left detection to at most one right
