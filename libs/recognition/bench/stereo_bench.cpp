@@ -155,13 +155,7 @@ void BM_BorderCutPair(benchmark::State& state) {
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_edge_slope_rad = 0.3;
-  options.border_cut = {{.type = "door",
-                         .typical_heights_m = {0.716, 1.246},
-                         .height_sigma_m = 0.12,
-                         .min_width_m = 0.3,
-                         .max_width_m = 1.0,
-                         .max_side_tilt_rad = 0.09,
-                         .min_peak_margin = 0.1}};
+  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1)};
   const std::vector<Detection> left_detections{test::top_cut_door_outline(160.0)};
   const std::vector<Detection> right_detections{test::top_cut_door_outline(135.0)};
   double depth_m = 0.0;
@@ -180,14 +174,7 @@ void BM_OneSideDoor(benchmark::State& state) {
   options.min_single_view_correlation = 0.7;
   options.single_view_min_peak_margin = 0.2;
   options.max_edge_slope_rad = 0.3;
-  options.border_cut = {{.type = "door",
-                         .typical_heights_m = {0.716, 1.246},
-                         .height_sigma_m = 0.12,
-                         .min_width_m = 0.3,
-                         .max_width_m = 1.0,
-                         .max_side_tilt_rad = 0.09,
-                         .min_peak_margin = 0.1,
-                         .from_one_side = true}};
+  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1, true)};
   const std::vector<Detection> left_detections{test::top_cut_door_outline(160.0)};
   double depth_m = 0.0;
   for (auto _ : state) {

@@ -25,13 +25,7 @@ class BorderCutTest : public ::testing::Test {
   BorderCutTest() {
     options_.bar_types = {"handle"};
     options_.max_edge_slope_rad = 0.3;
-    options_.border_cut = {{.type = "door",
-                            .typical_heights_m = {kHeightM},
-                            .height_sigma_m = 0.12,
-                            .min_width_m = 0.3,
-                            .max_width_m = 1.0,
-                            .max_side_tilt_rad = 0.09,
-                            .min_peak_margin = 0.0}};
+    options_.border_cut = {test::cut_door_options({kHeightM}, 0.0)};
   }
 
   // A door 0.5 m wide and kHeightM tall, turned `turn_rad` about the vertical, its centre at

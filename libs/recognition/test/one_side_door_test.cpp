@@ -11,6 +11,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "support/cut_door.hpp"
 #include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -31,14 +32,7 @@ class OneSideDoorTest : public ::testing::Test {
     options_.min_side_correlation = 0.7;
     options_.min_single_view_correlation = 0.7;
     options_.single_view_min_peak_margin = 0.2;
-    options_.border_cut = {{.type = "door",
-                            .typical_heights_m = {kHeightM},
-                            .height_sigma_m = 0.12,
-                            .min_width_m = 0.3,
-                            .max_width_m = 1.0,
-                            .max_side_tilt_rad = 0.09,
-                            .min_peak_margin = 0.1,
-                            .from_one_side = true}};
+    options_.border_cut = {test::cut_door_options({kHeightM}, 0.1, true)};
   }
 
   // A door 0.5 m wide and kHeightM tall turned `turn_rad` about the vertical, its centre at

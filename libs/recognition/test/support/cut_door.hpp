@@ -2,10 +2,15 @@
 // (Detection::border_cut): 140 px wide, its left side at column `u`, 200 px of it in view down
 // to row 199, for the border-cut tests and BM_BorderCutPair. Over a bright wall (190) with the
 // door dark (70), a pair at u = 160 (left) and 135 (right) is a door 2 m ahead on the simulated
-// head (25 px of disparity).
+// head (25 px of disparity). `cut_door_options` gives the shipped config's door options for
+// cut doors (config/recognition.yaml), set by name.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "vsl/recognition/detection.hpp"
+#include "vsl/recognition/stereo_match.hpp"
 
 namespace vsl::recognition::test {
 
@@ -19,6 +24,19 @@ inline Detection top_cut_door_outline(double u) {
   d.area_px = 28000.0;
   d.confidence = 0.9f;
   return d;
+}
+
+inline StereoMatchOptions::BorderCutDoor cut_door_options(std::vector<double> typical_heights_m,
+                                                          double min_peak_margin,
+                                                          bool from_one_side = false) {
+  return {.type = "door",
+          .typical_heights_m = std::move(typical_heights_m),
+          .height_sigma_m = 0.12,
+          .min_width_m = 0.3,
+          .max_width_m = 1.0,
+          .max_side_tilt_rad = 0.09,
+          .min_peak_margin = min_peak_margin,
+          .from_one_side = from_one_side};
 }
 
 }  // namespace vsl::recognition::test
