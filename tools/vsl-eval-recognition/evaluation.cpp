@@ -23,6 +23,20 @@ int viewing_angle_band(double facing_cosine) {
   return band;
 }
 
+namespace {
+
+// Counts a flat object in its viewing-angle band, and among the whole ones when it is whole.
+void count_by_viewing_angle(const recognition::GroundTruthObject& object, bool whole,
+                            std::array<int, kViewingAngleBands>& all,
+                            std::array<int, kViewingAngleBands>& whole_only) {
+  if (!object.flat) return;
+  const auto band = static_cast<std::size_t>(viewing_angle_band(object.facing_cosine));
+  ++all[band];
+  if (whole) ++whole_only[band];
+}
+
+}  // namespace
+
 double quantile(std::vector<double> values, double q) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(values.begin(), values.end());
@@ -53,11 +67,7 @@ std::vector<recognition::PerceptMatch> tally_frame(
       ++c.ground_truth;
       const bool whole = recognition::whole_in_both_images(object);
       if (whole) ++c.ground_truth_whole;
-      if (object.flat) {
-        const auto band = static_cast<std::size_t>(viewing_angle_band(object.facing_cosine));
-        ++c.flat_ground_truth[band];
-        if (whole) ++c.flat_ground_truth_whole[band];
-      }
+      count_by_viewing_angle(object, whole, c.flat_ground_truth, c.flat_ground_truth_whole);
     }
     for (std::size_t i = 0; i < percepts.size(); ++i) {
       if (percepts[i].type != c.type) continue;
@@ -72,11 +82,7 @@ std::vector<recognition::PerceptMatch> tally_frame(
         const auto& object = ground_truth[static_cast<std::size_t>(matches[i].ground_truth)];
         const bool whole = recognition::whole_in_both_images(object);
         if (whole) ++c.true_positives_whole;
-        if (object.flat) {
-          const auto band = static_cast<std::size_t>(viewing_angle_band(object.facing_cosine));
-          ++c.flat_true_positives[band];
-          if (whole) ++c.flat_true_positives_whole[band];
-        }
+        count_by_viewing_angle(object, whole, c.flat_true_positives, c.flat_true_positives_whole);
         c.errors_m[static_cast<std::size_t>(distance_band(object.distance_m))].push_back(
             matches[i].error_m);
         continue;
