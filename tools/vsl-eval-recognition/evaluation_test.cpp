@@ -10,6 +10,21 @@
 namespace vsl::tools {
 namespace {
 
+// The door tally of one frame whose only percept is a door at `ego_position_m`.
+ClassTally door_tally_of_one_percept(const std::vector<recognition::GroundTruthObject>& truth,
+                                     const Eigen::Vector3d& ego_position_m) {
+  recognition::FrameResult result;
+  recognition::FramePercept p;
+  p.type = "door";
+  p.confidence = 0.5f;
+  p.ego_position_m = ego_position_m;
+  result.percepts = {p};
+  EvaluationTally tally;
+  tally.classes.emplace_back().type = "door";
+  tally_frame(truth, result, 1.0, 4.0, 0.1, tally);
+  return tally.classes[0];
+}
+
 TEST(RecognitionEvaluation, QuantilesInterpolateBetweenOrderStatistics) {
   EXPECT_DOUBLE_EQ(quantile({3.0, 1.0, 2.0}, 0.5), 2.0);
   EXPECT_DOUBLE_EQ(quantile({1.0, 2.0, 3.0, 4.0}, 0.5), 2.5);
@@ -83,16 +98,8 @@ TEST(RecognitionEvaluation, RecallOverObjectsWhollyInsideBothImages) {
   truth[0].ego_position_m = {2.0, 0.0, 1.0};
   truth[1].ego_position_m = {2.0, 1.0, 1.0};
   truth[1].right_in_image_px = 700;  // the right image's border cuts it
-  recognition::FrameResult result;
-  recognition::FramePercept p;
-  p.type = "door";
-  p.confidence = 0.5f;
-  p.ego_position_m = {2.0, 1.0, 1.0};  // finds only the cut door
-  result.percepts = {p};
-  EvaluationTally tally;
-  tally.classes.emplace_back().type = "door";
-  tally_frame(truth, result, 1.0, 4.0, 0.1, tally);
-  const ClassTally& c = tally.classes[0];
+  // One percept, on the cut door only.
+  const ClassTally c = door_tally_of_one_percept(truth, {2.0, 1.0, 1.0});
   EXPECT_EQ(c.ground_truth, 2);
   EXPECT_EQ(c.ground_truth_whole, 1);
   EXPECT_EQ(c.true_positives, 1);
@@ -128,16 +135,8 @@ TEST(RecognitionEvaluation, RecallOfFlatObjectsByViewingAngle) {
   truth[2].ego_position_m = {2.0, 2.0, 1.0};
   truth[2].facing_cosine = 0.09;  // band 5 too, and cut by the border
   truth[2].left_in_image_px = 600;
-  recognition::FrameResult result;
-  recognition::FramePercept p;
-  p.type = "door";
-  p.confidence = 0.5f;
-  p.ego_position_m = {2.0, 2.0, 1.0};  // finds only the cut one
-  result.percepts = {p};
-  EvaluationTally tally;
-  tally.classes.emplace_back().type = "door";
-  tally_frame(truth, result, 1.0, 4.0, 0.1, tally);
-  const ClassTally& c = tally.classes[0];
+  // One percept, on the cut one only.
+  const ClassTally c = door_tally_of_one_percept(truth, {2.0, 2.0, 1.0});
   EXPECT_EQ(c.flat_ground_truth[0], 1);
   EXPECT_EQ(c.flat_ground_truth[5], 2);
   EXPECT_EQ(c.flat_ground_truth_whole[5], 1);
