@@ -11,6 +11,7 @@
 #include <numeric>
 #include <optional>
 
+#include "bars_on_outline.hpp"
 #include "border_cut.hpp"
 #include "convex_polygon.hpp"
 #include "door_pair.hpp"
@@ -43,29 +44,6 @@ std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {
       0.5 * d.major_extent_px *
       Eigen::Vector2d(std::cos(d.major_axis_angle_rad), std::sin(d.major_axis_angle_rad));
   return {d.reference_px - half, d.reference_px + half};
-}
-
-bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
-  return std::find(options.bar_types.begin(), options.bar_types.end(), type) !=
-         options.bar_types.end();
-}
-
-// A bar counts as inside an outline when its reference point is at least this far inside every
-// side, pixels: the handle of the neighbour of a double door sits a few pixels beyond the shared
-// edge, and an outline's side is off by a pixel or two.
-constexpr double kBarInsideMarginPx = 2.0;
-
-// How many detections of a bar type in `detections` (one image's) have their reference point
-// inside the convex outline of `outline` (raw pixels), by kBarInsideMarginPx.
-int bars_inside(const std::vector<Detection>& detections, const Detection& outline,
-                const StereoMatchOptions& options) {
-  const std::vector<Eigen::Vector2d>& c = outline.corners_px;
-  int count = 0;
-  for (const Detection& d : detections) {
-    if (!is_bar_type(options, d.type)) continue;
-    count += detail::depth_inside_convex(c, c.size(), d.reference_px) >= kBarInsideMarginPx;
-  }
-  return count;
 }
 
 // Orientation difference of two undirected axes (angles in [0, pi)), in [0, pi / 2].
@@ -154,7 +132,7 @@ std::vector<StereoPercept> match_and_triangulate(
     std::vector<std::vector<detail::IdealPixel>> out(detections.size());
     for (std::size_t i = 0; i < detections.size(); ++i) {
       const Detection& d = detections[i];
-      if (d.corners_px.empty() && d.major_extent_px > 0.0 && is_bar_type(options, d.type)) {
+      if (d.corners_px.empty() && d.major_extent_px > 0.0 && detail::is_bar_type(options, d.type)) {
         out[i] = detail::undistort(bar_ends_raw(d), intrinsics);
       }
     }
@@ -170,6 +148,14 @@ std::vector<StereoPercept> match_and_triangulate(
     return out;
   };
 
+  // The worse of the two outlines' verdicts on the handles they hold (bars_on_outline.hpp).
+  const auto judge_bars = [&](const Detection& dl, const Detection& dr, int max_bars_inside) {
+    const detail::BarVerdict on_left =
+        detail::judge_bars_on_outline(left, dl, max_bars_inside, options);
+    return on_left.gate != StereoGate::kNone
+               ? on_left
+               : detail::judge_bars_on_outline(right, dr, max_bars_inside, options);
+  };
   const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
   // Judges one pair against every gate, in order; a pair that passes all of them is a candidate
   // with its triangulation. Triangulating here rather than after the assignment means that a
@@ -191,12 +177,12 @@ std::vector<StereoPercept> match_and_triangulate(
     // rectangle outlines, their vertical sides nest along the epipolar direction
     // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height.
     const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
-    // A stack of drawer fronts merged into one door-shaped blob carries a handle per front.
-    if (rectangles && options.pair_max_bars_inside > 0) {
-      const int bars = std::max(bars_inside(left, dl, options), bars_inside(right, dr, options));
-      if (bars > options.pair_max_bars_inside) {
-        return refuse(StereoGate::kBarsInside, bars, options.pair_max_bars_inside);
-      }
+    // A stack of drawer fronts merged into one door-shaped blob carries a handle per front, one
+    // above another; judged on each image's outline, also when the other image's blob has none.
+    if (const detail::BarVerdict bars = judge_bars(
+            dl, dr, options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
+        bars.gate != StereoGate::kNone) {
+      return refuse(bars.gate, bars.value, bars.limit);
     }
     // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in
     // 3D, and the position gate as the containment of the shorter segment in the longer.
@@ -232,8 +218,7 @@ std::vector<StereoPercept> match_and_triangulate(
     const auto place_occluded_corner = [&]() {
       const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
       if (!rectangles || !door || !door->occluded_corner || !(up_in_left_camera.norm() > 0.0) ||
-          std::max(bars_inside(left, dl, options), bars_inside(right, dr, options)) >
-              options.single_view_max_bars_inside) {
+          judge_bars(dl, dr, options.single_view_max_bars_inside).gate != StereoGate::kNone) {
         return false;
       }
       occluded = detail::place_occluded_corner_door(
@@ -376,13 +361,14 @@ std::vector<StereoPercept> match_and_triangulate(
       std::optional<detail::Candidate> c;
       if (!cut) {
         c = judge(l, r, trace);
-      } else if (const int bars = std::max(bars_inside(left, left[l], options),
-                                           bars_inside(right, right[r], options));
-                 bars > options.single_view_max_bars_inside) {
-        // Several handles inside: drawer fronts or doors merged into one blob.
-        trace.refused_by = StereoGate::kBarsInside;
-        trace.value = bars;
-        trace.limit = options.single_view_max_bars_inside;
+      } else if (const detail::BarVerdict bars =
+                     judge_bars(left[l], right[r], options.single_view_max_bars_inside);
+                 bars.gate != StereoGate::kNone) {
+        // Several handles inside, or one above another: drawer fronts or doors merged into one
+        // blob.
+        trace.refused_by = bars.gate;
+        trace.value = bars.value;
+        trace.limit = bars.limit;
       } else {
         c = detail::judge_border_cut_pair(
             l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
@@ -471,7 +457,9 @@ std::vector<StereoPercept> match_and_triangulate(
           if (pass == 0 ? cut : !from_one_side || placed[static_cast<std::size_t>(image)][d]) {
             continue;
           }
-          if (bars_inside(detections, detection, options) > options.single_view_max_bars_inside) {
+          if (detail::judge_bars_on_outline(detections, detection,
+                                            options.single_view_max_bars_inside, options)
+                  .gate != StereoGate::kNone) {
             continue;
           }
           const detail::SideCorrelator& sweep = image == 0 ? *correlator : *reverse_correlator;
@@ -551,6 +539,8 @@ const char* stereo_gate_name(StereoGate gate) {
       return "weak_pair";
     case StereoGate::kBarsInside:
       return "bars_inside";
+    case StereoGate::kStackedBars:
+      return "stacked_bars";
   }
   return "?";
 }

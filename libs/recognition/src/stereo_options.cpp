@@ -36,6 +36,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "single_view_min_separation_m",
                        "single_view_max_bars_inside",
                        "pair_max_bars_inside",
+                       "max_bar_height_spread",
                        "border_cut"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
@@ -85,6 +86,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     const std::int64_t bars = v->as_int();
     if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
     out.pair_max_bars_inside = static_cast<int>(bars);
+  }
+  if (const auto v = section.find("max_bar_height_spread")) {
+    out.max_bar_height_spread = v->as_double_in(0.0, 1.0);
   }
   if (const auto v = section.find("max_side_tilt_rad")) {
     out.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2: sin() still grows

@@ -326,6 +326,78 @@ TEST_F(StereoMatchTest, ADoorPairWithAHandlePerDrawerFrontInsideIsRefused) {
   EXPECT_TRUE(door_placed());
 }
 
+TEST_F(StereoMatchTest, ADoorOutlineWithHandlesOneAboveAnotherIsRefused) {
+  // The door of door_pair: 0.5 m wide (along `across`), 0.7 m tall, turned 40 deg.
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));
+  const Eigen::Vector3d across = turned.normalized(), down(0.0, 1.0, 0.0);
+  const Pair door = door_pair(centre, calibration_, left_T_right_);
+  options_.bar_types = {"handle"};
+  options_.max_bar_height_spread = 0.3;
+  std::vector<Detection> left{door.left}, right{door.right};
+  const auto add_handle = [&](const Eigen::Vector3d& point) {
+    const Pair h = pair_of(point);
+    left.push_back(h.left);
+    right.push_back(h.right);
+  };
+  std::vector<StereoPairTrace> trace;
+  const auto door_trace = [&]() -> const StereoPairTrace& {
+    match(left, right, Eigen::Vector3d::Zero(), &trace);
+    for (const StereoPairTrace& t : trace) {
+      if (t.left_detection == 0 && t.right_detection == 0) return t;
+    }
+    ADD_FAILURE() << "no trace of the door pair";
+    return trace.at(0);
+  };
+  // The door's own handle, and a double door's neighbour's just beyond the shared edge at the
+  // same height: a door.
+  add_handle(centre + 0.2 * across);
+  add_handle(centre + 0.29 * across);
+  EXPECT_EQ(door_trace().refused_by, StereoGate::kNone);
+  // A handle 0.3 m lower (0.43 of the door's height): two fronts one above another.
+  add_handle(centre + 0.2 * across + 0.3 * down);
+  EXPECT_EQ(door_trace().refused_by, StereoGate::kStackedBars);
+  EXPECT_NEAR(door_trace().value, 0.3 / 0.7, 0.05);
+  EXPECT_EQ(door_trace().limit, 0.3);
+  EXPECT_STREQ(stereo_gate_name(StereoGate::kStackedBars), "stacked_bars");
+  options_.max_bar_height_spread = 0.0;  // off
+  EXPECT_EQ(door_trace().refused_by, StereoGate::kNone);
+  // Handles on the outline's edge (a drawer's, seen at a grazing angle) count; the count of
+  // bars inside misses them.
+  options_.max_bar_height_spread = 0.3;
+  left.resize(1);
+  right.resize(1);
+  add_handle(centre - 0.25 * across - 0.25 * down);
+  add_handle(centre - 0.25 * across + 0.25 * down);
+  options_.pair_max_bars_inside = 1;
+  EXPECT_EQ(door_trace().refused_by, StereoGate::kStackedBars);
+}
+
+TEST_F(StereoMatchTest, HandlesInsideAreCountedWhenOnlyOneImageHasAnOutline) {
+  // The right image's blob of the door has no outline (its corners not found): the handles
+  // inside the left outline still refuse the pair.
+  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  Pair door = door_pair(centre, calibration_, left_T_right_);
+  door.right.corners_px.clear();
+  options_.bar_types = {"handle"};
+  options_.pair_max_bars_inside = 2;
+  std::vector<Detection> left{door.left}, right{door.right};
+  for (const double dy_m : {-0.2, 0.0, 0.2}) {
+    const Pair h = pair_of(centre + Eigen::Vector3d(0.0, dy_m, 0.0));
+    left.push_back(h.left);
+    right.push_back(h.right);
+  }
+  std::vector<StereoPairTrace> trace;
+  match(left, right, Eigen::Vector3d::Zero(), &trace);
+  bool refused = false;
+  for (const StereoPairTrace& t : trace) {
+    if (t.left_detection == 0 && t.right_detection == 0) {
+      refused = t.refused_by == StereoGate::kBarsInside && t.value == 3.0;
+    }
+  }
+  EXPECT_TRUE(refused);
+}
+
 TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
   // The camera pitched 0.4 rad up, the door above the eyes: its top and bottom edges between
   // the sides' 3D ends are level for exact outlines.
@@ -597,6 +669,7 @@ stereo:
   single_view_min_separation_m: 0.25
   single_view_max_bars_inside: 2
   pair_max_bars_inside: 3
+  max_bar_height_spread: 0.35
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
@@ -631,6 +704,7 @@ stereo:
   EXPECT_EQ(o.single_view_min_separation_m, 0.25);
   EXPECT_EQ(o.single_view_max_bars_inside, 2);
   EXPECT_EQ(o.pair_max_bars_inside, 3);
+  EXPECT_EQ(o.max_bar_height_spread, 0.35);
   ASSERT_EQ(o.border_cut.size(), 1u);
   EXPECT_EQ(o.border_cut[0].type, "door");
   EXPECT_EQ(o.border_cut[0].typical_heights_m, (std::vector<double>{0.7, 1.2}));
@@ -690,6 +764,10 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       << stereo_error("  single_view_max_bars_inside: 1.5\n");
   EXPECT_NE(stereo_error("  single_view_max_bars_inside: -1\n").find("[0, 100]"),
             std::string::npos);
+  EXPECT_NE(
+      stereo_error("  max_bar_height_spread: 1.5\n").find("s.yaml:2: stereo.max_bar_height_spread"),
+      std::string::npos)
+      << stereo_error("  max_bar_height_spread: 1.5\n");
   EXPECT_NE(stereo_error("  min_single_view_correlation: 0.7\n").find("needs min_side_correlation"),
             std::string::npos);
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "

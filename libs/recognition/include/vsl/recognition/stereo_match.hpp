@@ -120,6 +120,16 @@ struct StereoMatchOptions {
   // centimetres apart), but three or more are a stack of drawer fronts, or several doors, merged
   // into one door-shaped blob in both images. Needs bar_types; 0 turns it off.
   int pair_max_bars_inside = 0;
+  // Any door outline (of a pair, either image's; of a single view; of a border-cut or
+  // occluded-corner pair) is refused when the detections of a bar type (handles) on it lie at
+  // heights that differ by more than this fraction of the outline's height (along its vertical
+  // sides; a handle counts when its reference point lies inside the outline or up to 3 px
+  // outside). A door carries one handle, and a double door's neighbour's stands at the same
+  // height; handles one above another are a stack of drawer fronts, or a door and the drawer
+  // above it, merged into one door-shaped blob. Seen at a grazing angle a drawer's handle stands
+  // on the outline's near edge, so the count of bars inside misses it. Needs bar_types; 0 turns
+  // it off.
+  double max_bar_height_spread = 0.0;
   // Optional, per class: doors cut by the top or bottom image border along a whole side
   // (Detection::border_cut), placed from the edge they show whole and the class's typical
   // heights. Two detections cut along the same border make a pair when the ends of that edge lie
@@ -246,7 +256,9 @@ enum class StereoGate {
   kWeakPair,  // both detections weak (Detection::needs_partner)
   // more bar detections inside an outline than allowed (border-cut doors:
   // single_view_max_bars_inside; whole door pairs: pair_max_bars_inside)
-  kBarsInside
+  kBarsInside,
+  // bar detections on an outline one above another (max_bar_height_spread)
+  kStackedBars
 };
 const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
 

@@ -1,0 +1,87 @@
+#include "bars_on_outline.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <limits>
+
+#include "convex_polygon.hpp"
+
+namespace vsl::recognition::detail {
+namespace {
+
+// A bar counts as inside an outline when its reference point is at least this far inside every
+// side, pixels: the handle of the neighbour of a double door sits a few pixels beyond the shared
+// edge, and an outline's side is off by a pixel or two.
+constexpr double kBarInsideMarginPx = 2.0;
+
+// A bar counts as on an outline for the height spread when its reference point lies at most this
+// far outside it, pixels: seen at a grazing angle, a drawer's handle stands off the front on the
+// near side, on the outline's edge or just beyond it. The neighbour's handle of a double door
+// counts too, but it stands at the same height.
+constexpr double kBarNearOutlinePx = 3.0;
+
+}  // namespace
+
+bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
+  return std::find(options.bar_types.begin(), options.bar_types.end(), type) !=
+         options.bar_types.end();
+}
+
+int bars_inside(const std::vector<Detection>& detections, const Detection& outline,
+                const StereoMatchOptions& options) {
+  const std::vector<Eigen::Vector2d>& c = outline.corners_px;
+  if (c.empty()) return 0;
+  int count = 0;
+  for (const Detection& d : detections) {
+    if (!is_bar_type(options, d.type)) continue;
+    count += depth_inside_convex(c, c.size(), d.reference_px) >= kBarInsideMarginPx;
+  }
+  return count;
+}
+
+double bar_height_spread(const std::vector<Detection>& detections, const Detection& outline,
+                         const StereoMatchOptions& options) {
+  const std::vector<Eigen::Vector2d>& c = outline.corners_px;
+  if (c.size() != 4) return 0.0;
+  // Corners clockwise from the top left (quadrilateral.hpp): the outline's vertical axis runs
+  // from the middle of the top edge (0, 1) to the middle of the bottom edge (2, 3).
+  const Eigen::Vector2d top = 0.5 * (c[0] + c[1]);
+  const Eigen::Vector2d axis = 0.5 * (c[2] + c[3]) - top;
+  const double height_px = axis.norm();
+  if (!(height_px > 0.0)) return 0.0;
+  const Eigen::Vector2d down = axis / height_px;
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -lowest;
+  int count = 0;
+  for (const Detection& d : detections) {
+    if (!is_bar_type(options, d.type)) continue;
+    if (depth_inside_convex(c, c.size(), d.reference_px) < -kBarNearOutlinePx) continue;
+    const double along_px = (d.reference_px - top).dot(down);
+    lowest = std::min(lowest, along_px);
+    highest = std::max(highest, along_px);
+    ++count;
+  }
+  return count >= 2 ? (highest - lowest) / height_px : 0.0;
+}
+
+BarVerdict judge_bars_on_outline(const std::vector<Detection>& detections, const Detection& outline,
+                                 int max_bars_inside, const StereoMatchOptions& options) {
+  if (outline.corners_px.empty()) return {};
+  if (max_bars_inside >= 0) {
+    const int bars = bars_inside(detections, outline, options);
+    if (bars > max_bars_inside) {
+      return {StereoGate::kBarsInside, static_cast<double>(bars),
+              static_cast<double>(max_bars_inside)};
+    }
+  }
+  if (options.max_bar_height_spread > 0.0) {
+    const double spread = bar_height_spread(detections, outline, options);
+    if (spread > options.max_bar_height_spread) {
+      return {StereoGate::kStackedBars, spread, options.max_bar_height_spread};
+    }
+  }
+  return {};
+}
+
+}  // namespace vsl::recognition::detail
