@@ -118,8 +118,8 @@ void BM_SingleViewDoor(benchmark::State& state) {
   for (auto _ : state) {
     const detail::SideCorrelator correlator(left, right, calibration.left, calibration.right,
                                             left_T_right, up);
-    const auto door =
-        detail::place_single_view_door(corners, correlator, calibration.left, up, options, nullptr);
+    const auto door = detail::place_single_view_door(corners, correlator, calibration.left, up,
+                                                     options, nullptr, 0.0);
     depth_m = door ? door->centre_m.z() : 0.0;
     benchmark::DoNotOptimize(depth_m);
   }

@@ -106,7 +106,7 @@ DoorCentre door_centre(const DoorOutlines& outlines, const DoorSides& sides,
                        const Triangulator& triangulator, const SideCorrelator* forward,
                        const SideCorrelator* reverse, const Eigen::Isometry3d& left_T_right,
                        const Eigen::Vector3d& up_in_left_camera, const StereoMatchOptions& options,
-                       StereoPairTrace& trace) {
+                       double max_width_m, StereoPairTrace& trace) {
   const auto refused = [&](StereoGate gate, double value, double limit) {
     trace.refused_by = gate;
     trace.value = value;
@@ -126,6 +126,7 @@ DoorCentre door_centre(const DoorOutlines& outlines, const DoorSides& sides,
       return refused(StereoGate::kSideTilt, std::asin(std::min(sides.worst_tilt, 1.0)),
                      options.max_side_tilt_rad);
     }
+    const std::optional<std::array<Eigen::Vector3d, 4>> outline_ends = ends;
     if (ends && forward) {
       const std::array<Eigen::Vector2d, 4> corners = outlines.left;
       const auto vertical = Triangulator::vertical_sides(corners);
@@ -169,6 +170,12 @@ DoorCentre door_centre(const DoorOutlines& outlines, const DoorSides& sides,
         (*ends)[2 * s] = *top;
         (*ends)[2 * s + 1] = *bottom;
       }
+    }
+    // A side's correlation peak on another edge (a repeated door's, the neighbour's) within
+    // the search range can move it a metre: a door wider than its class allows is not what the
+    // outlines show, and their own depths are kept.
+    if (ends && max_width_m > 0.0 && Triangulator::rectangle_width(*ends) > max_width_m) {
+      ends = outline_ends;
     }
     if (ends) {
       out.centre = Triangulator::rectangle_centre(*ends);

@@ -57,7 +57,10 @@ std::optional<DoorSides> judge_door_sides(const DoorOutlines& outlines,
 // The door's centre (left camera frame, metres, on the face) from its two vertical sides in both
 // outlines (Triangulator::rectangle_ends), each side's depth where the images around it correlate
 // (`forward` sweeps from the left image into the right, `reverse` the other way; both null
-// without the images), and the level-edge gate. `refused`: a gate refused the pair (in `trace`);
+// without the images), and the level-edge gate. Sides whose correlated depths make the door wider
+// than `max_width_m` (the class's, StereoMatchOptions::BorderCutDoor; 0: not tested) keep the
+// outlines' depths: a side's peak found on a repeated edge or a neighbour's, a metre off, is no
+// door's. `refused`: a gate refused the pair (in `trace`);
 // otherwise `centre` is empty when the sides place no centre (the caller keeps the reference
 // points' triangulation).
 struct DoorCentre {
@@ -68,6 +71,6 @@ DoorCentre door_centre(const DoorOutlines& outlines, const DoorSides& sides,
                        const Triangulator& triangulator, const SideCorrelator* forward,
                        const SideCorrelator* reverse, const Eigen::Isometry3d& left_T_right,
                        const Eigen::Vector3d& up_in_left_camera, const StereoMatchOptions& options,
-                       StereoPairTrace& trace);
+                       double max_width_m, StereoPairTrace& trace);
 
 }  // namespace vsl::recognition::detail

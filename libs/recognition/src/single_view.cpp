@@ -11,7 +11,7 @@ namespace vsl::recognition::detail {
 std::optional<SingleViewDoor> place_single_view_door(
     const std::array<Eigen::Vector2d, 4>& corners, const SideCorrelator& sweep,
     const head::CameraIntrinsics& own, const Eigen::Vector3d& up, const StereoMatchOptions& options,
-    const StereoMatchOptions::ExtentRange* height_range) {
+    const StereoMatchOptions::ExtentRange* height_range, double max_width_m) {
   if (!(up.norm() > 0.0)) return std::nullopt;
   Eigen::Matrix3d k;
   k << own.fx_px, 0.0, own.cx_px, 0.0, own.fy_px, own.cy_px, 0.0, 0.0, 1.0;
@@ -62,6 +62,9 @@ std::optional<SingleViewDoor> place_single_view_door(
     if (options.max_edge_slope_rad > 0.0) {
       const std::optional<double> slope = Triangulator::edge_slope(ends, up);
       if (!slope || std::atan(*slope) > options.max_edge_slope_rad) return std::nullopt;
+    }
+    if (max_width_m > 0.0 && Triangulator::rectangle_width(ends) > max_width_m) {
+      return std::nullopt;
     }
     if (height_range) {
       const double height_m = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
@@ -132,13 +135,14 @@ std::optional<StereoPercept> single_view_percept(
     const Detection& detection, int index, int image, const std::array<Eigen::Vector2d, 4>& corners,
     const IdealPixel& reference_ideal, const SideCorrelator& sweep,
     const Triangulator& triangulator, const StereoRig& rig, const StereoMatchOptions& options,
-    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m) {
+    const StereoMatchOptions::ExtentRange* height_range, double max_width_m,
+    double reference_offset_m) {
   const Eigen::Isometry3d right_T_left = rig.left_T_right.inverse();
   const std::optional<SingleViewDoor> door = place_single_view_door(
       corners, sweep, image == 0 ? rig.left : rig.right,
       image == 0 ? rig.up_in_left_camera
                  : Eigen::Vector3d(right_T_left.linear() * rig.up_in_left_camera),
-      options, height_range);
+      options, height_range, max_width_m);
   if (!door) return std::nullopt;
   return one_image_percept(detection, index, image, door->centre_m, door->worst_side_correlation,
                            0.0, reference_ideal, triangulator, rig, options, reference_offset_m);

@@ -29,11 +29,14 @@ struct SingleViewDoor {
 
 // `corners_ideal_px`: the outline clockwise from the top left, ideal pixels of the image the
 // sweep starts from (`own`, whose up direction is `up_in_own_camera`). `height_range`: the class's
-// height range, or nullptr. nullopt unless every test of min_single_view_correlation passes.
+// height range, or nullptr; `max_width_m`: the class's greatest width (0: not tested; a peak on
+// another door's edge places a side a metre off). nullopt unless every test of
+// min_single_view_correlation passes.
 std::optional<SingleViewDoor> place_single_view_door(
     const std::array<Eigen::Vector2d, 4>& corners_ideal_px, const SideCorrelator& sweep,
     const head::CameraIntrinsics& own, const Eigen::Vector3d& up_in_own_camera,
-    const StereoMatchOptions& options, const StereoMatchOptions::ExtentRange* height_range);
+    const StereoMatchOptions& options, const StereoMatchOptions::ExtentRange* height_range,
+    double max_width_m);
 
 // The cameras of one stereo frame (left camera frame; `up` from the head kinematics).
 struct StereoRig {
@@ -65,12 +68,12 @@ std::optional<StereoPercept> one_image_percept(const Detection& detection, int i
 // noise gives a pair at that point (the centre's projections into both images, with the lens
 // Jacobian of `reference_ideal`, the detection's own reference point), the other image's pixel
 // the centre's projection, and the confidence the detection's times its lower side score.
-// nullopt when the door is not placed.
+// nullopt when the door is not placed (`height_range`, `max_width_m`: place_single_view_door).
 std::optional<StereoPercept> single_view_percept(
     const Detection& detection, int index, int image,
     const std::array<Eigen::Vector2d, 4>& corners_ideal_px, const IdealPixel& reference_ideal,
     const SideCorrelator& sweep, const Triangulator& triangulator, const StereoRig& rig,
     const StereoMatchOptions& options, const StereoMatchOptions::ExtentRange* height_range,
-    double reference_offset_m);
+    double max_width_m, double reference_offset_m);
 
 }  // namespace vsl::recognition::detail

@@ -82,6 +82,12 @@ const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOption
   return nullptr;
 }
 
+// The class's greatest width, metres (its border_cut entry's max_width_m); 0 when not configured.
+double class_max_width_m(const StereoMatchOptions& options, const std::string& type) {
+  const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, type);
+  return door ? door->max_width_m : 0.0;
+}
+
 const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
                                                     const std::string& type) {
   for (const StereoMatchOptions::ExtentRange& range : options.height_range_m) {
@@ -294,7 +300,7 @@ std::vector<StereoPercept> match_and_triangulate(
       const detail::DoorCentre door = detail::door_centre(
           {corner_array(left_corners[l]), corner_array(right_corners[r])}, *sides, triangulator,
           correlator ? &*correlator : nullptr, reverse_correlator ? &*reverse_correlator : nullptr,
-          left_T_right, up_in_left_camera, options, trace);
+          left_T_right, up_in_left_camera, options, class_max_width_m(options, dl.type), trace);
       if (door.refused) return std::nullopt;
       if (door.centre) {
         point = *door.centre;
@@ -469,7 +475,8 @@ std::vector<StereoPercept> match_and_triangulate(
           if (pass == 0) {
             percept = detail::single_view_percept(
                 detection, static_cast<int>(d), image, corner_array(corners[d]), reference, sweep,
-                triangulator, rig, options, height_range(options, detection.type), offset_m);
+                triangulator, rig, options, height_range(options, detection.type),
+                class_max_width_m(options, detection.type), offset_m);
             if (percept) placed[static_cast<std::size_t>(image)][d] = 1;
           } else {
             // Not placed from both sides: from one side and the level planes of its edges (the

@@ -136,6 +136,10 @@ Eigen::Vector3d Triangulator::rectangle_centre(const std::array<Eigen::Vector3d,
   return (ends[0] + ends[1] + ends[2] + ends[3]) / 4.0;
 }
 
+double Triangulator::rectangle_width(const std::array<Eigen::Vector3d, 4>& ends) {
+  return (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
+}
+
 std::optional<double> Triangulator::edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
                                                const Eigen::Vector3d& up) {
   if (!(up.norm() > 0.0)) return std::nullopt;

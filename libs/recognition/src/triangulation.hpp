@@ -55,6 +55,10 @@ class Triangulator {
   // or an end is not in front of the cameras (rectangle_ends). The centre is the mean of the ends.
   static Eigen::Vector3d rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends);
 
+  // The rectangle's width between its two vertical sides (ends in the order of rectangle_ends):
+  // the distance between the sides' middles, metres.
+  static double rectangle_width(const std::array<Eigen::Vector3d, 4>& ends);
+
   // The four ends of the two vertical sides, as described at rectangle_centre (left camera frame,
   // metres): the first side's two ends, then the second's, each side's ends in the order of its
   // corners (so ends 0 and 2 bound one horizontal edge, 1 and 3 the other). `skipped_side` (0 or

@@ -417,6 +417,59 @@ TEST_F(SideCorrelationTest, ASideThatMatchesTwiceIsPlacedByTheDoorsShape) {
   EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
 }
 
+// The right image loses the door's right edge (the wall painted over the band around it) and
+// shows a copy of it 30 px to the left, as another door's edge: the side's correlation peak is
+// the copy, at about 1 m instead of 2.5, and the door would be 1.5 m wide. With the class's
+// greatest width (1 m) a pair keeps its outlines' depths and a single view is refused.
+TEST_F(SideCorrelationTest, ASidePlacedOnAnotherEdgeMakesNoDoorWiderThanItsClass) {
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  const Detection left = left_door(c);
+  const Detection right = right_door(c);
+  const Eigen::Vector2d top = right_px(c[1]), bottom = right_px(c[2]);
+  const cv::Rect band(static_cast<int>(std::min(top.x(), bottom.x())) - 6,
+                      static_cast<int>(top.y()) + 10,
+                      static_cast<int>(std::abs(top.x() - bottom.x())) + 12,
+                      static_cast<int>(bottom.y() - top.y()) - 20);
+  cv::Mat moved = right_grey_.clone();
+  const cv::Rect painted(band.x - 8, band.y - 10, band.width + 16, band.height + 20);
+  moved(painted).setTo(cv::Scalar(190));
+  right_grey_(band).copyTo(moved(band - cv::Point(30, 0)));
+  StereoMatchOptions options;
+  options.max_side_tilt_rad = 0.03;
+  options.min_side_correlation = 0.7;
+  options.min_single_view_correlation = 0.7;
+  // The painted band leaves a weaker second peak of the side, which a margin would also try.
+  options.single_view_min_peak_margin = 0.0;
+  const StereoImages images{&left_grey_, &moved};
+  const auto match = [&](const std::vector<Detection>& r) {
+    return match_and_triangulate({left}, r, calibration_.left, calibration_.right, left_T_right_,
+                                 options, up(), nullptr, images);
+  };
+  // Without the width: the pair's right side on the copy, the centre decimetres off; the
+  // single view likewise.
+  const auto pair_off = match({right});
+  ASSERT_EQ(pair_off.size(), 1u);
+  EXPECT_GT((pair_off[0].left_camera_position_m - door_.centre_m).norm(), 0.2);
+  const auto single_off = match({});
+  ASSERT_EQ(single_off.size(), 1u);
+  EXPECT_GT((single_off[0].left_camera_position_m - door_.centre_m).norm(), 0.2);
+  // With it.
+  StereoMatchOptions::BorderCutDoor door;
+  door.type = "door";
+  door.max_width_m = 1.0;
+  options.border_cut = {door};
+  const auto pair = match({right});
+  ASSERT_EQ(pair.size(), 1u);
+  EXPECT_LT((pair[0].left_camera_position_m - door_.centre_m).norm(), 1e-3);
+  EXPECT_TRUE(match({}).empty());
+  // The door's own 0.5 m stand within the bound.
+  const StereoImages unmoved{&left_grey_, &right_grey_};
+  EXPECT_EQ(match_and_triangulate({left}, {}, calibration_.left, calibration_.right, left_T_right_,
+                                  options, up(), nullptr, unmoved)
+                .size(),
+            1u);
+}
+
 TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {
   // The right image is the wall alone: no side scores 0.7, so the outlines' depth stands, and
   // exact outlines give the door's centre.

@@ -156,6 +156,9 @@ struct StereoMatchOptions {
     std::vector<double> typical_heights_m;
     double height_sigma_m = 0.0;  // the spread of the class's heights about them, metres
     double min_width_m = 0.0;     // of the whole edge
+    // Also the class's greatest width for whole outlines: a pair whose sides' correlated depths
+    // make the door wider keeps the outlines' depths, and a single view is refused (Doors item
+    // 19).
     double max_width_m = 0.0;
     // The sides' tilt from vertical (as StereoMatchOptions::max_side_tilt_rad; 0 turns the test
     // off). A cut outline's sides are shorter and end at the border rather than at a corner, so
