@@ -108,6 +108,15 @@ class SideCorrelationTest : public ::testing::Test {
     return d;
   }
 
+  // The band around the door's right side in the right image, 6 px either side of it, without
+  // its 10 px at either end.
+  cv::Rect right_side_band() const {
+    const std::array<Eigen::Vector3d, 4> c = door_.corners();
+    const Eigen::Vector2d top = right_px(c[1]), bottom = right_px(c[2]);
+    return {static_cast<int>(std::min(top.x(), bottom.x())) - 6, static_cast<int>(top.y()) + 10,
+            static_cast<int>(std::abs(top.x() - bottom.x())) + 12,
+            static_cast<int>(bottom.y() - top.y()) - 20};
+  }
   // The door detections of outlines with these 3D corners, in the left and the right image.
   Detection left_door(const std::array<Eigen::Vector3d, 4>& c) const {
     return door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
@@ -393,11 +402,7 @@ TEST_F(SideCorrelationTest, ASideThatMatchesTwiceIsPlacedByTheDoorsShape) {
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
   const Detection left = left_door(c);
   // The band around the right side in the right image, copied 30 px to the left.
-  const Eigen::Vector2d top = right_px(c[1]), bottom = right_px(c[2]);
-  const cv::Rect band(static_cast<int>(std::min(top.x(), bottom.x())) - 6,
-                      static_cast<int>(top.y()) + 10,
-                      static_cast<int>(std::abs(top.x() - bottom.x())) + 12,
-                      static_cast<int>(bottom.y() - top.y()) - 20);
+  const cv::Rect band = right_side_band();
   cv::Mat twice = right_grey_.clone();
   right_grey_(band).copyTo(twice(band - cv::Point(30, 0)));
   StereoMatchOptions options;
@@ -425,11 +430,7 @@ TEST_F(SideCorrelationTest, ASidePlacedOnAnotherEdgeMakesNoDoorWiderThanItsClass
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
   const Detection left = left_door(c);
   const Detection right = right_door(c);
-  const Eigen::Vector2d top = right_px(c[1]), bottom = right_px(c[2]);
-  const cv::Rect band(static_cast<int>(std::min(top.x(), bottom.x())) - 6,
-                      static_cast<int>(top.y()) + 10,
-                      static_cast<int>(std::abs(top.x() - bottom.x())) + 12,
-                      static_cast<int>(bottom.y() - top.y()) - 20);
+  const cv::Rect band = right_side_band();
   cv::Mat moved = right_grey_.clone();
   const cv::Rect painted(band.x - 8, band.y - 10, band.width + 16, band.height + 20);
   moved(painted).setTo(cv::Scalar(190));
