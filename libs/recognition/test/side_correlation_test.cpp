@@ -384,6 +384,16 @@ TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
   handle.reference_px = left_px(door_.centre_m);
   EXPECT_EQ(match({left, handle}, {}, images).size(), 1u);
   EXPECT_TRUE(match({left, handle, handle}, {}, images).empty());
+  // Two handles one above another on the outline's edge (drawer fronts seen at a grazing angle;
+  // not inside by 2 px, so not counted above): refused with max_bar_height_spread.
+  Detection upper = handle, lower = handle;
+  upper.reference_px = left_px(c[0] + 0.2 * door_.down);
+  lower.reference_px = left_px(c[0] + 0.5 * door_.down);
+  EXPECT_EQ(match({left, upper, lower}, {}, images).size(), 1u);
+  options.max_bar_height_spread = 0.3;
+  EXPECT_TRUE(match({left, upper, lower}, {}, images).empty());
+  EXPECT_EQ(match({left, upper}, {}, images).size(), 1u);
+  options.max_bar_height_spread = 0.0;
   // A weak detection never makes a percept alone.
   Detection weak = left;
   weak.needs_partner = true;
