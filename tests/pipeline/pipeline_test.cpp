@@ -202,7 +202,9 @@ INSTANTIATE_TEST_SUITE_P(
 // one resolved by an active look within 5 cm and 2 degrees, and none confidently wrong. A run
 // whose scan already settles the place, but not precisely enough, takes precision looks
 // (docs/localizer-daemon.md), which are active looks too; one whose scan localizes at once does
-// not count, and the next run is tried.
+// not count, and the next run is tried. A recognizer that finds more lets that one gaze see
+// enough to localize at once: after a change to recognition, run `tools/demo --ambiguous
+// --no-build` a few times, and move the gaze (config/vsl-localizer-ambiguous.yaml) if it does.
 TEST(FullPipelineAmbiguousStart, ResolvedByActiveValidation) {
   bool resolved = false;
   std::string outputs;
