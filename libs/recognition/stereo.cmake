@@ -6,6 +6,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_correlation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/single_view.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/border_cut.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/side_cut_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/occluded_corner_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
@@ -19,6 +20,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/side_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/one_side_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_correlation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)

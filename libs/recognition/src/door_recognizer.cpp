@@ -52,18 +52,22 @@ struct BorderCutOutline {
 };
 
 // The border that cuts `quad` (fitted with the image's size) along a whole side, and its corners
-// renumbered so that the cut side is the top (corners 0-1) or the bottom (2-3), that side moved
-// onto the border. The cut side is the one side without support (its line is only the hull's
-// chord, not necessarily along the border, but its corners within kMaxCutCornerOffBorder of the
-// visible sides' length of the border row); the blob reaches the border it faces (the top one
-// when its middle is above the opposite side's); the three other sides are seen
-// (kMinBorderSideSupport), the two adjoining it nearer the image vertical. The numbering is
-// otherwise quadrilateral.hpp's clockwise one; its start, the corner of least u + v, is not the
-// top left when the outline's top edge slopes steeply, hence the renumbering. The cut side's
-// corners become where the adjoining sides' lines leave the image (the outer edge of its first
-// or last row). nullopt otherwise.
+// renumbered so that the cut side is the top (corners 0-1), the bottom (2-3), the right (1-2) or
+// the left (3-0), that side moved onto the border. The cut side is the one side without support
+// (its line is only the hull's chord, not necessarily along the border, but its corners within
+// kMaxCutCornerOffBorder of the adjoining sides' length of the border row or column); with
+// `vertical_cut` (the blob touches the left or right border only) it is a left or right cut (Doors
+// item 20), else a top or bottom one (the chord's own direction says little: along a narrow
+// strip of a door it is as long as it is wide); the blob reaches
+// the border it faces (the top one when its middle is above the opposite side's, the left one
+// when it is left of it); the three other sides are seen (kMinBorderSideSupport), the two
+// adjoining it nearer the image vertical under a top or bottom cut, nearer the horizontal under a
+// left or right one. The numbering is otherwise quadrilateral.hpp's clockwise one; its start, the
+// corner of least u + v, is not the top left when the outline's top edge slopes steeply, hence
+// the renumbering. The cut side's corners become where the adjoining sides' lines leave the image
+// (the outer edge of its first or last row or column). nullopt otherwise.
 std::optional<BorderCutOutline> border_cut_of(const BlobQuadrilateral& quad, const Blob& blob,
-                                              int image_rows) {
+                                              bool vertical_cut, int image_cols, int image_rows) {
   int cut_side = -1;
   for (int side = 0; side < 4; ++side) {
     if (quad.side_support[side] >= kMinBorderSideSupport) continue;
@@ -73,42 +77,60 @@ std::optional<BorderCutOutline> border_cut_of(const BlobQuadrilateral& quad, con
   if (cut_side < 0) return std::nullopt;
   const auto& q = quad.corners;
   const auto middle = [&](int side) { return 0.5 * (q[side] + q[(side + 1) % 4]); };
-  const bool top = middle(cut_side).y() < middle((cut_side + 2) % 4).y();
-  if (top ? blob.v_min != 0 : blob.v_max != image_rows - 1) return std::nullopt;
-  // Renumbered: c[k] = q[(k + shift) % 4], the cut side becoming side 0 or 2.
-  const int shift = (cut_side - (top ? 0 : 2) + 4) % 4;
+  // The side of the outline the cut is on: the top (left) one when the cut side's middle is
+  // above (left of) the opposite side's.
+  const int axis = vertical_cut ? 0 : 1;
+  const bool first_border = middle(cut_side)(axis) < middle((cut_side + 2) % 4)(axis);
   BorderCutOutline out;
-  out.cut = top ? BorderCut::kTop : BorderCut::kBottom;
+  if (vertical_cut) {
+    if (first_border ? blob.u_min != 0 : blob.u_max != image_cols - 1) return std::nullopt;
+    out.cut = first_border ? BorderCut::kLeft : BorderCut::kRight;
+  } else {
+    if (first_border ? blob.v_min != 0 : blob.v_max != image_rows - 1) return std::nullopt;
+    out.cut = first_border ? BorderCut::kTop : BorderCut::kBottom;
+  }
+  // Renumbered: c[k] = q[(k + shift) % 4], the cut side becoming side 0 (top), 1 (right),
+  // 2 (bottom) or 3 (left).
+  const int target_side = out.cut == BorderCut::kTop      ? 0
+                          : out.cut == BorderCut::kRight  ? 1
+                          : out.cut == BorderCut::kBottom ? 2
+                                                          : 3;
+  const int shift = (cut_side - target_side + 4) % 4;
   auto& c = out.corners;
   for (int k = 0; k < 4; ++k) c[k] = q[(k + shift) % 4];
+  // The two sides adjoining the cut one: upright under a top or bottom cut, level under a left
+  // or right one.
   const auto upright = [&](int side) {
     const Eigen::Vector2d d = c[(side + 1) % 4] - c[side];
     return std::abs(d.y()) > std::abs(d.x());
   };
-  if (!upright(1) || !upright(3)) return std::nullopt;
+  const int adjoining_a = (target_side + 1) % 4, adjoining_b = (target_side + 3) % 4;
+  if (upright(adjoining_a) == vertical_cut || upright(adjoining_b) == vertical_cut) {
+    return std::nullopt;
+  }
   // The cut side runs along the border: a side unseen for another reason (an occluder's
   // contour, a ragged top) with one corner on it is no cut.
-  const double border_row = top ? -0.5 : image_rows - 0.5;
+  const double border_at =
+      first_border ? -0.5 : (vertical_cut ? image_cols : image_rows) - 0.5;  // column or row
+  const auto length = [&](int side) { return (c[(side + 1) % 4] - c[side]).norm(); };
   const double tolerance_px =
-      kMaxCutCornerOffBorder * 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
-  const int first = top ? 0 : 2;
-  for (const int k : {first, first + 1}) {
-    if (std::abs(c[k].y() - border_row) > tolerance_px) return std::nullopt;
+      kMaxCutCornerOffBorder * 0.5 * (length(adjoining_a) + length(adjoining_b));
+  for (const int k : {target_side, (target_side + 1) % 4}) {
+    if (std::abs(c[k](axis) - border_at) > tolerance_px) return std::nullopt;
   }
-  // Where the line through corners a and b crosses the row v (upright: d.y() is not 0).
-  const auto at_row = [&](int a, int b, double v) {
+  // Where the line through corners a and b crosses the border row or column (the adjoining
+  // sides are not parallel to it: d(axis) is not 0).
+  const auto at_border = [&](int a, int b) {
     const Eigen::Vector2d d = c[b] - c[a];
-    return Eigen::Vector2d(c[a].x() + d.x() * (v - c[a].y()) / d.y(), v);
+    return Eigen::Vector2d(c[a] + d * (border_at - c[a](axis)) / d(axis));
   };
-  if (top) {
-    const Eigen::Vector2d left = at_row(3, 0, border_row), right = at_row(2, 1, border_row);
-    c[0] = left;
-    c[1] = right;
-  } else {
-    const Eigen::Vector2d right = at_row(1, 2, border_row), left = at_row(0, 3, border_row);
-    c[2] = right;
-    c[3] = left;
-  }
+  // Each cut corner moves along the adjoining side it ends: corner k of the cut side lies on
+  // the side through k and its neighbour away from the cut side.
+  const int k0 = target_side, k1 = (target_side + 1) % 4;
+  const Eigen::Vector2d moved0 = at_border((k0 + 3) % 4, k0);
+  const Eigen::Vector2d moved1 = at_border((k1 + 1) % 4, k1);
+  c[k0] = moved0;
+  c[k1] = moved1;
   return out;
 }
 
@@ -128,10 +150,29 @@ Detection border_cut_detection(const std::string& type, const Blob& blob, int bl
   const BorderCut cut = outline.cut;
   detection.border_cut = cut;
   detection.corners_px.assign(outline.corners.begin(), outline.corners.end());
-  // The edge shown whole: the bottom one (corners 2, 3) under a top cut, else the top (0, 1).
+  // The side shown whole: the bottom edge (corners 2, 3) under a top cut, the top (0, 1) under a
+  // bottom one; the right side (1, 2) under a left cut, the left (0, 3) under a right one. The
+  // height: the vertical sides' visible length, or the whole side's.
   const auto& c = outline.corners;
-  detection.reference_px = cut == BorderCut::kTop ? 0.5 * (c[2] + c[3]) : 0.5 * (c[0] + c[1]);
-  detection.height_px = 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
+  switch (cut) {
+    case BorderCut::kTop:
+      detection.reference_px = 0.5 * (c[2] + c[3]);
+      break;
+    case BorderCut::kBottom:
+      detection.reference_px = 0.5 * (c[0] + c[1]);
+      break;
+    case BorderCut::kLeft:
+      detection.reference_px = 0.5 * (c[1] + c[2]);
+      break;
+    case BorderCut::kRight:
+    case BorderCut::kNone:
+      detection.reference_px = 0.5 * (c[0] + c[3]);
+      break;
+  }
+  detection.height_px = cut == BorderCut::kLeft ? (c[2] - c[1]).norm()
+                        : cut == BorderCut::kRight
+                            ? (c[3] - c[0]).norm()
+                            : 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
   detection.area_px = blob.area_px;
   detection.major_axis_angle_rad = major_axis_angle_rad(blob);
   detection.major_extent_px = axes.major_extent_px;
@@ -232,9 +273,13 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
       quad = fit_quadrilateral(blob, bgr_image.cols, bgr_image.rows);
       if (!quad) continue;
       if (quad->min_side_support < kMinBorderSideSupport) {
-        if (parameters_.detect_border_cut && blob.u_min >= border &&
-            blob.u_max < bgr_image.cols - border && model_.accepts(colour_d2)) {
-          const auto cut = border_cut_of(*quad, blob, bgr_image.rows);
+        // Cut along one border only: a blob touching a second one (a corner of the image) is
+        // left alone.
+        const bool at_side = blob.u_min < border || blob.u_max >= bgr_image.cols - border;
+        const bool at_top_or_bottom = blob.v_min < border || blob.v_max >= bgr_image.rows - border;
+        if (parameters_.detect_border_cut && model_.accepts(colour_d2) &&
+            at_side != at_top_or_bottom) {
+          const auto cut = border_cut_of(*quad, blob, at_side, bgr_image.cols, bgr_image.rows);
           if (cut && blob.area_px >= kMinBorderCutFill * outline_area_px(cut->corners)) {
             out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i), *cut, axes,
                                                colour_d2));

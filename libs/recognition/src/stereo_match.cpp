@@ -19,6 +19,7 @@
 #include "occluded_corner_door.hpp"
 #include "one_side_door.hpp"
 #include "side_correlation.hpp"
+#include "side_cut_door.hpp"
 #include "single_view.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
@@ -375,6 +376,14 @@ std::vector<StereoPercept> match_and_triangulate(
         trace.refused_by = bars.gate;
         trace.value = bars.value;
         trace.limit = bars.limit;
+      } else if (left[l].border_cut == BorderCut::kLeft ||
+                 left[l].border_cut == BorderCut::kRight) {
+        c = detail::judge_side_cut_pair(
+            l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
+            {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
+            correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options,
+            *cut_height, height_range(options, left[l].type),
+            reference_depth_offset(options, left[l].type), trace);
       } else {
         c = detail::judge_border_cut_pair(
             l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},

@@ -131,7 +131,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       door.expect_map();
       door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
                         "max_side_tilt_rad", "min_peak_margin", "from_one_side", "merged_side",
-                        "occluded_corner"});
+                        "occluded_corner", "typical_width_m", "width_sigma_m"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
       const config::Node heights = door.at("typical_heights_m");
@@ -174,6 +174,20 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         if (parsed.occluded_corner && !(out.max_side_tilt_rad > 0.0)) {
           v->fail("needs max_side_tilt_rad > 0 (the good side's test)");
         }
+      }
+      if (const auto v = door.find("typical_width_m")) {
+        parsed.typical_width_m = v->as_double_in(0.0, 100.0);
+        if (parsed.typical_width_m > 0.0 && (parsed.typical_width_m < parsed.min_width_m ||
+                                             parsed.typical_width_m > parsed.max_width_m)) {
+          v->fail("must be 0 (off) or within min_width_m .. max_width_m");
+        }
+        // The whole side is judged by the whole outlines' side and height gates.
+        if (parsed.typical_width_m > 0.0 && !(out.max_side_tilt_rad > 0.0)) {
+          v->fail("needs max_side_tilt_rad > 0 (the whole side's test)");
+        }
+      }
+      if (const auto v = door.find("width_sigma_m")) {
+        parsed.width_sigma_m = v->as_double_in(0.0, 100.0);
       }
       out.border_cut.push_back(parsed);
     }

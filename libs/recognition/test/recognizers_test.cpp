@@ -244,9 +244,9 @@ TEST(Recognizers, DoorsJustBeyondTheModelAreWeakDetections) {
   EXPECT_THROW(detect(model, 0.5 * d2), std::invalid_argument);
 }
 
-TEST(Recognizers, BlobsOnTheImageBorderAreNotJudged) {
+TEST(Recognizers, BlobsOnTwoImageBordersAreNotJudged) {
   cv::Mat image(200, 200, CV_8UC3, kWallBgr);
-  image(cv::Rect(0, 20, 60, 150)).setTo(kDoorBgr);  // cut by the left border
+  image(cv::Rect(0, 0, 60, 150)).setTo(kDoorBgr);  // cut by the left and the top border
   const std::vector<Blob> blobs{colour_blob(image, kDoorBgr, 5.0, cv::Rect(0, 0, 200, 200))};
   const auto door = load_recognizer("config/recognition/door.yaml");
   std::vector<Detection> out;
@@ -269,10 +269,10 @@ std::vector<Detection> synthetic_door_detections(const cv::Mat& image,
   return out;
 }
 
-TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
+TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   // A door panel whose top the image's upper border cuts (a wall cupboard seen from close by),
   // one whose bottom the lower border cuts, one cut by the left border, and a short strip cut by
-  // the top border with a notch (fills under 85% of its outline).
+  // the top border with a notch (fills under 80% of its outline).
   cv::Mat image(240, 320, CV_8UC3, kWallBgr);
   const cv::Scalar door_bgr = kDoorBgr * 0.62;
   const cv::Rect top_cut(30, 0, 60, 110), bottom_cut(120, 130, 70, 110), left_cut(0, 60, 20, 120),
@@ -286,7 +286,7 @@ TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
   }
   EXPECT_TRUE(synthetic_door_detections(image, blobs, false).empty());
   const std::vector<Detection> cut = synthetic_door_detections(image, blobs, true);
-  ASSERT_EQ(cut.size(), 2u);
+  ASSERT_EQ(cut.size(), 3u);
   // Top cut: the corners on the cut side where the sides leave the image (the outer edge of
   // row 0), the reference point the middle of the bottom edge, the height the visible sides'.
   EXPECT_EQ(cut[0].blob_index, 0);
@@ -305,6 +305,20 @@ TEST(Recognizers, DoorsCutByTheTopOrBottomBorderAreBorderCutDetections) {
   EXPECT_EQ(cut[1].border_cut, BorderCut::kBottom);
   EXPECT_DOUBLE_EQ(cut[1].corners_px[2].y(), 239.5);
   EXPECT_NEAR(cut[1].reference_px.y(), 129.5, 1.0);
+  // Left cut (Doors item 20): the right side is the whole one, the corners on the cut side where
+  // the top and bottom edges leave the image (the outer edge of column 0).
+  EXPECT_EQ(cut[2].blob_index, 2);
+  EXPECT_EQ(cut[2].border_cut, BorderCut::kLeft);
+  ASSERT_EQ(cut[2].corners_px.size(), 4u);
+  EXPECT_DOUBLE_EQ(cut[2].corners_px[0].x(), -0.5);
+  EXPECT_DOUBLE_EQ(cut[2].corners_px[3].x(), -0.5);
+  EXPECT_NEAR(cut[2].corners_px[0].y(), 59.5, 1.0);
+  EXPECT_NEAR(cut[2].corners_px[3].y(), 179.5, 1.0);
+  EXPECT_NEAR(cut[2].corners_px[1].x(), 19.5, 1.0);
+  EXPECT_NEAR(cut[2].corners_px[2].y(), 179.5, 1.0);
+  EXPECT_NEAR(cut[2].reference_px.x(), 19.5, 1.0);
+  EXPECT_NEAR(cut[2].reference_px.y(), 119.5, 1.0);
+  EXPECT_NEAR(cut[2].height_px, 120.0, 1.5);
 }
 
 TEST(Recognizers, ABorderCutDoorWithASteepTopEdgeIsNumberedFromItsCut) {

@@ -673,7 +673,7 @@ stereo:
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
-           merged_side: true, occluded_corner: true}
+           merged_side: true, occluded_corner: true, typical_width_m: 0.45, width_sigma_m: 0.08}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -716,6 +716,8 @@ stereo:
   EXPECT_TRUE(o.border_cut[0].from_one_side);
   EXPECT_TRUE(o.border_cut[0].occluded_corner);
   EXPECT_TRUE(o.border_cut[0].merged_side);
+  EXPECT_EQ(o.border_cut[0].typical_width_m, 0.45);
+  EXPECT_EQ(o.border_cut[0].width_sigma_m, 0.08);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -814,6 +816,22 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                       "max_side_tilt_rad > 0"),
             std::string::npos);
   EXPECT_EQ(cut_door_error("occluded_corner: true", "  max_side_tilt_rad: 0.03\n"), "");
+  // Doors cut by the left or right border (item 20): a door's width, the whole side judged by
+  // the whole outlines' side gate.
+  EXPECT_NE(cut_door_error("typical_width_m: 0.2", "  max_side_tilt_rad: 0.03\n")
+                .find("s.yaml:3: stereo.border_cut.door.typical_width_m: must be 0 (off) or within "
+                      "min_width_m .. max_width_m"),
+            std::string::npos)
+      << cut_door_error("typical_width_m: 0.2", "  max_side_tilt_rad: 0.03\n");
+  EXPECT_NE(cut_door_error("typical_width_m: 0.4")
+                .find("s.yaml:2: stereo.border_cut.door.typical_width_m: needs max_side_tilt_rad"),
+            std::string::npos);
+  EXPECT_EQ(cut_door_error("typical_width_m: 0", ""), "");
+  EXPECT_EQ(
+      cut_door_error("typical_width_m: 0.4, width_sigma_m: 0.1", "  max_side_tilt_rad: 0.03\n"),
+      "");
+  EXPECT_NE(cut_door_error("width_sigma_m: -1").find("stereo.border_cut.door.width_sigma_m"),
+            std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;

@@ -9,7 +9,7 @@
 namespace vsl::recognition {
 
 // Which image border cuts a detection's outline along a whole side.
-enum class BorderCut { kNone, kTop, kBottom };
+enum class BorderCut { kNone, kTop, kBottom, kLeft, kRight };
 
 struct Detection {
   std::string type;     // object type as in the world model: "door", "handle", ...
@@ -47,6 +47,11 @@ struct Detection {
   // bottom edge for kTop). The stereo match pairs it only with a detection cut along the same
   // border and places its centre from that edge and the class's typical height
   // (StereoMatchOptions::border_cut); its mahalanobis2 is its colour's alone.
+  // kLeft and kRight (Doors item 20): the left or right border cuts it along a whole side; its
+  // corners_px on the cut side are where the top and bottom edges leave the image, its height_px
+  // is the length of the vertical side it shows whole and its reference_px that side's middle.
+  // The stereo match places it from that side, the edges' level planes and the class's typical
+  // width (StereoMatchOptions::BorderCutDoor::typical_width_m).
   BorderCut border_cut = BorderCut::kNone;
 };
 

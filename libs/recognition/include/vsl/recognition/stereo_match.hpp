@@ -202,6 +202,20 @@ struct StereoMatchOptions {
     // single_view_max_bars_inside handles inside each outline. The other gates of a pair then
     // apply; its covariance is a pair's.
     bool occluded_corner = false;
+    // Doors cut along a whole vertical side by the left or right image border (Detection::
+    // border_cut kLeft, kRight; side_cut_door.hpp, Doors item 20), placed from the side they
+    // show whole and this width: two detections cut along the same border pair when that side's
+    // ends lie on each other's epipolar lines, it is about as long in both images, vertical in 3D
+    // (max_side_tilt_rad of whole outlines) and a door's height (height_range_m); the visible
+    // top and bottom edges, where the rays through their ends at the border meet the level
+    // planes of the side's ends in the image that sees more of the door, are parallel,
+    // half typical_width_m .. max_width_m long and seen from within about
+    // 78 deg of head-on; at most single_view_max_bars_inside handles inside each outline. The
+    // door is as wide as the greater of this and its visible width; the centre lies half that
+    // from the side's middle along the edges, its covariance the pixel noise's at the side's
+    // middle plus (width_sigma_m / 2)^2 along the edges. Metres; 0 pairs no such detections.
+    double typical_width_m = 0.0;
+    double width_sigma_m = 0.0;  // the spread of the class's widths about it, metres
   };
   std::vector<BorderCutDoor> border_cut;
 };

@@ -1,0 +1,191 @@
+// Doors cut along a whole vertical side by the left or right image border (side_cut_door.hpp).
+//
+// Geometry. Under a left cut the outline shows the door's right side whole, between its real
+// corners 1 (top) and 2 (bottom), and its top and bottom edges up to where they leave the image
+// (corners 0 and 3, on the border column); under a right cut the left side (0, 3) and the edges
+// up to corners 1 and 2. Triangulator::rectangle_ends places the whole side from the right
+// image's plane through it and the left rays through its corners: its ends T (top) and B
+// (bottom), in the left camera frame; item 8's correlation then refines its depth. A door's top
+// and bottom edges are level, so the point where an edge leaves the image lies on the ray r
+// through that corner at the height of the side's end on the same edge (the plane
+// u . X = u . T, u the unit up direction):
+//   P_top = c + w r,   w = u . (T - c) / (u . r),   c the camera's centre,
+// and P_bottom likewise with B; taken in the image that sees more of the door (the left image
+// under a left cut: the right camera, further right, sees less beyond its left border), defined
+// when the ray is at least 0.05 rad from the plane. Then
+//   visible width  w_v = mean over the edges of |P_e - E_e|   (E_top = T, E_bottom = B),
+//   direction      d   = the mean of the unit vectors (P_e - E_e) / |P_e - E_e|, normalized,
+//   door width     W   = max(W_typical, w_v),
+//   centre         C   = (T + B) / 2 + (W / 2) d,
+// for two parallel edges (within kMaxEdgeAngleRad), w_v at least half W_typical (the ground
+// truth counts a door at least half in view, and less of a door is mostly a strip segmentation
+// split off) and at most the class's greatest width. The covariance is that of the side's middle
+// triangulated from the two reference points (the pixel noise) plus (sigma_W / 2)^2 d d^T: the
+// hidden part of the door is known only as the class's spread of widths.
+#include "side_cut_door.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace vsl::recognition::detail {
+namespace {
+
+// The top and bottom edges' horizontal directions, where both are found, agree within this
+// (radians): the outline's level sides are one door's two edges (an occluder's contour or a
+// neighbour's strip along one of them turns it). About 11 deg.
+constexpr double kMaxEdgeAngleRad = 0.2;
+// At least this fraction of the typical width in view (see above).
+constexpr double kMinVisibleOfTypicalWidth = 0.5;
+
+}  // namespace
+
+std::optional<Candidate> judge_side_cut_pair(
+    int l, int r, const BorderCutView& left, const BorderCutView& right,
+    const EpipolarGeometry& epipolar, const Triangulator& triangulator,
+    const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
+    const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
+    const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m,
+    StereoPairTrace& trace) {
+  const auto refuse = [&](StereoGate gate, double value, double limit) {
+    trace.refused_by = gate;
+    trace.value = value;
+    trace.limit = limit;
+    return std::nullopt;
+  };
+  const BorderCut cut = left.detection.border_cut;
+  if ((cut != BorderCut::kLeft && cut != BorderCut::kRight) || right.detection.border_cut != cut ||
+      !(door.typical_width_m > 0.0)) {
+    return refuse(StereoGate::kEpipolar, 0.0, 0.0);
+  }
+  const bool left_cut = cut == BorderCut::kLeft;
+  // The whole side's corners (top, bottom) and the cut ones on the same edges; the whole side's
+  // index in Triangulator::vertical_sides' order ({0, 3}, then {1, 2}).
+  const std::array<int, 2> whole = left_cut ? std::array<int, 2>{1, 2} : std::array<int, 2>{0, 3};
+  const std::array<int, 2> at_border =
+      left_cut ? std::array<int, 2>{0, 3} : std::array<int, 2>{1, 2};
+  const int whole_side = left_cut ? 1 : 0;
+  const std::array<Eigen::Vector2d, 4>& lc = left.corners_ideal_px;
+  const std::array<Eigen::Vector2d, 4>& rc = right.corners_ideal_px;
+  if (Triangulator::vertical_sides(lc)[0] != std::array<int, 2>{0, 3}) {
+    return refuse(StereoGate::kSideTilt, 1.0, 0.0);  // the level sides are nearer the vertical
+  }
+
+  // Position: the whole side's two corners on each other's epipolar lines.
+  double epipolar_px = 0.0;
+  for (const int k : whole) epipolar_px = std::max(epipolar_px, epipolar.distance_px(lc[k], rc[k]));
+  const double max_epipolar_px = std::max(
+      options.max_epipolar_distance_px,
+      kRectangleEpipolarFraction * 0.5 * (left.detection.height_px + right.detection.height_px));
+  if (!(epipolar_px <= max_epipolar_px)) {
+    return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+  }
+  // Size: the side is about as long in both images (both cameras are about equally far).
+  const double left_px = (lc[whole[1]] - lc[whole[0]]).norm();
+  const double right_px = (rc[whole[1]] - rc[whole[0]]).norm();
+  const double max_length_ratio = std::sqrt(std::max(options.max_area_ratio, 1.0));
+  const double length_ratio =
+      std::max(left_px, right_px) / std::max(std::min(left_px, right_px), 1e-9);
+  if (!(length_ratio <= max_length_ratio)) {
+    return refuse(StereoGate::kAreaRatio, length_ratio, max_length_ratio);
+  }
+  // The side is a door's vertical edge in both images: whole, so the whole outlines' bound.
+  const Eigen::Vector3d& u = up_in_left_camera;
+  const auto tilts = triangulator.side_tilts(lc, rc, u)[static_cast<std::size_t>(whole_side)];
+  const double tilt = std::max(tilts[0], tilts[1]);
+  if (tilt > std::sin(options.max_side_tilt_rad)) {
+    return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)), options.max_side_tilt_rad);
+  }
+  const auto ends = triangulator.rectangle_ends(lc, rc, 1 - whole_side);
+  const auto triangulation =
+      triangulator.triangulate(left.reference, right.reference, options.pixel_sigma_px, 0.0);
+  if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  Eigen::Vector3d top = (*ends)[static_cast<std::size_t>(2 * whole_side)];
+  Eigen::Vector3d bottom = (*ends)[static_cast<std::size_t>(2 * whole_side + 1)];
+  // The side's depth where the images around it correlate, searched around the outlines' depth
+  // (item 8), when that peak is clear (a run of equal doors repeats every edge).
+  if (correlator) {
+    const double edges_px =
+        0.5 * ((lc[at_border[0]] - lc[whole[0]]).norm() + (lc[at_border[1]] - lc[whole[1]]).norm());
+    const double search_px = kSideSearchPx + kSideSearchWidthFraction * edges_px;
+    const double initial_m =
+        0.5 * (correlator->horizontal_distance(top) + correlator->horizontal_distance(bottom));
+    const auto depth = correlator->correlate(lc[whole[0]], lc[whole[1]], initial_m, search_px,
+                                             options.min_depth_m, options.max_depth_m);
+    if (depth && depth->correlation >= options.min_side_correlation &&
+        depth->second_correlation <= depth->correlation - door.min_peak_margin) {
+      const auto top_point = correlator->point_at(lc[whole[0]], depth->horizontal_distance_m);
+      const auto bottom_point = correlator->point_at(lc[whole[1]], depth->horizontal_distance_m);
+      if (top_point && bottom_point) {
+        top = *top_point;
+        bottom = *bottom_point;
+      }
+    }
+  }
+  // A door's height: both ends are seen.
+  const double height_m = (top - bottom).dot(u);
+  if (height_range && height_m < height_range->min_m) {
+    return refuse(StereoGate::kHeight, height_m, height_range->min_m);
+  }
+  if (height_range && height_m > height_range->max_m) {
+    return refuse(StereoGate::kHeight, height_m, height_range->max_m);
+  }
+  // The edges up to the border, in the image that sees more of the door.
+  const std::array<Eigen::Vector3d, 2> side_end{top, bottom};
+  std::array<Eigen::Vector3d, 2> along{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  int found = 0;
+  double visible_m = 0.0;
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  for (std::size_t e = 0; e < 2; ++e) {
+    const int k = at_border[e];
+    const auto point = left_cut ? triangulator.left_ray_on_level_plane(lc[k], side_end[e], u)
+                                : triangulator.right_ray_on_level_plane(rc[k], side_end[e], u);
+    if (!point) continue;
+    const Eigen::Vector3d a = *point - side_end[e];
+    along[e] = a - a.dot(u) * u;  // level by construction, up to rounding
+    if (!(along[e].norm() > 0.0)) continue;
+    visible_m += along[e].norm();
+    direction += along[e].normalized();
+    ++found;
+  }
+  if (found == 0) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (found == 2) {
+    const double cos_angle = along[0].normalized().dot(along[1].normalized());
+    const double angle_rad = std::acos(std::clamp(cos_angle, -1.0, 1.0));
+    if (angle_rad > kMaxEdgeAngleRad)
+      return refuse(StereoGate::kEdgeSlope, angle_rad, kMaxEdgeAngleRad);
+  }
+  visible_m /= found;
+  direction.normalize();
+  const double min_visible_m = kMinVisibleOfTypicalWidth * door.typical_width_m;
+  if (visible_m < min_visible_m) return refuse(StereoGate::kExtent, visible_m, min_visible_m);
+  if (visible_m > door.max_width_m) return refuse(StereoGate::kExtent, visible_m, door.max_width_m);
+  // Seen from within about 78 deg of head-on (border_cut.hpp).
+  const Eigen::Vector3d side_middle = 0.5 * (top + bottom);
+  const Eigen::Vector3d normal = direction.cross(u).normalized();
+  const double cos_viewing = std::abs(normal.dot(side_middle.normalized()));
+  if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
+  const double width_m = std::max(door.typical_width_m, visible_m);
+  const Eigen::Vector3d centre = side_middle + 0.5 * width_m * direction;
+  if (centre.z() < options.min_depth_m) {
+    return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
+  }
+  if (centre.z() > options.max_depth_m) {
+    return refuse(StereoGate::kDepth, centre.z(), options.max_depth_m);
+  }
+  Candidate c;
+  c.left = l;
+  c.right = r;
+  const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
+  c.cost = epipolar_term * epipolar_term;
+  c.rectangle = true;
+  c.triangulation.left_camera_position_m = centre + reference_offset_m * centre.normalized();
+  const double half_sigma_m = 0.5 * door.width_sigma_m;
+  c.triangulation.left_camera_covariance_m2 =
+      triangulation->left_camera_covariance_m2 +
+      half_sigma_m * half_sigma_m * direction * direction.transpose();
+  trace.cost = c.cost;
+  return c;
+}
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,169 @@
+// Doors cut along a whole vertical side by the left or right image border
+// (StereoMatchOptions::BorderCutDoor::typical_width_m, side_cut_door.hpp, Doors item 20): the
+// centre from the whole side, the level planes of the edges and the typical width, and the gates.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "support/cut_door.hpp"
+#include "support/projection.hpp"
+#include "vsl/head/stereo_calibration.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+using test::project;
+
+// The simulated head's ideal 640x480 pinholes, parallel, 90 mm apart, 60 deg across.
+class SideCutDoorTest : public ::testing::Test {
+ protected:
+  SideCutDoorTest() {
+    options_.bar_types = {"handle"};
+    options_.max_side_tilt_rad = 0.03;
+    options_.height_range_m = {{"door", 0.5, 2.5}};
+    StereoMatchOptions::BorderCutDoor door = test::cut_door_options({kHeightM}, 0.0);
+    door.typical_width_m = kWidthM;
+    door.width_sigma_m = 0.1;
+    options_.border_cut = {door};
+  }
+
+  struct Pair {
+    Detection left, right;
+  };
+  // A door kWidthM wide and kHeightM tall, its centre at `centre_m` (left camera frame, y down),
+  // its face along `across` (unit, level); in each image the outline of what lies inside the
+  // image, cut by the left (`cut` kLeft) or right border: the corners on the cut side where the
+  // top and bottom edges leave the image (the outer edge of the first or last column).
+  Pair side_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across,
+                     BorderCut cut) const {
+    const Eigen::Vector3d down(0.0, 1.0, 0.0);
+    const double half_w = 0.5 * kWidthM, half_h = 0.5 * kHeightM;
+    const std::array<Eigen::Vector3d, 4> corners{
+        centre_m - half_w * across - half_h * down, centre_m + half_w * across - half_h * down,
+        centre_m + half_w * across + half_h * down, centre_m - half_w * across + half_h * down};
+    Pair p;
+    for (Detection* d : {&p.left, &p.right}) {
+      const bool left = d == &p.left;
+      const Eigen::Isometry3d pose = left ? Eigen::Isometry3d::Identity() : left_T_right_;
+      const head::CameraIntrinsics& camera = left ? calibration_.left : calibration_.right;
+      std::array<Eigen::Vector2d, 4> px;
+      for (int k = 0; k < 4; ++k) px[k] = project(corners[k], camera, pose);
+      // Where the line through a and b crosses column u.
+      const auto at_column = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double u) {
+        return Eigen::Vector2d(u, a.y() + (b.y() - a.y()) * (u - a.x()) / (b.x() - a.x()));
+      };
+      if (cut == BorderCut::kLeft) {
+        EXPECT_LT(px[0].x(), -0.5);
+        EXPECT_GT(px[1].x(), -0.5);
+        px[0] = at_column(px[1], px[0], -0.5);
+        px[3] = at_column(px[2], px[3], -0.5);
+      } else {
+        EXPECT_GT(px[1].x(), 639.5);
+        EXPECT_LT(px[0].x(), 639.5);
+        px[1] = at_column(px[0], px[1], 639.5);
+        px[2] = at_column(px[3], px[2], 639.5);
+      }
+      d->type = "door";
+      d->border_cut = cut;
+      d->corners_px.assign(px.begin(), px.end());
+      const int whole = cut == BorderCut::kLeft ? 1 : 0;
+      d->reference_px = 0.5 * (px[whole] + px[3 - whole]);
+      d->height_px = (px[3 - whole] - px[whole]).norm();
+      d->area_px = 4000.0;
+      d->confidence = 0.8f;
+    }
+    return p;
+  }
+
+  std::vector<StereoPercept> match(const Pair& p, std::vector<StereoPairTrace>* trace = nullptr) {
+    return match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
+                                 left_T_right_, options_, up_, trace);
+  }
+
+  static constexpr double kWidthM = 0.5;
+  static constexpr double kHeightM = 0.716;
+  head::StereoCalibration calibration_ = head::load_stereo_calibration("calib/armar3_sim.yaml");
+  Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
+  Eigen::Vector3d up_{0.0, -1.0, 0.0};
+  StereoMatchOptions options_;
+};
+
+// Turned 0.7 rad about the vertical at the left border, 0.3 m of it in the left image and 0.22 m
+// in the right one; mirrored at the right border (the right image then sees more).
+const Eigen::Vector3d kAtLeft(-1.1, 0.1, 2.0), kAtRight(1.19, 0.1, 2.0);
+const Eigen::Vector3d kAcrossLeft(std::cos(0.7), 0.0, std::sin(0.7));
+const Eigen::Vector3d kAcrossRight(std::cos(0.7), 0.0, -std::sin(0.7));
+
+TEST_F(SideCutDoorTest, CentreFromTheWholeSideAndTheTypicalWidth) {
+  for (const auto& [centre, across, cut] :
+       {std::tuple{kAtLeft, kAcrossLeft, BorderCut::kLeft},
+        std::tuple{kAtRight, kAcrossRight, BorderCut::kRight}}) {
+    const Pair p = side_cut_door(centre, across, cut);
+    std::vector<StereoPairTrace> trace;
+    const std::vector<StereoPercept> percepts = match(p, &trace);
+    ASSERT_EQ(percepts.size(), 1u) << (cut == BorderCut::kLeft ? "left" : "right");
+    EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 2e-3);
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_TRUE(trace[0].assigned);
+    // Along the door's face the centre is known only as the class's spread of widths:
+    // (0.1 / 2)^2 on top of the pixel noise's; along the up direction, the pixel noise alone.
+    const Eigen::Matrix3d& covariance = percepts[0].left_camera_covariance_m2;
+    EXPECT_GT(across.dot(covariance * across), 0.05 * 0.05);
+    EXPECT_LT(up_.dot(covariance * up_), 1e-4);
+  }
+}
+
+TEST_F(SideCutDoorTest, ADoorWiderThanTypicalInViewIsAsWideAsSeen) {
+  // The class's typical width is 0.2 m, less than the 0.3 m the left image shows: the door is
+  // placed 0.3 m wide, its centre 0.1 m short of the true one along the face.
+  options_.border_cut[0].min_width_m = 0.1;
+  options_.border_cut[0].typical_width_m = 0.2;
+  const Pair p = side_cut_door(kAtLeft, kAcrossLeft, BorderCut::kLeft);
+  const std::vector<StereoPercept> percepts = match(p);
+  ASSERT_EQ(percepts.size(), 1u);
+  const Eigen::Vector3d offset = percepts[0].left_camera_position_m - kAtLeft;
+  EXPECT_NEAR(offset.dot(kAcrossLeft), 0.1, 0.01);
+  EXPECT_LT((offset - offset.dot(kAcrossLeft) * kAcrossLeft).norm(), 2e-3);
+}
+
+TEST_F(SideCutDoorTest, GatesRefuse) {
+  const Pair p = side_cut_door(kAtLeft, kAcrossLeft, BorderCut::kLeft);
+  ASSERT_EQ(match(p).size(), 1u);
+  std::vector<StereoPairTrace> trace;
+  // A drawer front: the whole side shorter than any door.
+  options_.height_range_m = {{"door", 0.8, 2.5}};
+  EXPECT_TRUE(match(p, &trace).empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
+  options_.height_range_m = {{"door", 0.5, 2.5}};
+  // Less than half the typical width in view: 0.3 m of a typical 0.7.
+  options_.border_cut[0].typical_width_m = 0.7;
+  EXPECT_TRUE(match(p, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
+  // Off.
+  options_.border_cut[0].typical_width_m = 0.0;
+  EXPECT_TRUE(match(p, &trace).empty());
+  options_.border_cut[0].typical_width_m = kWidthM;
+  // The whole side tilted in the right image (an occluder's contour): its bottom corner 12 px
+  // to the left.
+  Pair tilted = p;
+  tilted.right.corners_px[2].x() -= 12.0;
+  EXPECT_TRUE(match(tilted, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
+  // The bottom edge not parallel to the top one: its end at the border 40 px lower.
+  Pair skewed = p;
+  skewed.left.corners_px[3].y() += 40.0;
+  EXPECT_TRUE(match(skewed, &trace).empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
+  // Cut along different borders: no pair at all.
+  Pair mixed = p;
+  mixed.right.border_cut = BorderCut::kRight;
+  EXPECT_TRUE(match(mixed, &trace).empty());
+  EXPECT_TRUE(trace.empty());
+}
+
+}  // namespace
+}  // namespace vsl::recognition
