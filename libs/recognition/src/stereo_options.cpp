@@ -37,6 +37,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "single_view_max_bars_inside",
                        "pair_max_bars_inside",
                        "max_bar_height_spread",
+                       "max_twin_handle_gap",
                        "border_cut"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
@@ -107,6 +108,12 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     if (!types->is_sequence()) types->fail("expected a list of object types, e.g. [handle]");
     for (std::size_t i = 0; i < types->size(); ++i) {
       out.bar_types.push_back((*types)[i].as_string());
+    }
+  }
+  if (const auto v = section.find("max_twin_handle_gap")) {
+    out.max_twin_handle_gap = v->as_double_in(0.0, 1.0);
+    if (out.max_twin_handle_gap > 0.0 && out.bar_types.empty()) {
+      v->fail("needs bar_types (the handles it looks for)");
     }
   }
   for (const char* key : {"major_extent_range_m", "height_range_m"}) {

@@ -670,6 +670,7 @@ stereo:
   single_view_max_bars_inside: 2
   pair_max_bars_inside: 3
   max_bar_height_spread: 0.35
+  max_twin_handle_gap: 0.12
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
@@ -705,6 +706,7 @@ stereo:
   EXPECT_EQ(o.single_view_max_bars_inside, 2);
   EXPECT_EQ(o.pair_max_bars_inside, 3);
   EXPECT_EQ(o.max_bar_height_spread, 0.35);
+  EXPECT_EQ(o.max_twin_handle_gap, 0.12);
   ASSERT_EQ(o.border_cut.size(), 1u);
   EXPECT_EQ(o.border_cut[0].type, "door");
   EXPECT_EQ(o.border_cut[0].typical_heights_m, (std::vector<double>{0.7, 1.2}));
@@ -770,6 +772,12 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       stereo_error("  max_bar_height_spread: 1.5\n").find("s.yaml:2: stereo.max_bar_height_spread"),
       std::string::npos)
       << stereo_error("  max_bar_height_spread: 1.5\n");
+  EXPECT_NE(stereo_error("  max_twin_handle_gap: 0.1\n")
+                .find("s.yaml:2: stereo.max_twin_handle_gap: needs bar_types"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  bar_types: [handle]\n  max_twin_handle_gap: 2\n")
+                .find("s.yaml:3: stereo.max_twin_handle_gap"),
+            std::string::npos);
   EXPECT_NE(stereo_error("  min_single_view_correlation: 0.7\n").find("needs min_side_correlation"),
             std::string::npos);
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "

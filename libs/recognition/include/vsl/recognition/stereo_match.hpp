@@ -130,6 +130,15 @@ struct StereoMatchOptions {
   // on the outline's near edge, so the count of bars inside misses it. Needs bar_types; 0 turns
   // it off.
   double max_bar_height_spread = 0.0;
+  // Before the match, a whole door outline (of either image, cut by no border) that holds
+  // exactly two bar detections (handles) at one height, at most this fraction of its width apart
+  // (along its top and bottom edges), their middle within the outline's middle 40%, is replaced
+  // by its two halves either side of the line between them: the two doors of a double door that
+  // segmentation merged where the reveal between them is unseen (at a grazing angle it is under
+  // a pixel wide and shows the doors' own colour). A door carries one handle, and a double
+  // door's two stand 3-6 cm either side of the reveal (twin_handle_split.hpp, Doors item 21).
+  // Needs bar_types; 0 turns it off.
+  double max_twin_handle_gap = 0.0;
   // Optional, per class: doors cut by the top or bottom image border along a whole side
   // (Detection::border_cut), placed from the edge they show whole and the class's typical
   // heights. Two detections cut along the same border make a pair when the ends of that edge lie
