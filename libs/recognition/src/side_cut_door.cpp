@@ -1,4 +1,5 @@
-// Doors cut along a whole vertical side by the left or right image border (side_cut_door.hpp).
+// Doors cut along a whole vertical side by the left or right image border (side_cut_door.hpp),
+// in both images or in the one that sees less beyond it.
 //
 // Geometry. Under a left cut the outline shows the door's right side whole, between its real
 // corners 1 (top) and 2 (bottom), and its top and bottom edges up to where they leave the image
@@ -21,7 +22,10 @@
 // truth counts a door at least half in view, and less of a door is mostly a strip segmentation
 // split off) and at most the class's greatest width. The covariance is that of the side's middle
 // triangulated from the two reference points (the pixel noise) plus (sigma_W / 2)^2 d d^T: the
-// hidden part of the door is known only as the class's spread of widths.
+// hidden part of the door is known only as the class's spread of widths. When the image that sees
+// more shows the door whole (cut only in the other), its corners on the outer side are real: the
+// same construction measures the door's width, W = w_v, at least the class's least, and the
+// covariance has no width term.
 #include "side_cut_door.hpp"
 
 #include <algorithm>
@@ -53,11 +57,18 @@ std::optional<Candidate> judge_side_cut_pair(
     trace.limit = limit;
     return std::nullopt;
   };
-  const BorderCut cut = left.detection.border_cut;
-  if ((cut != BorderCut::kLeft && cut != BorderCut::kRight) || right.detection.border_cut != cut ||
-      !(door.typical_width_m > 0.0)) {
-    return refuse(StereoGate::kEpipolar, 0.0, 0.0);
-  }
+  // The border that cuts the door: in both images, or only in the one that sees less beyond
+  // it (the right image's left border, the left image's right border), the other showing the
+  // door whole.
+  const BorderCut left_border = left.detection.border_cut;
+  const BorderCut right_border = right.detection.border_cut;
+  const BorderCut cut = left_border == BorderCut::kNone ? right_border : left_border;
+  const bool seen_whole = left_border != right_border;
+  const bool admissible =
+      seen_whole ? (left_border == BorderCut::kNone && right_border == BorderCut::kLeft) ||
+                       (left_border == BorderCut::kRight && right_border == BorderCut::kNone)
+                 : left_border == BorderCut::kLeft || left_border == BorderCut::kRight;
+  if (!admissible || !(door.typical_width_m > 0.0)) return refuse(StereoGate::kEpipolar, 0.0, 0.0);
   const bool left_cut = cut == BorderCut::kLeft;
   // The whole side's corners (top, bottom) and the cut ones on the same edges; the whole side's
   // index in Triangulator::vertical_sides' order ({0, 3}, then {1, 2}).
@@ -97,8 +108,12 @@ std::optional<Candidate> judge_side_cut_pair(
     return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)), options.max_side_tilt_rad);
   }
   const auto ends = triangulator.rectangle_ends(lc, rc, 1 - whole_side);
+  // The covariance of the whole side's middle (a whole outline's reference point is its centre;
+  // the undistortion's Jacobian varies little over a door's image).
+  const IdealPixel left_middle{0.5 * (lc[whole[0]] + lc[whole[1]]), left.reference.d_ideal_d_raw};
+  const IdealPixel right_middle{0.5 * (rc[whole[0]] + rc[whole[1]]), right.reference.d_ideal_d_raw};
   const auto triangulation =
-      triangulator.triangulate(left.reference, right.reference, options.pixel_sigma_px, 0.0);
+      triangulator.triangulate(left_middle, right_middle, options.pixel_sigma_px, 0.0);
   if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
   Eigen::Vector3d top = (*ends)[static_cast<std::size_t>(2 * whole_side)];
   Eigen::Vector3d bottom = (*ends)[static_cast<std::size_t>(2 * whole_side + 1)];
@@ -157,7 +172,9 @@ std::optional<Candidate> judge_side_cut_pair(
   }
   visible_m /= found;
   direction.normalize();
-  const double min_visible_m = kMinVisibleOfTypicalWidth * door.typical_width_m;
+  // Seen whole in one image, the door is as wide as that image shows it.
+  const double min_visible_m =
+      seen_whole ? door.min_width_m : kMinVisibleOfTypicalWidth * door.typical_width_m;
   if (visible_m < min_visible_m) return refuse(StereoGate::kExtent, visible_m, min_visible_m);
   if (visible_m > door.max_width_m) return refuse(StereoGate::kExtent, visible_m, door.max_width_m);
   // Seen from within about 78 deg of head-on (border_cut.hpp).
@@ -165,7 +182,7 @@ std::optional<Candidate> judge_side_cut_pair(
   const Eigen::Vector3d normal = direction.cross(u).normalized();
   const double cos_viewing = std::abs(normal.dot(side_middle.normalized()));
   if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
-  const double width_m = std::max(door.typical_width_m, visible_m);
+  const double width_m = seen_whole ? visible_m : std::max(door.typical_width_m, visible_m);
   const Eigen::Vector3d centre = side_middle + 0.5 * width_m * direction;
   if (centre.z() < options.min_depth_m) {
     return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
@@ -180,7 +197,7 @@ std::optional<Candidate> judge_side_cut_pair(
   c.cost = epipolar_term * epipolar_term;
   c.rectangle = true;
   c.triangulation.left_camera_position_m = centre + reference_offset_m * centre.normalized();
-  const double half_sigma_m = 0.5 * door.width_sigma_m;
+  const double half_sigma_m = seen_whole ? 0.0 : 0.5 * door.width_sigma_m;
   c.triangulation.left_camera_covariance_m2 =
       triangulation->left_camera_covariance_m2 +
       half_sigma_m * half_sigma_m * direction * direction.transpose();

@@ -357,7 +357,15 @@ std::vector<StereoPercept> match_and_triangulate(
           left[l].border_cut != BorderCut::kNone || right[r].border_cut != BorderCut::kNone;
       const StereoMatchOptions::BorderCutDoor* cut_height =
           cut ? border_cut_door(options, left[l].type) : nullptr;
-      if (cut && (left[l].border_cut != right[r].border_cut || !cut_height ||
+      // A door cut by the left border in the right image only (the right camera sees less
+      // beyond its left border), or by the right border in the left image only, pairs with a
+      // whole outline in the other image (item 20).
+      const bool side_cut_by_one =
+          (left[l].border_cut == BorderCut::kNone && right[r].border_cut == BorderCut::kLeft) ||
+          (left[l].border_cut == BorderCut::kRight && right[r].border_cut == BorderCut::kNone);
+      const bool side_cut = side_cut_by_one || left[l].border_cut == BorderCut::kLeft ||
+                            left[l].border_cut == BorderCut::kRight;
+      if (cut && ((left[l].border_cut != right[r].border_cut && !side_cut_by_one) || !cut_height ||
                   left_corners[l].size() != 4 || right_corners[r].size() != 4 ||
                   !(up_in_left_camera.norm() > 0.0))) {
         continue;
@@ -376,8 +384,7 @@ std::vector<StereoPercept> match_and_triangulate(
         trace.refused_by = bars.gate;
         trace.value = bars.value;
         trace.limit = bars.limit;
-      } else if (left[l].border_cut == BorderCut::kLeft ||
-                 left[l].border_cut == BorderCut::kRight) {
+      } else if (side_cut) {
         c = detail::judge_side_cut_pair(
             l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
             {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,

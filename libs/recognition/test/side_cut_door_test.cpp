@@ -37,8 +37,10 @@ class SideCutDoorTest : public ::testing::Test {
   // its face along `across` (unit, level); in each image the outline of what lies inside the
   // image, cut by the left (`cut` kLeft) or right border: the corners on the cut side where the
   // top and bottom edges leave the image (the outer edge of the first or last column).
-  Pair side_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across,
-                     BorderCut cut) const {
+  // With `whole_in_left`, the left image shows the door whole (a left cut in the right image
+  // only).
+  Pair side_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across, BorderCut cut,
+                     bool whole_in_left = false) const {
     const Eigen::Vector3d down(0.0, 1.0, 0.0);
     const double half_w = 0.5 * kWidthM, half_h = 0.5 * kHeightM;
     const std::array<Eigen::Vector3d, 4> corners{
@@ -51,6 +53,16 @@ class SideCutDoorTest : public ::testing::Test {
       const head::CameraIntrinsics& camera = left ? calibration_.left : calibration_.right;
       std::array<Eigen::Vector2d, 4> px;
       for (int k = 0; k < 4; ++k) px[k] = project(corners[k], camera, pose);
+      d->type = "door";
+      d->area_px = 4000.0;
+      d->confidence = 0.8f;
+      if (left && whole_in_left) {
+        EXPECT_GT(px[0].x(), -0.5);
+        d->corners_px.assign(px.begin(), px.end());
+        d->reference_px = 0.25 * (px[0] + px[1] + px[2] + px[3]);
+        d->height_px = 0.5 * ((px[3] - px[0]).norm() + (px[2] - px[1]).norm());
+        continue;
+      }
       // Where the line through a and b crosses column u.
       const auto at_column = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double u) {
         return Eigen::Vector2d(u, a.y() + (b.y() - a.y()) * (u - a.x()) / (b.x() - a.x()));
@@ -66,14 +78,11 @@ class SideCutDoorTest : public ::testing::Test {
         px[1] = at_column(px[0], px[1], 639.5);
         px[2] = at_column(px[3], px[2], 639.5);
       }
-      d->type = "door";
       d->border_cut = cut;
       d->corners_px.assign(px.begin(), px.end());
       const int whole = cut == BorderCut::kLeft ? 1 : 0;
       d->reference_px = 0.5 * (px[whole] + px[3 - whole]);
       d->height_px = (px[3 - whole] - px[whole]).norm();
-      d->area_px = 4000.0;
-      d->confidence = 0.8f;
     }
     return p;
   }
@@ -114,6 +123,26 @@ TEST_F(SideCutDoorTest, CentreFromTheWholeSideAndTheTypicalWidth) {
     EXPECT_GT(across.dot(covariance * across), 0.05 * 0.05);
     EXPECT_LT(up_.dot(covariance * up_), 1e-4);
   }
+}
+
+TEST_F(SideCutDoorTest, ADoorWholeInTheOtherImageIsAsWideAsThatImageShowsIt) {
+  // 9 px inside the left image's left border, beyond the right image's: the right camera sees
+  // less beyond its left border. The typical width (here 0.3 m, the door is 0.5) plays no part.
+  options_.border_cut[0].typical_width_m = 0.3;
+  const Eigen::Vector3d centre(-0.901, 0.1, 2.111);
+  const Pair p = side_cut_door(centre, kAcrossLeft, BorderCut::kLeft, true);
+  ASSERT_EQ(p.left.border_cut, BorderCut::kNone);
+  const std::vector<StereoPercept> percepts = match(p);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 2e-3);
+  // Measured, not assumed: the pixel noise's covariance alone (along the face mostly the depth's,
+  // 4 cm at 2 m), without the (0.1 / 2)^2 of the class's widths.
+  EXPECT_LT(kAcrossLeft.dot(percepts[0].left_camera_covariance_m2 * kAcrossLeft), 0.05 * 0.05);
+  // The other way round (the left image cut, the right one whole) cannot be: no pair.
+  Pair swapped = p;
+  swapped.left.border_cut = BorderCut::kLeft;
+  swapped.right.border_cut = BorderCut::kNone;
+  EXPECT_TRUE(match(swapped).empty());
 }
 
 TEST_F(SideCutDoorTest, ADoorWiderThanTypicalInViewIsAsWideAsSeen) {

@@ -222,7 +222,11 @@ struct StereoMatchOptions {
     // 78 deg of head-on; at most single_view_max_bars_inside handles inside each outline. The
     // door is as wide as the greater of this and its visible width; the centre lies half that
     // from the side's middle along the edges, its covariance the pixel noise's at the side's
-    // middle plus (width_sigma_m / 2)^2 along the edges. Metres; 0 pairs no such detections.
+    // middle plus (width_sigma_m / 2)^2 along the edges. A detection cut by the left border in
+    // the right image only (the right camera sees less beyond its left border), or by the right
+    // border in the left image only, pairs with a whole outline in the other image the same way,
+    // the door then as wide as that outline shows it (no width term in the covariance). Metres;
+    // 0 pairs no such detections.
     double typical_width_m = 0.0;
     double width_sigma_m = 0.0;  // the spread of the class's widths about it, metres
   };
