@@ -7,6 +7,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/single_view.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/border_cut.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_cut_door.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/corner_cut_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/occluded_corner_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp

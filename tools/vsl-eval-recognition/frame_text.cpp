@@ -189,8 +189,8 @@ bool write_frame_text(const std::string& path, const FrameTextInput& input, Funn
     funnel.add(object.type, recognition::whole_in_both_images(object), stage, stereo);
   }
   // How each percept was made: a pair, one image alone (single_view), a pair cut by the
-  // top, bottom, left or right border (cut_top, cut_bottom, cut_left, cut_right), or a pair
-  // with one corner hidden
+  // top, bottom, left or right border (cut_top, cut_bottom, cut_left, cut_right) or by two in
+  // one image (cut_corner), or a pair with one corner hidden
   // (occluded_corner).
   text << "# percept type left_px right_px distance_m made_by matched_object error_m\n";
   for (std::size_t i = 0; i < result.percepts.size(); ++i) {
@@ -205,6 +205,14 @@ bool write_frame_text(const std::string& path, const FrameTextInput& input, Funn
       if (cut == recognition::BorderCut::kBottom) made_by = "cut_bottom";
       if (cut == recognition::BorderCut::kLeft) made_by = "cut_left";
       if (cut == recognition::BorderCut::kRight) made_by = "cut_right";
+      // A corner cut in the right image (its left border), or in the left image (its right one).
+      const recognition::BorderCut right_cut =
+          result.right_detections[static_cast<std::size_t>(p.right_detection)].border_cut;
+      if (right_cut == recognition::BorderCut::kTopLeft ||
+          right_cut == recognition::BorderCut::kBottomLeft ||
+          cut == recognition::BorderCut::kTopRight || cut == recognition::BorderCut::kBottomRight) {
+        made_by = "cut_corner";
+      }
       for (const recognition::StereoPairTrace& trace : pair_trace) {
         if (trace.occluded_corner && trace.left_detection == p.left_detection &&
             trace.right_detection == p.right_detection) {

@@ -134,6 +134,60 @@ std::optional<BorderCutOutline> border_cut_of(const BlobQuadrilateral& quad, con
   return out;
 }
 
+// The image corner where two borders cut `quad` (fitted with the image's size) along two
+// adjoining sides (Doors item 22): the blob reaches one of the left and right borders and one of
+// the top and bottom ones, its outline's two sides without support (kMinBorderSideSupport) are
+// adjoining, and its corners are renumbered clockwise from the top left so that their shared
+// corner is the one at that image corner (0 top left, 1 top right, 2 bottom right, 3 bottom
+// left). The other two sides are the door's: the one through the opposite (real) corner that
+// leaves the image across the top or bottom border is nearer the image vertical, the other
+// nearer the horizontal. The cut sides' other corners lie within kMaxCutCornerOffBorder of those
+// sides' lengths of their borders and are moved to where the door's sides leave the image; the
+// shared corner becomes the image's corner (the outer edges of its first or last row and
+// column). nullopt otherwise.
+std::optional<BorderCutOutline> corner_cut_of(const BlobQuadrilateral& quad, const Blob& blob,
+                                              int image_cols, int image_rows) {
+  const bool left = blob.u_min == 0, right = blob.u_max == image_cols - 1;
+  const bool top = blob.v_min == 0, bottom = blob.v_max == image_rows - 1;
+  if (left == right || top == bottom) return std::nullopt;
+  int unsupported = 0, first = -1;
+  for (int side = 0; side < 4; ++side) {
+    if (quad.side_support[side] >= kMinBorderSideSupport) continue;
+    ++unsupported;
+    // The first of two adjoining unsupported sides k, k + 1 (mod 4).
+    if (quad.side_support[(side + 1) % 4] < kMinBorderSideSupport) first = side;
+  }
+  if (unsupported != 2 || first < 0) return std::nullopt;
+  BorderCutOutline out;
+  const int image_corner = top ? (left ? 0 : 1) : (right ? 2 : 3);
+  out.cut = top ? (left ? BorderCut::kTopLeft : BorderCut::kTopRight)
+                : (right ? BorderCut::kBottomRight : BorderCut::kBottomLeft);
+  // c[k] = q[(k + shift) % 4] with the shared corner q[first + 1] becoming c[image_corner].
+  const int shift = (first + 1 - image_corner + 4) % 4;
+  auto& c = out.corners;
+  for (int k = 0; k < 4; ++k) c[k] = quad.corners[(k + shift) % 4];
+  // The real corner, and its neighbours on the vertical side (across the top or bottom border)
+  // and on the horizontal edge (across the left or right border).
+  const int real = (image_corner + 2) % 4;
+  // Corners 0-3 and 1-2 are vertical sides; 0-1 and 3-2 horizontal edges.
+  const int on_side = real == 0 ? 3 : real == 1 ? 2 : real == 2 ? 1 : 0;
+  const int on_edge = real == 0 ? 1 : real == 1 ? 0 : real == 2 ? 3 : 2;
+  const Eigen::Vector2d side = c[on_side] - c[real], edge = c[on_edge] - c[real];
+  if (!(std::abs(side.y()) > std::abs(side.x())) || !(std::abs(edge.x()) > std::abs(edge.y()))) {
+    return std::nullopt;
+  }
+  const double row = top ? -0.5 : image_rows - 0.5;
+  const double column = left ? -0.5 : image_cols - 0.5;
+  if (std::abs(c[on_side].y() - row) > kMaxCutCornerOffBorder * side.norm() ||
+      std::abs(c[on_edge].x() - column) > kMaxCutCornerOffBorder * edge.norm()) {
+    return std::nullopt;
+  }
+  c[on_side] = c[real] + side * (row - c[real].y()) / side.y();
+  c[on_edge] = c[real] + edge * (column - c[real].x()) / edge.x();
+  c[image_corner] = Eigen::Vector2d(column, row);
+  return out;
+}
+
 // The area of a convex quadrilateral (corners in order), pixels.
 double outline_area_px(const std::array<Eigen::Vector2d, 4>& c) {
   const Eigen::Vector2d a = c[2] - c[0], b = c[3] - c[1];
@@ -168,11 +222,28 @@ Detection border_cut_detection(const std::string& type, const Blob& blob, int bl
     case BorderCut::kNone:
       detection.reference_px = 0.5 * (c[0] + c[3]);
       break;
+    case BorderCut::kTopLeft:  // the real corner, opposite the image's
+      detection.reference_px = c[2];
+      break;
+    case BorderCut::kTopRight:
+      detection.reference_px = c[3];
+      break;
+    case BorderCut::kBottomRight:
+      detection.reference_px = c[0];
+      break;
+    case BorderCut::kBottomLeft:
+      detection.reference_px = c[1];
+      break;
   }
-  detection.height_px = cut == BorderCut::kLeft ? (c[2] - c[1]).norm()
-                        : cut == BorderCut::kRight
-                            ? (c[3] - c[0]).norm()
-                            : 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
+  // (A left cut, or a corner cut at the left border, shows the right side; a right one the left
+  // side.)
+  const bool right_side =
+      cut == BorderCut::kLeft || cut == BorderCut::kTopLeft || cut == BorderCut::kBottomLeft;
+  const bool left_side =
+      cut == BorderCut::kRight || cut == BorderCut::kTopRight || cut == BorderCut::kBottomRight;
+  detection.height_px = right_side  ? (c[2] - c[1]).norm()
+                        : left_side ? (c[3] - c[0]).norm()
+                                    : 0.5 * ((c[3] - c[0]).norm() + (c[2] - c[1]).norm());
   detection.area_px = blob.area_px;
   detection.major_axis_angle_rad = major_axis_angle_rad(blob);
   detection.major_extent_px = axes.major_extent_px;
@@ -277,9 +348,18 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
         // left alone.
         const bool at_side = blob.u_min < border || blob.u_max >= bgr_image.cols - border;
         const bool at_top_or_bottom = blob.v_min < border || blob.v_max >= bgr_image.rows - border;
-        if (parameters_.detect_border_cut && model_.accepts(colour_d2) &&
-            at_side != at_top_or_bottom) {
-          const auto cut = border_cut_of(*quad, blob, at_side, bgr_image.cols, bgr_image.rows);
+        if (parameters_.detect_border_cut && model_.accepts(colour_d2)) {
+          // At two borders: cut along both at their corner, or along one whole side, the
+          // other border taking only a corner off (the sides' intersection restores it).
+          std::optional<BorderCutOutline> cut =
+              at_side != at_top_or_bottom
+                  ? border_cut_of(*quad, blob, at_side, bgr_image.cols, bgr_image.rows)
+                  : corner_cut_of(*quad, blob, bgr_image.cols, bgr_image.rows);
+          for (const bool vertical : {false, true}) {
+            if (!cut && at_side && at_top_or_bottom) {
+              cut = border_cut_of(*quad, blob, vertical, bgr_image.cols, bgr_image.rows);
+            }
+          }
           if (cut && blob.area_px >= kMinBorderCutFill * outline_area_px(cut->corners)) {
             out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i), *cut, axes,
                                                colour_d2));

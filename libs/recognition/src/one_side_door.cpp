@@ -80,8 +80,11 @@ std::optional<OneSideDoor> place_one_side_door(
   if (!(up_in_own_camera.norm() > 0.0) || door.typical_heights_m.empty()) return std::nullopt;
   const bool swapped = swept == SweptSide::kOuter;
   if (swapped && cut != BorderCut::kNone) return std::nullopt;
-  // An outline cut by the left or right border shows one vertical side only (Doors item 20).
-  if (cut == BorderCut::kLeft || cut == BorderCut::kRight) return std::nullopt;
+  // An outline cut by the left or right border shows one vertical side only (Doors items 20
+  // and 22).
+  if (cut != BorderCut::kNone && cut != BorderCut::kTop && cut != BorderCut::kBottom) {
+    return std::nullopt;
+  }
   const Eigen::Vector3d u = up_in_own_camera.normalized();
   Eigen::Matrix3d k;
   k << own.fx_px, 0.0, own.cx_px, 0.0, own.fy_px, own.cy_px, 0.0, 0.0, 1.0;

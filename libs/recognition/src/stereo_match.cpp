@@ -14,6 +14,7 @@
 #include "bars_on_outline.hpp"
 #include "border_cut.hpp"
 #include "convex_polygon.hpp"
+#include "corner_cut_door.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
 #include "occluded_corner_door.hpp"
@@ -365,8 +366,11 @@ std::vector<StereoPercept> match_and_triangulate(
           (left[l].border_cut == BorderCut::kRight && right[r].border_cut == BorderCut::kNone);
       const bool side_cut = side_cut_by_one || left[l].border_cut == BorderCut::kLeft ||
                             left[l].border_cut == BorderCut::kRight;
-      if (cut && ((left[l].border_cut != right[r].border_cut && !side_cut_by_one) || !cut_height ||
-                  left_corners[l].size() != 4 || right_corners[r].size() != 4 ||
+      // A door cut at an image corner in the image that sees less beyond that side pairs with
+      // one cut by the top or bottom border alone in the other (item 22).
+      const bool corner_cut = detail::is_corner_cut_pair(left[l].border_cut, right[r].border_cut);
+      if (cut && ((left[l].border_cut != right[r].border_cut && !side_cut_by_one && !corner_cut) ||
+                  !cut_height || left_corners[l].size() != 4 || right_corners[r].size() != 4 ||
                   !(up_in_left_camera.norm() > 0.0))) {
         continue;
       }
@@ -384,6 +388,12 @@ std::vector<StereoPercept> match_and_triangulate(
         trace.refused_by = bars.gate;
         trace.value = bars.value;
         trace.limit = bars.limit;
+      } else if (corner_cut) {
+        c = detail::judge_corner_cut_pair(
+            l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
+            {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
+            up_in_left_camera.normalized(), options, *cut_height,
+            reference_depth_offset(options, left[l].type), trace);
       } else if (side_cut) {
         c = detail::judge_side_cut_pair(
             l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},

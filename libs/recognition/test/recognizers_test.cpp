@@ -244,9 +244,9 @@ TEST(Recognizers, DoorsJustBeyondTheModelAreWeakDetections) {
   EXPECT_THROW(detect(model, 0.5 * d2), std::invalid_argument);
 }
 
-TEST(Recognizers, BlobsOnTwoImageBordersAreNotJudged) {
+TEST(Recognizers, BlobsOnThreeImageBordersAreNotJudged) {
   cv::Mat image(200, 200, CV_8UC3, kWallBgr);
-  image(cv::Rect(0, 0, 60, 150)).setTo(kDoorBgr);  // cut by the left and the top border
+  image(cv::Rect(0, 0, 60, 200)).setTo(kDoorBgr);  // cut by the left, top and bottom border
   const std::vector<Blob> blobs{colour_blob(image, kDoorBgr, 5.0, cv::Rect(0, 0, 200, 200))};
   const auto door = load_recognizer("config/recognition/door.yaml");
   std::vector<Detection> out;
@@ -319,6 +319,33 @@ TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   EXPECT_NEAR(cut[2].reference_px.x(), 19.5, 1.0);
   EXPECT_NEAR(cut[2].reference_px.y(), 119.5, 1.0);
   EXPECT_NEAR(cut[2].height_px, 120.0, 1.5);
+}
+
+TEST(Recognizers, DoorsCutAtAnImageCornerAreCornerCutDetections) {
+  // A door panel that the bottom and the left border cut (Doors item 22): its one real corner is
+  // the top right; the corners on the cut sides where its top edge and right side leave the
+  // image, the last the image's corner.
+  cv::Mat image(240, 320, CV_8UC3, kWallBgr);
+  const cv::Scalar door_bgr = kDoorBgr * 0.62;
+  const cv::Rect corner(0, 130, 70, 110);
+  image(corner).setTo(door_bgr);
+  add_noise(image, 23);
+  const std::vector<Blob> blobs{colour_blob(image, door_bgr, 12.0, corner)};
+  EXPECT_TRUE(synthetic_door_detections(image, blobs, false).empty());
+  const std::vector<Detection> out = synthetic_door_detections(image, blobs, true);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].border_cut, BorderCut::kBottomLeft);
+  const std::vector<Eigen::Vector2d>& c = out[0].corners_px;
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_DOUBLE_EQ(c[0].x(), -0.5);  // the top edge at the left border
+  EXPECT_NEAR(c[0].y(), 129.5, 1.0);
+  EXPECT_NEAR(c[1].x(), 69.5, 1.0);  // the real corner
+  EXPECT_NEAR(c[1].y(), 129.5, 1.0);
+  EXPECT_NEAR(c[2].x(), 69.5, 1.0);  // the right side at the bottom border
+  EXPECT_DOUBLE_EQ(c[2].y(), 239.5);
+  EXPECT_EQ(c[3], Eigen::Vector2d(-0.5, 239.5));
+  EXPECT_NEAR((out[0].reference_px - c[1]).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(out[0].height_px, 110.0, 1.5);
 }
 
 TEST(Recognizers, ABorderCutDoorWithASteepTopEdgeIsNumberedFromItsCut) {

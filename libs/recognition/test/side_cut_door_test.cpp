@@ -1,10 +1,12 @@
 // Doors cut along a whole vertical side by the left or right image border
 // (StereoMatchOptions::BorderCutDoor::typical_width_m, side_cut_door.hpp, Doors item 20): the
-// centre from the whole side, the level planes of the edges and the typical width, and the gates.
+// centre from the whole side, the level planes of the edges and the typical width, and the gates;
+// and doors cut at an image corner in one image (corner_cut_door.hpp, Doors item 22).
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "support/cut_door.hpp"
@@ -87,6 +89,49 @@ class SideCutDoorTest : public ::testing::Test {
     return p;
   }
 
+  // The same door with its bottom below the image, near the left border: cut by the bottom
+  // border in the left image, by the bottom and the left border in the right one (Doors item
+  // 22), as DoorRecognizer reports them.
+  Pair corner_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across) const {
+    const Eigen::Vector3d down(0.0, 1.0, 0.0);
+    const double half_w = 0.5 * kWidthM, half_h = 0.5 * kHeightM;
+    const std::array<Eigen::Vector3d, 4> corners{
+        centre_m - half_w * across - half_h * down, centre_m + half_w * across - half_h * down,
+        centre_m + half_w * across + half_h * down, centre_m - half_w * across + half_h * down};
+    const auto at_row = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double v) {
+      return Eigen::Vector2d(a.x() + (b.x() - a.x()) * (v - a.y()) / (b.y() - a.y()), v);
+    };
+    Pair p;
+    for (Detection* d : {&p.left, &p.right}) {
+      const bool left = d == &p.left;
+      const Eigen::Isometry3d pose = left ? Eigen::Isometry3d::Identity() : left_T_right_;
+      const head::CameraIntrinsics& camera = left ? calibration_.left : calibration_.right;
+      std::array<Eigen::Vector2d, 4> px;
+      for (int k = 0; k < 4; ++k) px[k] = project(corners[k], camera, pose);
+      EXPECT_GT(px[2].y(), 479.5);
+      d->type = "door";
+      d->area_px = 4000.0;
+      d->confidence = 0.8f;
+      const Eigen::Vector2d bottom_right = at_row(px[1], px[2], 479.5);
+      if (left) {
+        EXPECT_GT(px[0].x(), -0.5);
+        d->border_cut = BorderCut::kBottom;
+        d->corners_px = {px[0], px[1], bottom_right, at_row(px[0], px[3], 479.5)};
+        d->reference_px = 0.5 * (px[0] + px[1]);
+      } else {
+        EXPECT_LT(px[0].x(), -0.5);
+        const Eigen::Vector2d top_left(
+            -0.5,
+            px[1].y() + (px[0].y() - px[1].y()) * (-0.5 - px[1].x()) / (px[0].x() - px[1].x()));
+        d->border_cut = BorderCut::kBottomLeft;
+        d->corners_px = {top_left, px[1], bottom_right, Eigen::Vector2d(-0.5, 479.5)};
+        d->reference_px = px[1];
+      }
+      d->height_px = (bottom_right - px[1]).norm();
+    }
+    return p;
+  }
+
   std::vector<StereoPercept> match(const Pair& p, std::vector<StereoPairTrace>* trace = nullptr) {
     return match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
                                  left_T_right_, options_, up_, trace);
@@ -143,6 +188,30 @@ TEST_F(SideCutDoorTest, ADoorWholeInTheOtherImageIsAsWideAsThatImageShowsIt) {
   swapped.left.border_cut = BorderCut::kLeft;
   swapped.right.border_cut = BorderCut::kNone;
   EXPECT_TRUE(match(swapped).empty());
+}
+
+TEST_F(SideCutDoorTest, ADoorCutAtACornerInOneImageIsPlacedFromTheOther) {
+  // Its top left corner 9 px inside the left image, beyond the right one's left border; its
+  // bottom below both. The right side from both images, the top edge from the left image, the
+  // height the class's (0.716 m).
+  const Eigen::Vector3d centre(-0.901, 0.8, 2.111);
+  const Pair p = corner_cut_door(centre, kAcrossLeft);
+  std::vector<StereoPairTrace> trace;
+  const std::vector<StereoPercept> percepts = match(p, &trace);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 2e-3);
+  // Along the up direction the class's spread of heights.
+  EXPECT_GT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.06 * 0.06);
+  // The corner cut in the image that sees more beyond that border cannot be: no pair.
+  Pair swapped = p;
+  std::swap(swapped.left.border_cut, swapped.right.border_cut);
+  EXPECT_TRUE(match(swapped, &trace).empty());
+  EXPECT_TRUE(trace.empty());
+  // The edge too short for a door (min_width_m above the door's 0.5 m).
+  options_.border_cut[0].min_width_m = 0.55;
+  EXPECT_TRUE(match(p, &trace).empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
 }
 
 TEST_F(SideCutDoorTest, ADoorWiderThanTypicalInViewIsAsWideAsSeen) {

@@ -8,8 +8,19 @@
 
 namespace vsl::recognition {
 
-// Which image border cuts a detection's outline along a whole side.
-enum class BorderCut { kNone, kTop, kBottom, kLeft, kRight };
+// Which image border cuts a detection's outline along a whole side; the last four: two borders,
+// meeting at that image corner, cut it along two adjoining sides.
+enum class BorderCut {
+  kNone,
+  kTop,
+  kBottom,
+  kLeft,
+  kRight,
+  kTopLeft,
+  kTopRight,
+  kBottomLeft,
+  kBottomRight
+};
 
 struct Detection {
   std::string type;     // object type as in the world model: "door", "handle", ...
@@ -52,6 +63,12 @@ struct Detection {
   // is the length of the vertical side it shows whole and its reference_px that side's middle.
   // The stereo match places it from that side, the edges' level planes and the class's typical
   // width (StereoMatchOptions::BorderCutDoor::typical_width_m).
+  // kTopLeft .. kBottomRight (Doors item 22): two borders cut it, and the outline's corner at
+  // that image corner is the image's; the two corners on the cut sides are where the door's
+  // edge and side leave the image, the opposite corner (the one real corner) is its
+  // reference_px, and its height_px is the visible length of the side through it. The stereo
+  // match pairs it with a detection cut by the top or bottom border alone in the other image
+  // (which sees more beyond the left or right border).
   BorderCut border_cut = BorderCut::kNone;
 };
 
