@@ -11,21 +11,27 @@
 // bottom edge, its left side found in the right image where that plane puts it (one_side_door.hpp),
 // the correlators' set-up included. BM_OccludedCornerDoor: a pair of door outlines whose
 // bottom-left corner an occluder hides in both images, placed from the other three corners
-// (occluded_corner_door.hpp). No main here: the fragments share vsl_recognition_bench's.
+// (occluded_corner_door.hpp). BM_SideCutDoor: a pair of door outlines cut by the left border,
+// placed from their whole side and the typical width (side_cut_door.hpp). BM_TwinHandleSplit: 20
+// door outlines each split between a double door's two handles (twin_handle_split.hpp). No main
+// here: the fragments share vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "../src/side_correlation.hpp"
 #include "../src/single_view.hpp"
+#include "../src/twin_handle_split.hpp"
 #include "support/cut_door.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -238,6 +244,89 @@ void BM_OccludedCornerDoor(benchmark::State& state) {
   state.counters["depth_m"] = depth_m;
 }
 BENCHMARK(BM_OccludedCornerDoor)->Unit(benchmark::kMicrosecond);
+
+void BM_SideCutDoor(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  // A door 0.5 m x 0.716 m turned 0.7 rad at the left border, 2 m ahead, 0.3 m of it in the left
+  // image and 0.22 m in the right one (side_cut_door_test.cpp).
+  const Eigen::Vector3d down(0.0, 1.0, 0.0);
+  const Eigen::Vector3d across(std::cos(0.7), 0.0, std::sin(0.7));
+  const Eigen::Vector3d centre(-1.1, 0.1, 2.0);
+  const std::array<Eigen::Vector3d, 4> corners{
+      centre - 0.25 * across - 0.358 * down, centre + 0.25 * across - 0.358 * down,
+      centre + 0.25 * across + 0.358 * down, centre - 0.25 * across + 0.358 * down};
+  Detection left, right;
+  for (Detection* d : {&left, &right}) {
+    const bool is_left = d == &left;
+    std::array<Eigen::Vector2d, 4> px;
+    for (int k = 0; k < 4; ++k) {
+      px[k] = is_left ? project(corners[k], calibration.left)
+                      : project(left_T_right.inverse() * corners[k], calibration.right);
+    }
+    // Where the top and bottom edges leave the image (column -0.5).
+    for (const auto& [inside, outside] : {std::pair{1, 0}, std::pair{2, 3}}) {
+      const Eigen::Vector2d a = px[inside], b = px[outside];
+      px[outside] = {-0.5, a.y() + (b.y() - a.y()) * (-0.5 - a.x()) / (b.x() - a.x())};
+    }
+    d->type = "door";
+    d->border_cut = BorderCut::kLeft;
+    d->corners_px.assign(px.begin(), px.end());
+    d->reference_px = 0.5 * (px[1] + px[2]);
+    d->height_px = (px[2] - px[1]).norm();
+    d->area_px = 4000.0;
+    d->confidence = 0.9f;
+  }
+  StereoMatchOptions options;
+  options.max_side_tilt_rad = 0.03;
+  options.height_range_m = {{"door", 0.5, 2.5}};
+  StereoMatchOptions::BorderCutDoor door = test::cut_door_options({0.716}, 0.0);
+  door.typical_width_m = 0.5;
+  door.width_sigma_m = 0.1;
+  options.border_cut = {door};
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        {left}, {right}, calibration.left, calibration.right, left_T_right, options, -down);
+    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    benchmark::DoNotOptimize(depth_m);
+  }
+  if (!(depth_m > 0.0)) state.SkipWithError("the side-cut door was not placed");
+  state.counters["depth_m"] = depth_m;
+}
+BENCHMARK(BM_SideCutDoor)->Unit(benchmark::kMicrosecond);
+
+void BM_TwinHandleSplit(benchmark::State& state) {
+  // 20 door outlines (a busy view), each with a double door's two handles, among 40 handles.
+  std::vector<Detection> detections;
+  for (int k = 0; k < 20; ++k) {
+    const double u = 30.0 * k;
+    Detection door;
+    door.type = "door";
+    door.corners_px = {{u, 50.0}, {u + 28.0, 55.0}, {u + 28.0, 245.0}, {u, 250.0}};
+    door.area_px = 5000.0;
+    detections.push_back(door);
+    for (const double du : {12.0, 16.0}) {
+      Detection handle;
+      handle.type = "handle";
+      handle.reference_px = {u + du, 120.0};
+      detections.push_back(handle);
+    }
+  }
+  StereoMatchOptions options;
+  options.bar_types = {"handle"};
+  options.max_twin_handle_gap = 0.15;
+  std::size_t after = 0;
+  for (auto _ : state) {
+    std::vector<Detection> split = detections;
+    detail::split_at_twin_handles(split, options);
+    after = split.size();
+    benchmark::DoNotOptimize(after);
+  }
+  if (after != detections.size() + 20) state.SkipWithError("the outlines were not split");
+}
+BENCHMARK(BM_TwinHandleSplit)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition
