@@ -191,6 +191,23 @@ void BM_OneSideDoor(benchmark::State& state) {
 }
 BENCHMARK(BM_OneSideDoor)->Unit(benchmark::kMicrosecond);
 
+// The benchmark loop of one pair of door detections that the match must place (not a benchmark
+// of a refusal): its depth as a counter.
+void match_one_pair(benchmark::State& state, const Detection& left, const Detection& right,
+                    const head::StereoCalibration& calibration, const StereoMatchOptions& options,
+                    const Eigen::Vector3d& up, const std::string& what) {
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        {left}, {right}, calibration.left, calibration.right, left_T_right, options, up);
+    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    benchmark::DoNotOptimize(depth_m);
+  }
+  if (!(depth_m > 0.0)) state.SkipWithError((what + " was not placed").c_str());
+  state.counters["depth_m"] = depth_m;
+}
+
 void BM_OccludedCornerDoor(benchmark::State& state) {
   const head::StereoCalibration calibration =
       head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
@@ -232,16 +249,7 @@ void BM_OccludedCornerDoor(benchmark::State& state) {
   door.max_width_m = 1.0;
   door.occluded_corner = true;
   options.border_cut = {door};
-  double depth_m = 0.0;
-  for (auto _ : state) {
-    const std::vector<StereoPercept> percepts = match_and_triangulate(
-        {left}, {right}, calibration.left, calibration.right, left_T_right, options, -down);
-    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
-    benchmark::DoNotOptimize(depth_m);
-  }
-  // Not a benchmark of a refusal: the door must be placed.
-  if (!(depth_m > 0.0)) state.SkipWithError("the occluded door was not placed");
-  state.counters["depth_m"] = depth_m;
+  match_one_pair(state, left, right, calibration, options, -down, "the occluded door");
 }
 BENCHMARK(BM_OccludedCornerDoor)->Unit(benchmark::kMicrosecond);
 
@@ -285,15 +293,7 @@ void BM_SideCutDoor(benchmark::State& state) {
   door.typical_width_m = 0.5;
   door.width_sigma_m = 0.1;
   options.border_cut = {door};
-  double depth_m = 0.0;
-  for (auto _ : state) {
-    const std::vector<StereoPercept> percepts = match_and_triangulate(
-        {left}, {right}, calibration.left, calibration.right, left_T_right, options, -down);
-    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
-    benchmark::DoNotOptimize(depth_m);
-  }
-  if (!(depth_m > 0.0)) state.SkipWithError("the side-cut door was not placed");
-  state.counters["depth_m"] = depth_m;
+  match_one_pair(state, left, right, calibration, options, -down, "the side-cut door");
 }
 BENCHMARK(BM_SideCutDoor)->Unit(benchmark::kMicrosecond);
 

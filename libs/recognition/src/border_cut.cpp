@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <vector>
 
 namespace vsl::recognition::detail {
 namespace {
@@ -29,6 +30,52 @@ std::array<int, 2> whole_edge_corners(BorderCut cut) {
 }
 
 }  // namespace
+
+std::optional<double> typical_height_of(double visible_m,
+                                        const StereoMatchOptions::BorderCutDoor& door,
+                                        StereoPairTrace& trace) {
+  const auto refuse = [&](double limit) {
+    trace.refused_by = StereoGate::kHeight;
+    trace.value = visible_m;
+    trace.limit = limit;
+    return std::nullopt;
+  };
+  // At least half the least typical door in view, and no more than the tallest: a door seen
+  // taller than any typical one is of a height the class does not give.
+  const std::vector<double>& typical = door.typical_heights_m;
+  if (typical.empty()) return refuse(0.0);
+  if (visible_m < 0.5 * typical.front()) return refuse(0.5 * typical.front());
+  // The door's height: the least typical height that the visible part does not exceed.
+  const auto height = std::find_if(typical.begin(), typical.end(),
+                                   [&](double h) { return visible_m <= kMaxVisibleOfTypical * h; });
+  if (height == typical.end()) return refuse(kMaxVisibleOfTypical * typical.back());
+  return *height;
+}
+
+std::optional<Candidate> cut_door_candidate(int l, int r, const Eigen::Vector3d& centre_m,
+                                            const Eigen::Matrix3d& covariance_m2,
+                                            double epipolar_px, double max_epipolar_px,
+                                            const StereoMatchOptions& options,
+                                            double reference_offset_m, StereoPairTrace& trace) {
+  const auto refuse = [&](double limit) {
+    trace.refused_by = StereoGate::kDepth;
+    trace.value = centre_m.z();
+    trace.limit = limit;
+    return std::nullopt;
+  };
+  if (centre_m.z() < options.min_depth_m) return refuse(options.min_depth_m);
+  if (centre_m.z() > options.max_depth_m) return refuse(options.max_depth_m);
+  Candidate c;
+  c.left = l;
+  c.right = r;
+  const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
+  c.cost = epipolar_term * epipolar_term;
+  c.rectangle = true;
+  c.triangulation.left_camera_position_m = centre_m + reference_offset_m * centre_m.normalized();
+  c.triangulation.left_camera_covariance_m2 = covariance_m2;
+  trace.cost = c.cost;
+  return c;
+}
 
 std::optional<Candidate> judge_border_cut_pair(
     int l, int r, const BorderCutView& left, const BorderCutView& right,
@@ -138,40 +185,16 @@ std::optional<Candidate> judge_border_cut_pair(
   const Eigen::Vector3d normal = (edge_b - edge_a).cross(u).normalized();
   const double cos_viewing = std::abs(normal.dot((0.5 * (edge_a + edge_b)).normalized()));
   if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
-  // At least half the least typical door in view, and no more than the tallest: a door seen
-  // taller than any typical one is of a height the class does not give.
   const double visible_m =
       0.5 * (((*ends)[0] - (*ends)[1]).dot(u) + ((*ends)[2] - (*ends)[3]).dot(u));
-  if (door.typical_heights_m.empty() || visible_m < 0.5 * door.typical_heights_m.front()) {
-    return refuse(StereoGate::kHeight, visible_m,
-                  door.typical_heights_m.empty() ? 0.0 : 0.5 * door.typical_heights_m.front());
-  }
-  // The door's height: the least typical height that the visible part does not exceed.
-  const auto height = std::find_if(door.typical_heights_m.begin(), door.typical_heights_m.end(),
-                                   [&](double h) { return visible_m <= kMaxVisibleOfTypical * h; });
-  if (height == door.typical_heights_m.end()) {
-    const double max_visible_m = kMaxVisibleOfTypical * door.typical_heights_m.back();
-    return refuse(StereoGate::kHeight, visible_m, max_visible_m);
-  }
+  const std::optional<double> height = typical_height_of(visible_m, door, trace);
+  if (!height) return std::nullopt;
   const Eigen::Vector3d centre = 0.5 * (edge_a + edge_b) + (top_cut ? 0.5 : -0.5) * *height * u;
-  if (centre.z() < options.min_depth_m) {
-    return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
-  }
-  if (centre.z() > options.max_depth_m) {
-    return refuse(StereoGate::kDepth, centre.z(), options.max_depth_m);
-  }
-  Candidate c;
-  c.left = l;
-  c.right = r;
-  const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
-  c.cost = epipolar_term * epipolar_term;
-  c.rectangle = true;
-  c.triangulation.left_camera_position_m = centre + reference_offset_m * centre.normalized();
   const double half_sigma_m = 0.5 * door.height_sigma_m;
-  c.triangulation.left_camera_covariance_m2 =
-      triangulation->left_camera_covariance_m2 + half_sigma_m * half_sigma_m * u * u.transpose();
-  trace.cost = c.cost;
-  return c;
+  return cut_door_candidate(
+      l, r, centre,
+      triangulation->left_camera_covariance_m2 + half_sigma_m * half_sigma_m * u * u.transpose(),
+      epipolar_px, max_epipolar_px, options, reference_offset_m, trace);
 }
 
 }  // namespace vsl::recognition::detail

@@ -34,6 +34,23 @@ struct BorderCutView {
   const IdealPixel& reference;
 };
 
+// The height of a cut door whose visible height is `visible_m` (metres, item 12): the least of
+// door.typical_heights_m that it does not exceed by more than kMaxVisibleOfTypical, for at least
+// half the least; nullopt, with the refusal (StereoGate::kHeight) in `trace`, otherwise.
+std::optional<double> typical_height_of(double visible_m,
+                                        const StereoMatchOptions::BorderCutDoor& door,
+                                        StereoPairTrace& trace);
+
+// The candidate of a cut door's pair placed at `centre_m` (left camera frame, the face's
+// centre) with `covariance_m2`: refused (StereoGate::kDepth, in `trace`) outside the depth
+// range; else its cost the squared epipolar term and its position `reference_offset_m` behind
+// the face along the ray.
+std::optional<Candidate> cut_door_candidate(int l, int r, const Eigen::Vector3d& centre_m,
+                                            const Eigen::Matrix3d& covariance_m2,
+                                            double epipolar_px, double max_epipolar_px,
+                                            const StereoMatchOptions& options,
+                                            double reference_offset_m, StereoPairTrace& trace);
+
 // Judges the pair (left detection `l`, right detection `r`, both cut along the same border) by
 // the gates of StereoMatchOptions::border_cut, recording a refusal in `trace`; the
 // candidate with its centre (left camera frame, `reference_offset_m` behind the face along the

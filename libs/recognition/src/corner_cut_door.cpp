@@ -124,36 +124,14 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
   const double cos_viewing = std::abs(normal.dot(edge_middle.normalized()));
   if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
   // The visible height and the door's (item 12).
-  const double visible_m = (top - bottom).dot(u);
-  if (door.typical_heights_m.empty() || visible_m < 0.5 * door.typical_heights_m.front()) {
-    return refuse(StereoGate::kHeight, visible_m,
-                  door.typical_heights_m.empty() ? 0.0 : 0.5 * door.typical_heights_m.front());
-  }
-  const auto height = std::find_if(door.typical_heights_m.begin(), door.typical_heights_m.end(),
-                                   [&](double h) { return visible_m <= kMaxVisibleOfTypical * h; });
-  if (height == door.typical_heights_m.end()) {
-    return refuse(StereoGate::kHeight, visible_m,
-                  kMaxVisibleOfTypical * door.typical_heights_m.back());
-  }
+  const std::optional<double> height = typical_height_of((top - bottom).dot(u), door, trace);
+  if (!height) return std::nullopt;
   const Eigen::Vector3d centre = edge_middle + (top_cut ? 0.5 : -0.5) * *height * u;
-  if (centre.z() < options.min_depth_m) {
-    return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
-  }
-  if (centre.z() > options.max_depth_m) {
-    return refuse(StereoGate::kDepth, centre.z(), options.max_depth_m);
-  }
-  Candidate c;
-  c.left = l;
-  c.right = r;
-  const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
-  c.cost = epipolar_term * epipolar_term;
-  c.rectangle = true;
-  c.triangulation.left_camera_position_m = centre + reference_offset_m * centre.normalized();
   const double half_sigma_m = 0.5 * door.height_sigma_m;
-  c.triangulation.left_camera_covariance_m2 =
-      triangulation->left_camera_covariance_m2 + half_sigma_m * half_sigma_m * u * u.transpose();
-  trace.cost = c.cost;
-  return c;
+  return cut_door_candidate(
+      l, r, centre,
+      triangulation->left_camera_covariance_m2 + half_sigma_m * half_sigma_m * u * u.transpose(),
+      epipolar_px, max_epipolar_px, options, reference_offset_m, trace);
 }
 
 }  // namespace vsl::recognition::detail

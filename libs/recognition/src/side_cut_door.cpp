@@ -184,25 +184,11 @@ std::optional<Candidate> judge_side_cut_pair(
   if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
   const double width_m = seen_whole ? visible_m : std::max(door.typical_width_m, visible_m);
   const Eigen::Vector3d centre = side_middle + 0.5 * width_m * direction;
-  if (centre.z() < options.min_depth_m) {
-    return refuse(StereoGate::kDepth, centre.z(), options.min_depth_m);
-  }
-  if (centre.z() > options.max_depth_m) {
-    return refuse(StereoGate::kDepth, centre.z(), options.max_depth_m);
-  }
-  Candidate c;
-  c.left = l;
-  c.right = r;
-  const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
-  c.cost = epipolar_term * epipolar_term;
-  c.rectangle = true;
-  c.triangulation.left_camera_position_m = centre + reference_offset_m * centre.normalized();
   const double half_sigma_m = seen_whole ? 0.0 : 0.5 * door.width_sigma_m;
-  c.triangulation.left_camera_covariance_m2 =
-      triangulation->left_camera_covariance_m2 +
-      half_sigma_m * half_sigma_m * direction * direction.transpose();
-  trace.cost = c.cost;
-  return c;
+  return cut_door_candidate(l, r, centre,
+                            triangulation->left_camera_covariance_m2 +
+                                half_sigma_m * half_sigma_m * direction * direction.transpose(),
+                            epipolar_px, max_epipolar_px, options, reference_offset_m, trace);
 }
 
 }  // namespace vsl::recognition::detail

@@ -35,6 +35,15 @@ class SideCutDoorTest : public ::testing::Test {
   struct Pair {
     Detection left, right;
   };
+  // The door's corners clockwise from the top left (left camera frame, y down), its face along
+  // `across` (unit, level).
+  static std::array<Eigen::Vector3d, 4> door_corners(const Eigen::Vector3d& centre_m,
+                                                     const Eigen::Vector3d& across) {
+    const Eigen::Vector3d down(0.0, 1.0, 0.0);
+    const double half_w = 0.5 * kWidthM, half_h = 0.5 * kHeightM;
+    return {centre_m - half_w * across - half_h * down, centre_m + half_w * across - half_h * down,
+            centre_m + half_w * across + half_h * down, centre_m - half_w * across + half_h * down};
+  }
   // A door kWidthM wide and kHeightM tall, its centre at `centre_m` (left camera frame, y down),
   // its face along `across` (unit, level); in each image the outline of what lies inside the
   // image, cut by the left (`cut` kLeft) or right border: the corners on the cut side where the
@@ -43,11 +52,7 @@ class SideCutDoorTest : public ::testing::Test {
   // only).
   Pair side_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across, BorderCut cut,
                      bool whole_in_left = false) const {
-    const Eigen::Vector3d down(0.0, 1.0, 0.0);
-    const double half_w = 0.5 * kWidthM, half_h = 0.5 * kHeightM;
-    const std::array<Eigen::Vector3d, 4> corners{
-        centre_m - half_w * across - half_h * down, centre_m + half_w * across - half_h * down,
-        centre_m + half_w * across + half_h * down, centre_m - half_w * across + half_h * down};
+    const std::array<Eigen::Vector3d, 4> corners = door_corners(centre_m, across);
     Pair p;
     for (Detection* d : {&p.left, &p.right}) {
       const bool left = d == &p.left;
@@ -93,11 +98,7 @@ class SideCutDoorTest : public ::testing::Test {
   // border in the left image, by the bottom and the left border in the right one (Doors item
   // 22), as DoorRecognizer reports them.
   Pair corner_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across) const {
-    const Eigen::Vector3d down(0.0, 1.0, 0.0);
-    const double half_w = 0.5 * kWidthM, half_h = 0.5 * kHeightM;
-    const std::array<Eigen::Vector3d, 4> corners{
-        centre_m - half_w * across - half_h * down, centre_m + half_w * across - half_h * down,
-        centre_m + half_w * across + half_h * down, centre_m - half_w * across + half_h * down};
+    const std::array<Eigen::Vector3d, 4> corners = door_corners(centre_m, across);
     const auto at_row = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double v) {
       return Eigen::Vector2d(a.x() + (b.x() - a.x()) * (v - a.y()) / (b.y() - a.y()), v);
     };
