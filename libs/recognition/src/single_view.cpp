@@ -60,7 +60,7 @@ std::optional<SingleViewDoor> place_single_view_door(
       ends[static_cast<std::size_t>(2 * s + 1)] = *bottom;
     }
     if (options.max_edge_slope_rad > 0.0) {
-      const std::optional<double> slope = Triangulator::edge_slope(ends, up);
+      const std::optional<double> slope = Triangulator::informative_edge_slope(ends, up);
       if (!slope || std::atan(*slope) > options.max_edge_slope_rad) return std::nullopt;
     }
     if (max_width_m > 0.0 && Triangulator::rectangle_width(ends) > max_width_m) {

@@ -173,6 +173,34 @@ std::optional<double> Triangulator::edge_slope(const std::array<Eigen::Vector3d,
   return slope;
 }
 
+std::optional<double> Triangulator::informative_edge_slope(
+    const std::array<Eigen::Vector3d, 4>& ends, const Eigen::Vector3d& up) {
+  if (!(up.norm() > 0.0)) return std::nullopt;
+  const Eigen::Vector3d u = up.normalized();
+  // Of the two edges, the one seen farther from the cameras' height: a side placed at a wrong
+  // depth moves its ends along their rays, so an edge near that height stays nearly level
+  // whatever the depth and tells little, and one far from it slopes most. (Above or below the
+  // eyes, that is the edge the occluders in front of cupboards hide least: a wall cupboard's top,
+  // a base unit's bottom.)
+  std::optional<double> slope;
+  double best_elevation = -1.0;
+  for (const auto& [a, b] : {std::pair{0, 2}, std::pair{1, 3}}) {
+    const Eigen::Vector3d& p = ends[static_cast<std::size_t>(a)];
+    const Eigen::Vector3d& q = ends[static_cast<std::size_t>(b)];
+    const Eigen::Vector3d edge = q - p;
+    const double rise = std::abs(edge.dot(u));
+    const double run = (edge - edge.dot(u) * u).norm();
+    if (!(run > 0.0) || !(p.norm() > 0.0) || !(q.norm() > 0.0)) continue;
+    const double elevation =
+        std::min(std::abs(p.normalized().dot(u)), std::abs(q.normalized().dot(u)));
+    if (elevation > best_elevation) {
+      best_elevation = elevation;
+      slope = rise / run;
+    }
+  }
+  return slope;
+}
+
 std::optional<Eigen::Vector3d> Triangulator::rectangle_centre_from_one_side(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
     const Eigen::Vector3d& up, int good_side, int other_side_image) const {

@@ -76,6 +76,14 @@ class Triangulator {
   // nullopt when an edge is vertical or `up` is zero.
   static std::optional<double> edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
                                           const Eigen::Vector3d& up_in_left_camera);
+  // The slope of the edge seen farther above or below the cameras (the larger least elevation
+  // of its two ends' rays): the edge that tells whether the sides' depths agree. A base unit's
+  // top edge in the image is the worktop's front lip, which hides a strip of the door that is
+  // wider at the far side when seen at a grazing angle, so the outline's top corners are not on
+  // one level line of the door; its bottom edge, farther below the eyes, is. nullopt when both
+  // edges are vertical or `up` is zero.
+  static std::optional<double> informative_edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
+                                                      const Eigen::Vector3d& up_in_left_camera);
   // The corner indices of the two sides nearer the image vertical, in the order rectangle_ends
   // takes them: {0, 3} and {1, 2}, or {0, 1} and {3, 2}.
   static std::array<std::array<int, 2>, 2> vertical_sides(

@@ -5,6 +5,7 @@
 
 #include <Eigen/Cholesky>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -193,6 +194,45 @@ TEST_F(TriangulationTest, CovarianceGrowsWithTheSquareOfTheDepth) {
                 1e-15);
     EXPECT_GT(s.left_camera_covariance_m2.determinant(), 0.0);
   }
+}
+
+}  // namespace
+}  // namespace vsl::recognition
+
+namespace vsl::recognition {
+namespace {
+
+// The sides' ends of a door 0.5 m wide (left camera frame, y down, up = -y), in the order of
+// Triangulator::rectangle_ends: the left side's top and bottom, then the right side's.
+std::array<Eigen::Vector3d, 4> door_ends(double top_y, double bottom_y) {
+  return {Eigen::Vector3d(-0.25, top_y, 2.0), Eigen::Vector3d(-0.25, bottom_y, 2.0),
+          Eigen::Vector3d(0.25, top_y, 2.0), Eigen::Vector3d(0.25, bottom_y, 2.0)};
+}
+
+TEST(InformativeEdgeSlope, TheEdgeSeenFarthestFromTheCamerasHeightIsJudged) {
+  const Eigen::Vector3d up(0.0, -1.0, 0.0);
+  // A base unit's door seen from above: its top edge near the eyes' height (0.05 m below), its
+  // bottom 0.8 m below. Its right side placed 10% too far along its rays: both ends move along
+  // them, the bottom one 8 cm down, the top one only 5 mm.
+  std::array<Eigen::Vector3d, 4> ends = door_ends(0.05, 0.8);
+  ends[2] *= 1.1;
+  ends[3] *= 1.1;
+  const double bottom_slope = 0.08 / (ends[3] - ends[1]).norm();
+  EXPECT_NEAR(*detail::Triangulator::informative_edge_slope(ends, up), bottom_slope, 0.01);
+  // edge_slope takes the steeper edge, which is the same one here.
+  EXPECT_NEAR(*detail::Triangulator::edge_slope(ends, up), bottom_slope, 0.01);
+  // The top edge is the worktop's lip, 6 cm lower at the far side in the image: that edge
+  // slopes, the bottom one is level; the door's sides agree.
+  std::array<Eigen::Vector3d, 4> lipped = door_ends(0.05, 0.8);
+  lipped[2].y() += 0.06;
+  EXPECT_NEAR(*detail::Triangulator::informative_edge_slope(lipped, up), 0.0, 1e-9);
+  EXPECT_GT(*detail::Triangulator::edge_slope(lipped, up), 0.1);
+  // A wall cupboard's door above the eyes: its top edge tells.
+  std::array<Eigen::Vector3d, 4> wall = door_ends(-0.8, -0.05);
+  wall[3].y() += 0.06;  // its bottom edge, near the eyes, off
+  EXPECT_NEAR(*detail::Triangulator::informative_edge_slope(wall, up), 0.0, 1e-9);
+  EXPECT_FALSE(
+      detail::Triangulator::informative_edge_slope(wall, Eigen::Vector3d::Zero()).has_value());
 }
 
 }  // namespace
