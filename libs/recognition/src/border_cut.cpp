@@ -90,7 +90,7 @@ std::optional<Candidate> judge_border_cut_pair(
     return std::nullopt;
   };
   const BorderCut cut = left.detection.border_cut;
-  if (cut == BorderCut::kNone || right.detection.border_cut != cut) {
+  if ((cut != BorderCut::kTop && cut != BorderCut::kBottom) || right.detection.border_cut != cut) {
     return refuse(StereoGate::kEpipolar, 0.0, 0.0);
   }
   // Position: the whole edge's two corners on each other's epipolar lines (a strip of shadow

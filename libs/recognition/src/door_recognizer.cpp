@@ -169,9 +169,10 @@ std::optional<BorderCutOutline> corner_cut_of(const BlobQuadrilateral& quad, con
   // The real corner, and its neighbours on the vertical side (across the top or bottom border)
   // and on the horizontal edge (across the left or right border).
   const int real = (image_corner + 2) % 4;
-  // Corners 0-3 and 1-2 are vertical sides; 0-1 and 3-2 horizontal edges.
-  const int on_side = real == 0 ? 3 : real == 1 ? 2 : real == 2 ? 1 : 0;
-  const int on_edge = real == 0 ? 1 : real == 1 ? 0 : real == 2 ? 3 : 2;
+  // Corners 0-3 and 1-2 are vertical sides, 0-1 and 3-2 horizontal edges: the real corner's
+  // neighbour on its side is 3 - real, on its edge real ^ 1.
+  const int on_side = 3 - real;
+  const int on_edge = real ^ 1;
   const Eigen::Vector2d side = c[on_side] - c[real], edge = c[on_edge] - c[real];
   if (!(std::abs(side.y()) > std::abs(side.x())) || !(std::abs(edge.x()) > std::abs(edge.y()))) {
     return std::nullopt;

@@ -369,9 +369,15 @@ std::vector<StereoPercept> match_and_triangulate(
       // A door cut at an image corner in the image that sees less beyond that side pairs with
       // one cut by the top or bottom border alone in the other (item 22).
       const bool corner_cut = detail::is_corner_cut_pair(left[l].border_cut, right[r].border_cut);
-      if (cut && ((left[l].border_cut != right[r].border_cut && !side_cut_by_one && !corner_cut) ||
-                  !cut_height || left_corners[l].size() != 4 || right_corners[r].size() != 4 ||
-                  !(up_in_left_camera.norm() > 0.0))) {
+      // Cut along the same border in both images (at the same image corner: no judge takes it),
+      // or one of the two mixed cases above.
+      const BorderCut same =
+          left[l].border_cut == right[r].border_cut ? left[l].border_cut : BorderCut::kNone;
+      const bool judged = same == BorderCut::kTop || same == BorderCut::kBottom ||
+                          same == BorderCut::kLeft || same == BorderCut::kRight ||
+                          side_cut_by_one || corner_cut;
+      if (cut && (!judged || !cut_height || left_corners[l].size() != 4 ||
+                  right_corners[r].size() != 4 || !(up_in_left_camera.norm() > 0.0))) {
         continue;
       }
       StereoPairTrace trace;

@@ -208,6 +208,11 @@ TEST_F(SideCutDoorTest, ADoorCutAtACornerInOneImageIsPlacedFromTheOther) {
   std::swap(swapped.left.border_cut, swapped.right.border_cut);
   EXPECT_TRUE(match(swapped, &trace).empty());
   EXPECT_TRUE(trace.empty());
+  // Cut at the same corner in both images: neither shows the edge whole; no pair either.
+  Pair same = p;
+  same.left.border_cut = BorderCut::kBottomLeft;
+  EXPECT_TRUE(match(same, &trace).empty());
+  EXPECT_TRUE(trace.empty());
   // The edge too short for a door (min_width_m above the door's 0.5 m).
   options_.border_cut[0].min_width_m = 0.55;
   EXPECT_TRUE(match(p, &trace).empty());
