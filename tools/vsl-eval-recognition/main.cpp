@@ -346,7 +346,6 @@ int main(int argc, char** argv) {
           tools::render_view(renderer, head, view, (options.seed << 32) + k);
       std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
       recognition::mark_ground_truth_visible(truth, truth_options);
-      if (std::getenv("VSL_DBG")) std::fprintf(stderr, "DBGFRAME %llu\n", static_cast<unsigned long long>(k));
       const auto start = std::chrono::steady_clock::now();
       const recognition::FrameResult result =
           recognizer.recognize(frame.left.image, frame.right.image, view.joints);

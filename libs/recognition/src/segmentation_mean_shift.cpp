@@ -19,16 +19,19 @@ Feature5 scaled_feature(const Eigen::Vector2d& centroid_px, const Eigen::Vector3
 
 namespace {
 
-// Features bucketed by the integer cell of their colour part (cell size 1 = one bandwidth), in
-// compressed rows: cell c holds order[start[c] .. start[c + 1]).
-class ColourGrid {
+// Features bucketed by the integer cell of their spatial part (cell size 1 = one spatial
+// bandwidth), in compressed rows: cell c holds order[start[c] .. start[c + 1]). Spatial, not
+// colour, cells: a kitchen's fronts are one colour all over the image, so a colour cell holds
+// most of the image's regions, while the regions within one bandwidth of a point are a few
+// per cent of them.
+class SpatialGrid {
  public:
-  explicit ColourGrid(const std::vector<Feature5>& features) {
+  explicit SpatialGrid(const std::vector<Feature5>& features) {
     if (features.empty()) return;
-    lo_ = features.front().tail<3>().array().floor().cast<int>();
-    Eigen::Array3i hi = lo_;
+    lo_ = features.front().head<2>().array().floor().cast<int>();
+    Eigen::Array2i hi = lo_;
     for (const Feature5& f : features) {
-      const Eigen::Array3i cell = f.tail<3>().array().floor().cast<int>();
+      const Eigen::Array2i cell = f.head<2>().array().floor().cast<int>();
       lo_ = lo_.min(cell);
       hi = hi.max(cell);
     }
@@ -36,7 +39,7 @@ class ColourGrid {
     std::vector<int> cell_of(features.size());
     start_.assign(static_cast<std::size_t>(size_.prod()) + 1, 0);
     for (std::size_t i = 0; i < features.size(); ++i) {
-      cell_of[i] = index(features[i].tail<3>().array().floor().cast<int>() - lo_);
+      cell_of[i] = index(features[i].head<2>().array().floor().cast<int>() - lo_);
       ++start_[cell_of[i] + 1];
     }
     for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
@@ -46,34 +49,28 @@ class ColourGrid {
       order_[fill[cell_of[i]]++] = static_cast<int>(i);
   }
 
-  // Calls fn(i) for every feature in the 27 cells around the colour of y.
+  // Calls fn(i) for every feature in the 9 cells around the position of y.
   template <typename Fn>
   void for_each_near(const Feature5& y, Fn&& fn) const {
     if (order_.empty()) return;
-    const Eigen::Array3i centre = y.tail<3>().array().floor().cast<int>() - lo_;
-    for (int dr = -1; dr <= 1; ++dr) {
-      const int r = centre(0) + dr;
-      if (r < 0 || r >= size_(0)) continue;
-      for (int dg = -1; dg <= 1; ++dg) {
-        const int g = centre(1) + dg;
-        if (g < 0 || g >= size_(1)) continue;
-        for (int db = -1; db <= 1; ++db) {
-          const int b = centre(2) + db;
-          if (b < 0 || b >= size_(2)) continue;
-          const int c = index(Eigen::Array3i(r, g, b));
-          for (int k = start_[c]; k < start_[c + 1]; ++k) fn(order_[k]);
-        }
+    const Eigen::Array2i centre = y.head<2>().array().floor().cast<int>() - lo_;
+    for (int du = -1; du <= 1; ++du) {
+      const int u = centre(0) + du;
+      if (u < 0 || u >= size_(0)) continue;
+      for (int dv = -1; dv <= 1; ++dv) {
+        const int v = centre(1) + dv;
+        if (v < 0 || v >= size_(1)) continue;
+        const int c = index(Eigen::Array2i(u, v));
+        for (int k = start_[c]; k < start_[c + 1]; ++k) fn(order_[k]);
       }
     }
   }
 
  private:
-  int index(const Eigen::Array3i& cell) const {
-    return (cell(0) * size_(1) + cell(1)) * size_(2) + cell(2);
-  }
+  int index(const Eigen::Array2i& cell) const { return cell(0) * size_(1) + cell(1); }
 
-  Eigen::Array3i lo_ = Eigen::Array3i::Zero();
-  Eigen::Array3i size_ = Eigen::Array3i::Zero();
+  Eigen::Array2i lo_ = Eigen::Array2i::Zero();
+  Eigen::Array2i size_ = Eigen::Array2i::Zero();
   std::vector<int> start_;
   std::vector<int> order_;
 };
@@ -82,7 +79,7 @@ class ColourGrid {
 
 std::vector<Feature5> mean_shift_modes(const std::vector<Feature5>& scaled_features,
                                        const std::vector<double>& weights, int max_iterations) {
-  const ColourGrid grid(scaled_features);
+  const SpatialGrid grid(scaled_features);
   std::vector<Feature5> modes(scaled_features.size());
   for (std::size_t i = 0; i < scaled_features.size(); ++i) {
     Feature5 y = scaled_features[i];
