@@ -20,12 +20,12 @@ struct SegmentationOptions {
   // max_neighbour_difference_rgb of the neighbour it is reached from (max over
   // channels, colours in [0, 1]), it is not on a thin line (below), the
   // region's colour ellipsoid volume stays below max_colour_volume_rgb3 (V_max)
-  // and its size at most max_region_px (S_max). The step, 0.045 (11.5 grey
-  // levels): at 0.06 a region seeded on the worktop's dark lip crept over the
+  // and its size at most max_region_px (S_max). The step, 0.045 (11 grey
+  // levels, floored): at 0.06 a region seeded on the worktop's dark lip crept over the
   // blended rows below it into the doors and filled S_max with their tops, a
   // mix of grey and blue whose mode joins neither, and the doors lost their top
-  // strip (kitchen 315 -> 330 true door percepts, galley 239 -> 247, the L 312
-  // -> 311; docs/recognition.md, doors item 24).
+  // strip (kitchen 315 -> 330 true door percepts, galley 239 -> 243, the L 312
+  // -> 310, with the class models retrained; docs/recognition.md, doors item 24).
   double max_neighbour_difference_rgb = 0.045;
   // Thin-line barrier, computed once per image: a pixel (or a pair of pixels)
   // whose brightness stands out from both neighbours across it by at least
