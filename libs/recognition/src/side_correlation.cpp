@@ -206,7 +206,6 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
     inverse_z[i] = 1.0 / a_z[i];
   }
   const bool constant_z = c_right_.z() == 0.0;
-  const int max_x0 = right_grey_.cols - 1, max_y0 = right_grey_.rows - 1;
   for (int k = 0; k < steps; ++k) {
     const double lambda = lambda_min + k * step;
     const double cx = lambda * c_right_.x(), cy = lambda * c_right_.y();
@@ -226,17 +225,11 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
         x = raw.x();
         y = raw.y();
       }
-      // Bilinear, as sample() (inlined: the bounds test on the integer corner).
-      if (!(x >= 0.0 && y >= 0.0 && x < max_x0 && y < max_y0)) {
+      double value = 0.0;
+      if (!sample(right_grey_, x, y, value)) {
         inside = false;
         break;
       }
-      const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-      const double fx = x - x0, fy = y - y0;
-      const unsigned char* row0 = right_grey_.ptr<unsigned char>(y0) + x0;
-      const unsigned char* row1 = row0 + right_grey_.step[0];
-      const double value = (1.0 - fy) * ((1.0 - fx) * row0[0] + fx * row0[1]) +
-                           fy * ((1.0 - fx) * row1[0] + fx * row1[1]);
       right_values[i] = value;
       right_mean += value;
     }
