@@ -12,6 +12,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/occluded_corner_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/twin_handle_split.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/cut_bar.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pair.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_assignment.cpp
@@ -21,6 +22,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/stereo_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/cut_bar_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/twin_handle_split_test.cpp

@@ -13,7 +13,9 @@
 // bottom-left corner an occluder hides in both images, placed from the other three corners
 // (occluded_corner_door.hpp). BM_SideCutDoor: a pair of door outlines cut by the left border,
 // placed from their whole side and the typical width (side_cut_door.hpp). BM_TwinHandleSplit: 20
-// door outlines each split between a double door's two handles (twin_handle_split.hpp). No main
+// door outlines each split between a double door's two handles (twin_handle_split.hpp).
+// BM_CutBarPair: a handle cut by the top border in both images, placed from its own end and the
+// class's typical length (cut_bar.hpp). No main
 // here: the fragments share vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
@@ -327,6 +329,37 @@ void BM_TwinHandleSplit(benchmark::State& state) {
   if (after != detections.size() + 20) state.SkipWithError("the outlines were not split");
 }
 BENCHMARK(BM_TwinHandleSplit)->Unit(benchmark::kMicrosecond);
+
+void BM_CutBarPair(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  // A vertical handle 16 cm long, 2 m ahead, its upper 40% beyond the top border of both images
+  // (cut_bar_test.cpp).
+  const Eigen::Vector3d bottom(0.2, 0.10, 2.0), cut(0.2, 0.004, 2.0);
+  Detection left, right;
+  for (Detection* d : {&left, &right}) {
+    const bool is_left = d == &left;
+    const Eigen::Vector2d a = is_left ? project(bottom, calibration.left)
+                                      : project(left_T_right.inverse() * bottom, calibration.right);
+    const Eigen::Vector2d b = is_left ? project(cut, calibration.left)
+                                      : project(left_T_right.inverse() * cut, calibration.right);
+    d->type = "handle";
+    d->border_cut = BorderCut::kTop;
+    d->reference_px = 0.5 * (a + b);
+    d->major_axis_angle_rad = std::atan2(std::abs(b.y() - a.y()), b.x() - a.x());
+    d->major_extent_px = (b - a).norm();
+    d->minor_extent_px = 4.0;
+    d->area_px = 4.0 * d->major_extent_px;
+    d->confidence = 0.9f;
+  }
+  StereoMatchOptions options;
+  options.bar_types = {"handle"};
+  options.cut_bars = {{"handle", 0.16, 0.03}};
+  match_one_pair(state, left, right, calibration, options, Eigen::Vector3d(0.0, -1.0, 0.0),
+                 "the cut handle");
+}
+BENCHMARK(BM_CutBarPair)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition

@@ -44,7 +44,8 @@ double ideal_corner_response(int block_size) {
 
 CornerVerification verify_handle_corners(const cv::Mat& bgr_image, const Blob& blob,
                                          const BlobAxes& axes,
-                                         const CornerVerificationParameters& parameters) {
+                                         const CornerVerificationParameters& parameters,
+                                         int cut_end) {
   if (bgr_image.type() != CV_8UC3) {
     throw std::invalid_argument("verify_handle_corners: the image must be CV_8UC3 (BGR)");
   }
@@ -164,11 +165,14 @@ CornerVerification verify_handle_corners(const cv::Mat& bgr_image, const Blob& b
     out.end_fraction[0] = end_low / ideal;
     out.end_fraction[1] = end_high / ideal;
   }
-  const double weaker_end = std::min(end_low, end_high);
+  // A cut end is where the border crosses the bar, no corner of it.
+  const double weaker_end = cut_end == 0   ? end_high
+                            : cut_end == 1 ? end_low
+                                           : std::min(end_low, end_high);
   out.side_fraction = weaker_end > 0.0 ? side_median / weaker_end : 1.0;
   out.accepted = out.contrast_grey >= parameters.min_contrast_grey &&
-                 out.end_fraction[0] >= parameters.min_end_corner_fraction &&
-                 out.end_fraction[1] >= parameters.min_end_corner_fraction &&
+                 (cut_end == 0 || out.end_fraction[0] >= parameters.min_end_corner_fraction) &&
+                 (cut_end == 1 || out.end_fraction[1] >= parameters.min_end_corner_fraction) &&
                  out.side_fraction <= parameters.max_side_corner_fraction;
   return out;
 }

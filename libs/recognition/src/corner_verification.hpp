@@ -17,9 +17,12 @@ struct CornerVerification {
 
 // Works on the blob's bounding box plus a margin only (the grey conversion and the
 // cv::cornerMinEigenVal response of that region of interest), so it costs about as much as the
-// blob is large. `axes` = blob_axes(blob); `bgr_image` CV_8UC3.
+// blob is large. `axes` = blob_axes(blob); `bgr_image` CV_8UC3. `cut_end` 0 or 1: the image
+// border cuts the bar at that end (0 the a_min end, 1 the a_max one): it needs no corner, and the
+// sides are compared with the other end's response; -1: both ends are the bar's.
 CornerVerification verify_handle_corners(const cv::Mat& bgr_image, const Blob& blob,
                                          const BlobAxes& axes,
-                                         const CornerVerificationParameters& parameters);
+                                         const CornerVerificationParameters& parameters,
+                                         int cut_end = -1);
 
 }  // namespace vsl::recognition

@@ -3,6 +3,10 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -42,6 +46,41 @@ CornerVerificationParameters corner_parameters_from(const config::Node& section)
   return out;
 }
 
+// The end of a bar blob that one image border cuts (HandleRecognizerParameters::detect_border_cut):
+// the border (the only one the blob reaches within `border` px) and which end of the major axis
+// lies at it (0 the a_min end, 1 the a_max one). The axis crosses that border within 60 deg of
+// square (a bar along the border is cut along its side, and its ends say nothing), and the other
+// end lies inside the image, `border` px or more from it. nullopt otherwise.
+struct CutBarEnd {
+  BorderCut border = BorderCut::kNone;
+  int end = -1;
+};
+
+std::optional<CutBarEnd> cut_bar_end(const Blob& blob, const BlobAxes& axes, int border, int cols,
+                                     int rows) {
+  const bool left = blob.u_min < border, right = blob.u_max >= cols - border;
+  const bool top = blob.v_min < border, bottom = blob.v_max >= rows - border;
+  if (left + right + top + bottom != 1) return std::nullopt;
+  const Eigen::Vector2d& e1 = blob.major_axis;
+  const int axis = left || right ? 0 : 1;                 // the image coordinate across the border
+  if (!(std::abs(e1(axis)) >= 0.5)) return std::nullopt;  // cos 60 deg
+  const std::array<Eigen::Vector2d, 2> ends = {blob.centroid_px + axes.a_min_px * e1,
+                                               blob.centroid_px + axes.a_max_px * e1};
+  // Towards the border: the end of least u (v) at the left (top) border, of greatest otherwise.
+  const bool first_border = left || top;
+  const int cut = (ends[0](axis) < ends[1](axis)) == first_border ? 0 : 1;
+  const double limit = axis == 0 ? cols : rows;
+  const double inside = first_border ? ends[1 - cut](axis) : limit - 1 - ends[1 - cut](axis);
+  if (!(inside >= border)) return std::nullopt;
+  CutBarEnd out;
+  out.border = left    ? BorderCut::kLeft
+               : right ? BorderCut::kRight
+               : top   ? BorderCut::kTop
+                       : BorderCut::kBottom;
+  out.end = cut;
+  return out;
+}
+
 }  // namespace
 
 HandleRecognizerParameters handle_parameters_from(const config::Node& section) {
@@ -49,7 +88,7 @@ HandleRecognizerParameters handle_parameters_from(const config::Node& section) {
   if (section.is_null()) return out;
   section.expect_map();
   section.expect_keys({"ideal_colour_rgb", "min_blob_px", "max_blob_px", "min_border_distance_px",
-                       "verify_corners", "corner_verification"});
+                       "verify_corners", "corner_verification", "detect_border_cut"});
   if (const auto colour = section.find("ideal_colour_rgb")) {
     out.ideal_colour_rgb = config::as_vector3(*colour);
     if (out.ideal_colour_rgb.minCoeff() < 0.0 || out.ideal_colour_rgb.maxCoeff() > 1.0) {
@@ -66,6 +105,7 @@ HandleRecognizerParameters handle_parameters_from(const config::Node& section) {
   }
   if (const auto v = section.find("verify_corners")) out.verify_corners = v->as_bool();
   if (const auto v = section.find("corner_verification")) out.corners = corner_parameters_from(*v);
+  if (const auto v = section.find("detect_border_cut")) out.detect_border_cut = v->as_bool();
   return out;
 }
 
@@ -85,6 +125,7 @@ void write_handle_parameters(std::ostream& out, const HandleRecognizerParameters
       << indent << "  min_end_corner_fraction: " << exact_number(c.min_end_corner_fraction) << "\n"
       << indent << "  max_side_corner_fraction: " << exact_number(c.max_side_corner_fraction)
       << "\n";
+  if (parameters.detect_border_cut) out << indent << "detect_border_cut: true\n";
 }
 
 HandleRecognizer::HandleRecognizer(GaussianClassModel model, HandleRecognizerParameters parameters)
@@ -107,16 +148,22 @@ void HandleRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blo
         blob.area_px > parameters_.max_blob_px) {
       continue;
     }
-    if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
-        blob.v_max >= bgr_image.rows - border) {
-      continue;
-    }
+    const bool at_border = blob.u_min < border || blob.v_min < border ||
+                           blob.u_max >= bgr_image.cols - border ||
+                           blob.v_max >= bgr_image.rows - border;
+    if (at_border && !parameters_.detect_border_cut) continue;
     // The cheap test first: most blobs fail the class model and never reach the image.
     const double d2 = model_.mahalanobis2(handle_descriptor(blob, parameters_.ideal_colour_rgb));
     if (!model_.accepts(d2)) continue;
     const BlobAxes axes = blob_axes(blob);
+    std::optional<CutBarEnd> cut;
+    if (at_border) {
+      cut = cut_bar_end(blob, axes, std::max(border, 1), bgr_image.cols, bgr_image.rows);
+      if (!cut) continue;
+    }
     if (parameters_.verify_corners &&
-        !verify_handle_corners(bgr_image, blob, axes, parameters_.corners).accepted) {
+        !verify_handle_corners(bgr_image, blob, axes, parameters_.corners, cut ? cut->end : -1)
+             .accepted) {
       continue;
     }
     Detection detection;
@@ -134,6 +181,7 @@ void HandleRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blo
     detection.minor_extent_px = axes.minor_extent_px;
     detection.mahalanobis2 = d2;
     detection.confidence = static_cast<float>(model_.confidence(d2));
+    if (cut) detection.border_cut = cut->border;
     out.push_back(std::move(detection));
   }
 }

@@ -15,6 +15,7 @@
 #include "border_cut.hpp"
 #include "convex_polygon.hpp"
 #include "corner_cut_door.hpp"
+#include "cut_bar.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
 #include "occluded_corner_door.hpp"
@@ -88,6 +89,14 @@ const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOption
 double class_max_width_m(const StereoMatchOptions& options, const std::string& type) {
   const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, type);
   return door ? door->max_width_m : 0.0;
+}
+
+const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
+                                             const std::string& type) {
+  for (const StereoMatchOptions::CutBar& bar : options.cut_bars) {
+    if (bar.type == type) return &bar;
+  }
+  return nullptr;
 }
 
 const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
@@ -165,6 +174,11 @@ std::vector<StereoPercept> match_and_triangulate(
                : detail::judge_bars_on_outline(right, dr, max_bars_inside, options);
   };
   const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
+  // Set while judging two views of a bar that the border cuts in one (cut_bar_pair) or, by the
+  // same border, in both (cut_bar_border; Handles item 4).
+  bool cut_bar_pair = false;
+  BorderCut cut_bar_border = BorderCut::kNone;
+  const StereoMatchOptions::CutBar* cut_bar = nullptr;
   // Judges one pair against every gate, in order; a pair that passes all of them is a candidate
   // with its triangulation. Triangulating here rather than after the assignment means that a
   // pair which cannot be triangulated is never assigned, and its detections stay free for other
@@ -208,6 +222,9 @@ std::vector<StereoPercept> match_and_triangulate(
         if (!bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
       }
     }
+    // A cut view's reference point is the middle of what it shows, another point of the bar in
+    // each image: a cut bar is placed only from its span, across the epipolar lines.
+    if (cut_bar_pair && !bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
     const double mean_f_px = 0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px);
     double epipolar_px =
         bar ? bar->containment_excess_px
@@ -292,6 +309,15 @@ std::vector<StereoPercept> match_and_triangulate(
       point = bar->centre_m;
       triangulation->left_camera_position_m = point + offset * point.normalized();
     }
+    // Cut by one border in both images: the centre from the bar's own end (cut_bar.hpp).
+    if (cut_bar_border != BorderCut::kNone) {
+      const std::optional<detail::CutBarCentre> placed =
+          detail::place_cut_bar(*bar, cut_bar_border, triangulator, *cut_bar, trace);
+      if (!placed) return std::nullopt;
+      point = placed->centre_m;
+      triangulation->left_camera_position_m = point + offset * point.normalized();
+      triangulation->left_camera_covariance_m2 += placed->length_covariance_m2;
+    }
     // Two door outlines: the centre from their vertical sides (door_pair.hpp).
     bool rectangle = false;
     if (occluded) {
@@ -319,7 +345,9 @@ std::vector<StereoPercept> match_and_triangulate(
       return refuse(StereoGate::kDepth, point.z(), options.max_depth_m);
     }
     // Size at that depth: a fronto-parallel length L spans f L / z pixels.
-    const auto* range = extent_range(options, dl.type);
+    // (A cut bar's visible length was judged against its class's typical one.)
+    const auto* range =
+        cut_bar_border == BorderCut::kNone ? extent_range(options, dl.type) : nullptr;
     if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
       const double length_m =
           bar ? bar->length_m
@@ -356,6 +384,26 @@ std::vector<StereoPercept> match_and_triangulate(
       // by border_cut.hpp's gates when its class has a typical height.
       const bool cut =
           left[l].border_cut != BorderCut::kNone || right[r].border_cut != BorderCut::kNone;
+      // A bar cut at one end (Handles item 4): with a whole view in the other image, judged as
+      // any two views of a bar (their union is the whole bar); cut by the same border in both,
+      // placed from its own end; by different borders, not paired.
+      if (cut && detail::is_bar_type(options, left[l].type)) {
+        const bool both =
+            left[l].border_cut != BorderCut::kNone && right[r].border_cut != BorderCut::kNone;
+        cut_bar = cut_bar_of(options, left[l].type);
+        if (!cut_bar || (both && left[l].border_cut != right[r].border_cut)) continue;
+        StereoPairTrace trace;
+        trace.left_detection = l;
+        trace.right_detection = r;
+        cut_bar_pair = true;
+        cut_bar_border = both ? left[l].border_cut : BorderCut::kNone;
+        std::optional<detail::Candidate> c = judge(l, r, trace);
+        cut_bar_pair = false;
+        cut_bar_border = BorderCut::kNone;
+        if (c) candidates.push_back(std::move(*c));
+        if (pair_trace) traces.push_back(trace);
+        continue;
+      }
       const StereoMatchOptions::BorderCutDoor* cut_height =
           cut ? border_cut_door(options, left[l].type) : nullptr;
       // A door cut by the left border in the right image only (the right camera sees less

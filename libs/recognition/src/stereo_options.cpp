@@ -38,7 +38,8 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "pair_max_bars_inside",
                        "max_bar_height_spread",
                        "max_twin_handle_gap",
-                       "border_cut"});
+                       "border_cut",
+                       "cut_bars"});
   if (const auto v = section.find("max_epipolar_distance_px")) {
     out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
   }
@@ -197,6 +198,22 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         parsed.width_sigma_m = v->as_double_in(0.0, 100.0);
       }
       out.border_cut.push_back(parsed);
+    }
+  }
+  if (const auto classes = section.find("cut_bars")) {
+    classes->expect_map();
+    for (const std::string& type : classes->keys()) {
+      const config::Node bar = classes->at(type);
+      bar.expect_map();
+      bar.expect_keys({"typical_length_m", "length_sigma_m"});
+      if (std::find(out.bar_types.begin(), out.bar_types.end(), type) == out.bar_types.end()) {
+        bar.fail("'" + type + "' is not one of bar_types (cut bars are placed from their span)");
+      }
+      StereoMatchOptions::CutBar parsed;
+      parsed.type = type;
+      parsed.typical_length_m = bar.at("typical_length_m").as_double_in(1e-3, 100.0);
+      parsed.length_sigma_m = bar.at("length_sigma_m").as_double_in(0.0, parsed.typical_length_m);
+      out.cut_bars.push_back(parsed);
     }
   }
   return out;

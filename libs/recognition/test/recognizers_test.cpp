@@ -321,6 +321,70 @@ TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   EXPECT_NEAR(cut[2].height_px, 120.0, 1.5);
 }
 
+// The detections of the synthetic handle model (synthetic_recognizers) with border-cut bars on or
+// off (HandleRecognizerParameters::detect_border_cut).
+std::vector<Detection> synthetic_handle_detections(const cv::Mat& image,
+                                                   const std::vector<Blob>& blobs,
+                                                   bool border_cut) {
+  HandleRecognizerParameters parameters;
+  parameters.detect_border_cut = border_cut;
+  std::vector<Detection> out;
+  HandleRecognizer(
+      diagonal_model("handle", handle_descriptor_names(), {4.4, 0.003, 0.4}, {0.8, 0.02, 0.13}),
+      parameters)
+      .recognize(image, blobs, out);
+  return out;
+}
+
+TEST(Recognizers, HandlesCutAtOneEndByTheBorderAreBorderCutDetections) {
+  // Brass bars on door blue (shaded as rendered): cut at their top end by the upper border, at
+  // their bottom end by the lower one, at their left end by the left one; and a bar lying along
+  // the top border, cut along its side, which says nothing of its ends.
+  const cv::Scalar brass_bgr = kBrassBgr * 0.62;
+  cv::Mat image(240, 320, CV_8UC3, kDoorBgr * 0.62);
+  const cv::Rect top_cut(60, 0, 4, 34), bottom_cut(150, 206, 4, 34), left_cut(0, 120, 34, 4),
+      along_top(220, 0, 40, 4);
+  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, along_top}) image(r).setTo(brass_bgr);
+  add_noise(image, 23);
+  std::vector<Blob> blobs;
+  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, along_top}) {
+    blobs.push_back(colour_blob(image, brass_bgr, 12.0, r));
+  }
+  EXPECT_TRUE(synthetic_handle_detections(image, blobs, false).empty());
+  const std::vector<Detection> cut = synthetic_handle_detections(image, blobs, true);
+  ASSERT_EQ(cut.size(), 3u);
+  EXPECT_EQ(cut[0].blob_index, 0);
+  EXPECT_EQ(cut[0].border_cut, BorderCut::kTop);
+  EXPECT_EQ(cut[1].blob_index, 1);
+  EXPECT_EQ(cut[1].border_cut, BorderCut::kBottom);
+  EXPECT_EQ(cut[2].blob_index, 2);
+  EXPECT_EQ(cut[2].border_cut, BorderCut::kLeft);
+  // The reference point is the middle of what the image shows, the extent its visible length.
+  EXPECT_NEAR(cut[0].reference_px.x(), 61.5, 0.5);
+  EXPECT_NEAR(cut[0].reference_px.y(), 16.5, 1.0);
+  EXPECT_NEAR(cut[0].major_extent_px, 34.0, 1.0);
+  EXPECT_NEAR(cut[2].reference_px.x(), 16.5, 1.0);
+}
+
+TEST(CornerVerification, ABarCutByTheBorderHasACornerAtItsOwnEndOnly) {
+  // A bar whose top end the image's upper border cuts: no corner there (the response sees the bar
+  // go on), a clear one at its bottom end.
+  cv::Mat image(120, 120, CV_8UC3, kDoorBgr);
+  image(cv::Rect(50, 0, 4, 40)).setTo(kBrassBgr);
+  add_noise(image, 29);
+  const Blob blob = colour_blob(image, kBrassBgr, 12.0, cv::Rect(0, 0, 120, 120));
+  const BlobAxes axes = blob_axes(blob);
+  // Which end of the major axis is the top one (the cut one).
+  const int top_end = (blob.centroid_px + axes.a_min_px * blob.major_axis).y() <
+                              (blob.centroid_px + axes.a_max_px * blob.major_axis).y()
+                          ? 0
+                          : 1;
+  const CornerVerificationParameters parameters;
+  EXPECT_FALSE(verify_handle_corners(image, blob, axes, parameters).accepted);
+  EXPECT_TRUE(verify_handle_corners(image, blob, axes, parameters, top_end).accepted);
+  EXPECT_FALSE(verify_handle_corners(image, blob, axes, parameters, 1 - top_end).accepted);
+}
+
 TEST(Recognizers, DoorsCutAtAnImageCornerAreCornerCutDetections) {
   // A door panel that the bottom and the left border cut (Doors item 22): its one real corner is
   // the top right; the corners on the cut sides where its top edge and right side leave the

@@ -675,6 +675,7 @@ stereo:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
            merged_side: true, occluded_corner: true, typical_width_m: 0.45, width_sigma_m: 0.08}
+  cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -719,6 +720,10 @@ stereo:
   EXPECT_TRUE(o.border_cut[0].occluded_corner);
   EXPECT_TRUE(o.border_cut[0].merged_side);
   EXPECT_EQ(o.border_cut[0].typical_width_m, 0.45);
+  ASSERT_EQ(o.cut_bars.size(), 1u);
+  EXPECT_EQ(o.cut_bars[0].type, "handle");
+  EXPECT_EQ(o.cut_bars[0].typical_length_m, 0.16);
+  EXPECT_EQ(o.cut_bars[0].length_sigma_m, 0.03);
   EXPECT_EQ(o.border_cut[0].width_sigma_m, 0.08);
 }
 
@@ -792,6 +797,17 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                          "min_width_m: 0.3, max_width_m: 1}}\n")
                 .find("stereo.border_cut.door.height_sigma_m"),
             std::string::npos);
+  // Cut bars: only of a bar type, a spread below the length.
+  EXPECT_NE(stereo_error("  cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}\n")
+                .find("not one of bar_types"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  bar_types: [handle]\n  cut_bars: {handle: {typical_length_m: 0.16, "
+                         "length_sigma_m: 0.2}}\n")
+                .find("s.yaml:3: stereo.cut_bars.handle.length_sigma_m"),
+            std::string::npos);
+  EXPECT_EQ(stereo_error("  bar_types: [handle]\n  cut_bars: {handle: {typical_length_m: 0.16, "
+                         "length_sigma_m: 0.03}}\n"),
+            "");
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_height: 0.7}}\n").find("unknown key"),
             std::string::npos);
   EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [1.2, 0.7], height_sigma_m: "

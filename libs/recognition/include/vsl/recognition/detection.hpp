@@ -69,6 +69,8 @@ struct Detection {
   // reference_px, and its height_px is the visible length of the side through it. The stereo
   // match pairs it with a detection cut by the top or bottom border alone in the other image
   // (which sees more beyond the left or right border).
+  // Handles (Handles item 4, HandleRecognizerParameters::detect_border_cut): kTop .. kRight, the
+  // border cuts the bar at one end; reference_px and major_extent_px are the visible segment's.
   BorderCut border_cut = BorderCut::kNone;
 };
 

@@ -231,6 +231,20 @@ struct StereoMatchOptions {
     double width_sigma_m = 0.0;  // the spread of the class's widths about it, metres
   };
   std::vector<BorderCutDoor> border_cut;
+  // Handles item 4: bars of a bar type (bar_types) cut at one end by the image border
+  // (HandleRecognizerParameters::detect_border_cut). A cut detection pairs with a whole one in
+  // the other image as any two views of a bar (their union is the whole bar); with one cut by the
+  // same border, the bar's span is the union of the two views as for whole bars, its end away
+  // from the border is the bar's, and the centre lies half the class's typical length from that
+  // end along the bar, towards the border. The visible span must be 0.4 .. 1.1 of the typical
+  // length; the covariance gains (length_sigma_m / 2)^2 along the bar. Metres; a type without an
+  // entry pairs no cut bars.
+  struct CutBar {
+    std::string type;
+    double typical_length_m = 0.0;
+    double length_sigma_m = 0.0;  // the spread of the class's lengths about it
+  };
+  std::vector<CutBar> cut_bars;
 };
 
 // The epipolar gate of two rectangle outlines (doors): their vertical sides nest along the
