@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "support/bar_detection.hpp"
 #include "support/projection.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -15,24 +16,8 @@
 namespace vsl::recognition {
 namespace {
 
+using test::bar_between;
 using test::project;
-
-// A handle detection whose visible segment runs between two image points, 4 px wide, cut by
-// `cut` (as the handle recognizer reports it).
-Detection bar_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b, BorderCut cut) {
-  Detection d;
-  d.type = "handle";
-  d.reference_px = 0.5 * (a + b);
-  double angle = std::atan2(b.y() - a.y(), b.x() - a.x());
-  if (angle < 0.0) angle += M_PI;
-  d.major_axis_angle_rad = angle;
-  d.major_extent_px = (b - a).norm();
-  d.minor_extent_px = 4.0;
-  d.area_px = d.major_extent_px * d.minor_extent_px;
-  d.confidence = 1.0f;
-  d.border_cut = cut;
-  return d;
-}
 
 class CutBarTest : public ::testing::Test {
  protected:
