@@ -174,16 +174,18 @@ std::vector<StereoPercept> match_and_triangulate(
                : detail::judge_bars_on_outline(right, dr, max_bars_inside, options);
   };
   const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
-  // Set while judging two views of a bar that the border cuts in one (cut_bar_pair) or, by the
-  // same border, in both (cut_bar_border; Handles item 4).
-  bool cut_bar_pair = false;
-  BorderCut cut_bar_border = BorderCut::kNone;
-  const StereoMatchOptions::CutBar* cut_bar = nullptr;
+  // Two views of a bar that the border cuts in one or both (Handles item 4): the class's typical
+  // length, and the border when it cuts both.
+  struct CutBarViews {
+    const StereoMatchOptions::CutBar* bar = nullptr;
+    BorderCut both = BorderCut::kNone;
+  };
   // Judges one pair against every gate, in order; a pair that passes all of them is a candidate
   // with its triangulation. Triangulating here rather than after the assignment means that a
   // pair which cannot be triangulated is never assigned, and its detections stay free for other
   // pairs.
-  const auto judge = [&](int l, int r, StereoPairTrace& trace) -> std::optional<detail::Candidate> {
+  const auto judge = [&](int l, int r, StereoPairTrace& trace,
+                         const CutBarViews* cut_bar = nullptr) -> std::optional<detail::Candidate> {
     const Detection& dl = left[l];
     const Detection& dr = right[r];
     const auto refuse = [&](StereoGate gate, double value, double limit) {
@@ -224,7 +226,7 @@ std::vector<StereoPercept> match_and_triangulate(
     }
     // A cut view's reference point is the middle of what it shows, another point of the bar in
     // each image: a cut bar is placed only from its span, across the epipolar lines.
-    if (cut_bar_pair && !bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+    if (cut_bar && !bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
     const double mean_f_px = 0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px);
     double epipolar_px =
         bar ? bar->containment_excess_px
@@ -310,9 +312,9 @@ std::vector<StereoPercept> match_and_triangulate(
       triangulation->left_camera_position_m = point + offset * point.normalized();
     }
     // Cut by one border in both images: the centre from the bar's own end (cut_bar.hpp).
-    if (cut_bar_border != BorderCut::kNone) {
+    if (cut_bar && cut_bar->both != BorderCut::kNone) {
       const std::optional<detail::CutBarCentre> placed =
-          detail::place_cut_bar(*bar, cut_bar_border, triangulator, *cut_bar, trace);
+          detail::place_cut_bar(*bar, cut_bar->both, triangulator, *cut_bar->bar, trace);
       if (!placed) return std::nullopt;
       point = placed->centre_m;
       triangulation->left_camera_position_m = point + offset * point.normalized();
@@ -347,7 +349,7 @@ std::vector<StereoPercept> match_and_triangulate(
     // Size at that depth: a fronto-parallel length L spans f L / z pixels.
     // (A cut bar's visible length was judged against its class's typical one.)
     const auto* range =
-        cut_bar_border == BorderCut::kNone ? extent_range(options, dl.type) : nullptr;
+        cut_bar && cut_bar->both != BorderCut::kNone ? nullptr : extent_range(options, dl.type);
     if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
       const double length_m =
           bar ? bar->length_m
@@ -390,16 +392,13 @@ std::vector<StereoPercept> match_and_triangulate(
       if (cut && detail::is_bar_type(options, left[l].type)) {
         const bool both =
             left[l].border_cut != BorderCut::kNone && right[r].border_cut != BorderCut::kNone;
-        cut_bar = cut_bar_of(options, left[l].type);
-        if (!cut_bar || (both && left[l].border_cut != right[r].border_cut)) continue;
+        const CutBarViews cut_bar{cut_bar_of(options, left[l].type),
+                                  both ? left[l].border_cut : BorderCut::kNone};
+        if (!cut_bar.bar || (both && left[l].border_cut != right[r].border_cut)) continue;
         StereoPairTrace trace;
         trace.left_detection = l;
         trace.right_detection = r;
-        cut_bar_pair = true;
-        cut_bar_border = both ? left[l].border_cut : BorderCut::kNone;
-        std::optional<detail::Candidate> c = judge(l, r, trace);
-        cut_bar_pair = false;
-        cut_bar_border = BorderCut::kNone;
+        std::optional<detail::Candidate> c = judge(l, r, trace, &cut_bar);
         if (c) candidates.push_back(std::move(*c));
         if (pair_trace) traces.push_back(trace);
         continue;
