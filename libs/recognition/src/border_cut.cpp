@@ -21,6 +21,8 @@
 #include <tuple>
 #include <vector>
 
+#include "pair_refusal.hpp"
+
 namespace vsl::recognition::detail {
 namespace {
 
@@ -83,15 +85,9 @@ std::optional<Candidate> judge_border_cut_pair(
     const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
     const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
     double reference_offset_m, StereoPairTrace& trace) {
-  const auto refuse = [&](StereoGate gate, double value, double limit) {
-    trace.refused_by = gate;
-    trace.value = value;
-    trace.limit = limit;
-    return std::nullopt;
-  };
   const BorderCut cut = left.detection.border_cut;
   if ((cut != BorderCut::kTop && cut != BorderCut::kBottom) || right.detection.border_cut != cut) {
-    return refuse(StereoGate::kEpipolar, 0.0, 0.0);
+    return refuse(trace, StereoGate::kEpipolar, 0.0, 0.0);
   }
   // Position: the whole edge's two corners on each other's epipolar lines (a strip of shadow
   // along that edge in one image only moves them along the sides by a few per cent of the
@@ -106,7 +102,7 @@ std::optional<Candidate> judge_border_cut_pair(
       options.max_epipolar_distance_px,
       kRectangleEpipolarFraction * 0.5 * (left.detection.height_px + right.detection.height_px));
   if (!(epipolar_px <= max_epipolar_px)) {
-    return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+    return refuse(trace, StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
   }
   // Size: both cameras are about equally far from the door, so its whole edge is about as long
   // in both images (a length, the square root of the area ratio's bound); two strips of doors
@@ -119,21 +115,22 @@ std::optional<Candidate> judge_border_cut_pair(
   const double width_ratio = std::max(left_width_px, right_width_px) /
                              std::max(std::min(left_width_px, right_width_px), 1e-9);
   if (!(width_ratio <= max_width_ratio)) {
-    return refuse(StereoGate::kAreaRatio, width_ratio, max_width_ratio);
+    return refuse(trace, StereoGate::kAreaRatio, width_ratio, max_width_ratio);
   }
   // The sides are a door's vertical edges in both images.
   if (door.max_side_tilt_rad > 0.0) {
     const double tilt = triangulator.max_side_tilt(left.corners_ideal_px, right.corners_ideal_px,
                                                    up_in_left_camera);
     if (tilt > std::sin(door.max_side_tilt_rad)) {
-      return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)), door.max_side_tilt_rad);
+      return refuse(trace, StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
+                    door.max_side_tilt_rad);
     }
   }
   std::optional<std::array<Eigen::Vector3d, 4>> ends =
       triangulator.rectangle_ends(left.corners_ideal_px, right.corners_ideal_px);
   std::optional<Triangulation> triangulation = triangulator.triangulate(
       left.reference, right.reference, options.pixel_sigma_px, reference_offset_m);
-  if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (!ends || !triangulation) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   // Each side's depth where the images around it correlate, searched around the outlines' depth
   // (one image's outline may lack a stile); a side that does not correlate, or not unambiguously,
   // keeps the outlines'.
@@ -172,19 +169,22 @@ std::optional<Candidate> judge_border_cut_pair(
     const double run = (along - along.dot(u) * u).norm();
     const double slope_rad = std::atan2(rise, run);
     if (slope_rad > options.max_edge_slope_rad) {
-      return refuse(StereoGate::kEdgeSlope, slope_rad, options.max_edge_slope_rad);
+      return refuse(trace, StereoGate::kEdgeSlope, slope_rad, options.max_edge_slope_rad);
     }
   }
   // A door's width: a strip of a door that segmentation split off is narrower.
   const double width_m = (edge_b - edge_a).norm();
-  if (width_m < door.min_width_m) return refuse(StereoGate::kExtent, width_m, door.min_width_m);
-  if (width_m > door.max_width_m) return refuse(StereoGate::kExtent, width_m, door.max_width_m);
+  if (width_m < door.min_width_m)
+    return refuse(trace, StereoGate::kExtent, width_m, door.min_width_m);
+  if (width_m > door.max_width_m)
+    return refuse(trace, StereoGate::kExtent, width_m, door.max_width_m);
   // Seen from within about 78 deg of head-on: the cosine between the door's normal (level,
   // across the edge) and the ray to the edge's middle. Nearly edge-on, a strip of a door paired
   // with another strip (or a side the correlation moved) makes a long edge receding in depth.
   const Eigen::Vector3d normal = (edge_b - edge_a).cross(u).normalized();
   const double cos_viewing = std::abs(normal.dot((0.5 * (edge_a + edge_b)).normalized()));
-  if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
+  if (cos_viewing < kMinCosViewing)
+    return refuse(trace, StereoGate::kExtent, cos_viewing, kMinCosViewing);
   const double visible_m =
       0.5 * (((*ends)[0] - (*ends)[1]).dot(u) + ((*ends)[2] - (*ends)[3]).dot(u));
   const std::optional<double> height = typical_height_of(visible_m, door, trace);

@@ -23,6 +23,8 @@
 #include <array>
 #include <cmath>
 
+#include "pair_refusal.hpp"
+
 namespace vsl::recognition::detail {
 namespace {
 
@@ -64,14 +66,9 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
                                                const StereoMatchOptions& options,
                                                const StereoMatchOptions::BorderCutDoor& door,
                                                double reference_offset_m, StereoPairTrace& trace) {
-  const auto refuse = [&](StereoGate gate, double value, double limit) {
-    trace.refused_by = gate;
-    trace.value = value;
-    trace.limit = limit;
-    return std::nullopt;
-  };
   const BorderCut left_cut = left.detection.border_cut, right_cut = right.detection.border_cut;
-  if (!is_corner_cut_pair(left_cut, right_cut)) return refuse(StereoGate::kEpipolar, 0.0, 0.0);
+  if (!is_corner_cut_pair(left_cut, right_cut))
+    return refuse(trace, StereoGate::kEpipolar, 0.0, 0.0);
   // At the left border the left image shows the whole edge and the right side is the one both
   // show; at the right border the right image, and the left side.
   const bool at_left = at_left_corner(right_cut);
@@ -90,7 +87,7 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
       options.max_epipolar_distance_px,
       kRectangleEpipolarFraction * 0.5 * (left.detection.height_px + right.detection.height_px));
   if (!(epipolar_px <= max_epipolar_px)) {
-    return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+    return refuse(trace, StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
   }
   // The side is a door's vertical edge in both images (a cut outline's bound, as item 12).
   const Eigen::Vector3d& u = up_in_left_camera;
@@ -98,7 +95,8 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
     const auto tilts = triangulator.side_tilts(lc, rc, u)[static_cast<std::size_t>(side_index)];
     const double tilt = std::max(tilts[0], tilts[1]);
     if (tilt > std::sin(door.max_side_tilt_rad)) {
-      return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)), door.max_side_tilt_rad);
+      return refuse(trace, StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
+                    door.max_side_tilt_rad);
     }
   }
   const auto ends = triangulator.rectangle_ends(lc, rc, 1 - side_index);
@@ -106,23 +104,26 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
   const IdealPixel right_real{rc[real], right.reference.d_ideal_d_raw};
   const auto triangulation =
       triangulator.triangulate(left_real, right_real, options.pixel_sigma_px, 0.0);
-  if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (!ends || !triangulation) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   const Eigen::Vector3d& top = (*ends)[static_cast<std::size_t>(2 * side_index)];
   const Eigen::Vector3d& bottom = (*ends)[static_cast<std::size_t>(2 * side_index + 1)];
   const Eigen::Vector3d& edge_end = top_cut ? bottom : top;
   // The edge's far corner, in the image that shows the edge whole.
   const auto far_point = at_left ? triangulator.left_ray_on_level_plane(lc[far], edge_end, u)
                                  : triangulator.right_ray_on_level_plane(rc[far], edge_end, u);
-  if (!far_point) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (!far_point) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   const Eigen::Vector3d along_raw = *far_point - edge_end;
   const Eigen::Vector3d along = along_raw - along_raw.dot(u) * u;
   const double width_m = along.norm();
-  if (width_m < door.min_width_m) return refuse(StereoGate::kExtent, width_m, door.min_width_m);
-  if (width_m > door.max_width_m) return refuse(StereoGate::kExtent, width_m, door.max_width_m);
+  if (width_m < door.min_width_m)
+    return refuse(trace, StereoGate::kExtent, width_m, door.min_width_m);
+  if (width_m > door.max_width_m)
+    return refuse(trace, StereoGate::kExtent, width_m, door.max_width_m);
   const Eigen::Vector3d edge_middle = edge_end + 0.5 * along;
   const Eigen::Vector3d normal = along.cross(u).normalized();
   const double cos_viewing = std::abs(normal.dot(edge_middle.normalized()));
-  if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
+  if (cos_viewing < kMinCosViewing)
+    return refuse(trace, StereoGate::kExtent, cos_viewing, kMinCosViewing);
   // The visible height and the door's (item 12).
   const std::optional<double> height = typical_height_of((top - bottom).dot(u), door, trace);
   if (!height) return std::nullopt;

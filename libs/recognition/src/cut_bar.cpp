@@ -12,6 +12,8 @@
 // d^T.
 #include "cut_bar.hpp"
 
+#include "pair_refusal.hpp"
+
 namespace vsl::recognition::detail {
 namespace {
 
@@ -26,24 +28,18 @@ std::optional<CutBarCentre> place_cut_bar(const Triangulator::BarSpan& span, Bor
                                           const Triangulator& triangulator,
                                           const StereoMatchOptions::CutBar& bar,
                                           StereoPairTrace& trace) {
-  const auto refuse = [&](StereoGate gate, double value, double limit) {
-    trace.refused_by = gate;
-    trace.value = value;
-    trace.limit = limit;
-    return std::nullopt;
-  };
   const double length = bar.typical_length_m;
   if (span.length_m < kMinVisibleOfTypical * length) {
-    return refuse(StereoGate::kExtent, span.length_m, kMinVisibleOfTypical * length);
+    return refuse(trace, StereoGate::kExtent, span.length_m, kMinVisibleOfTypical * length);
   }
   if (span.length_m > kMaxVisibleOfTypical * length) {
-    return refuse(StereoGate::kExtent, span.length_m, kMaxVisibleOfTypical * length);
+    return refuse(trace, StereoGate::kExtent, span.length_m, kMaxVisibleOfTypical * length);
   }
   const Eigen::Vector3d a_end = span.centre_m - 0.5 * span.length_m * span.axis;
   const Eigen::Vector3d b_end = span.centre_m + 0.5 * span.length_m * span.axis;
   const std::optional<Eigen::Vector2d> a_px = triangulator.project_left(a_end);
   const std::optional<Eigen::Vector2d> b_px = triangulator.project_left(b_end);
-  if (!a_px || !b_px) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (!a_px || !b_px) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   // Towards the border, in the left image: -v (top), +v, -u (left), +u.
   const Eigen::Vector2d towards = border == BorderCut::kTop      ? Eigen::Vector2d(0.0, -1.0)
                                   : border == BorderCut::kBottom ? Eigen::Vector2d(0.0, 1.0)

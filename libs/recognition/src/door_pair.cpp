@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pair_refusal.hpp"
+
 namespace vsl::recognition::detail {
 namespace {
 
@@ -54,12 +56,6 @@ std::optional<DoorSides> judge_door_sides(const DoorOutlines& outlines,
                                           const Eigen::Vector3d& up_in_left_camera,
                                           bool have_correlator, const StereoMatchOptions& options,
                                           StereoPairTrace& trace) {
-  const auto refuse = [&](StereoGate gate, double value, double limit) {
-    trace.refused_by = gate;
-    trace.value = value;
-    trace.limit = limit;
-    return std::nullopt;
-  };
   // A pair of outlines with one side that is no door edge in one image (tilted: an
   // occluder's contour, a neighbour's strip) still has its centre from the three good sides
   // (Triangulator::rectangle_centre_from_one_side); more than one such side is refused.
@@ -95,7 +91,7 @@ std::optional<DoorSides> judge_door_sides(const DoorOutlines& outlines,
     }
     out.worst_tilt = tilt;
     if (bad > 0 && !out.one_side_centre && out.side_needing_correlation < 0) {
-      return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
+      return refuse(trace, StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
                     options.max_side_tilt_rad);
     }
   }

@@ -32,6 +32,8 @@
 #include <array>
 #include <cmath>
 
+#include "pair_refusal.hpp"
+
 namespace vsl::recognition::detail {
 namespace {
 
@@ -51,12 +53,6 @@ std::optional<Candidate> judge_side_cut_pair(
     const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
     const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m,
     StereoPairTrace& trace) {
-  const auto refuse = [&](StereoGate gate, double value, double limit) {
-    trace.refused_by = gate;
-    trace.value = value;
-    trace.limit = limit;
-    return std::nullopt;
-  };
   // The border that cuts the door: in both images, or only in the one that sees less beyond
   // it (the right image's left border, the left image's right border), the other showing the
   // door whole.
@@ -68,7 +64,8 @@ std::optional<Candidate> judge_side_cut_pair(
       seen_whole ? (left_border == BorderCut::kNone && right_border == BorderCut::kLeft) ||
                        (left_border == BorderCut::kRight && right_border == BorderCut::kNone)
                  : left_border == BorderCut::kLeft || left_border == BorderCut::kRight;
-  if (!admissible || !(door.typical_width_m > 0.0)) return refuse(StereoGate::kEpipolar, 0.0, 0.0);
+  if (!admissible || !(door.typical_width_m > 0.0))
+    return refuse(trace, StereoGate::kEpipolar, 0.0, 0.0);
   const bool left_cut = cut == BorderCut::kLeft;
   // The whole side's corners (top, bottom) and the cut ones on the same edges; the whole side's
   // index in Triangulator::vertical_sides' order ({0, 3}, then {1, 2}).
@@ -79,7 +76,8 @@ std::optional<Candidate> judge_side_cut_pair(
   const std::array<Eigen::Vector2d, 4>& lc = left.corners_ideal_px;
   const std::array<Eigen::Vector2d, 4>& rc = right.corners_ideal_px;
   if (Triangulator::vertical_sides(lc)[0] != std::array<int, 2>{0, 3}) {
-    return refuse(StereoGate::kSideTilt, 1.0, 0.0);  // the level sides are nearer the vertical
+    return refuse(trace, StereoGate::kSideTilt, 1.0,
+                  0.0);  // the level sides are nearer the vertical
   }
 
   // Position: the whole side's two corners on each other's epipolar lines.
@@ -89,7 +87,7 @@ std::optional<Candidate> judge_side_cut_pair(
       options.max_epipolar_distance_px,
       kRectangleEpipolarFraction * 0.5 * (left.detection.height_px + right.detection.height_px));
   if (!(epipolar_px <= max_epipolar_px)) {
-    return refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+    return refuse(trace, StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
   }
   // Size: the side is about as long in both images (both cameras are about equally far).
   const double left_px = (lc[whole[1]] - lc[whole[0]]).norm();
@@ -98,14 +96,15 @@ std::optional<Candidate> judge_side_cut_pair(
   const double length_ratio =
       std::max(left_px, right_px) / std::max(std::min(left_px, right_px), 1e-9);
   if (!(length_ratio <= max_length_ratio)) {
-    return refuse(StereoGate::kAreaRatio, length_ratio, max_length_ratio);
+    return refuse(trace, StereoGate::kAreaRatio, length_ratio, max_length_ratio);
   }
   // The side is a door's vertical edge in both images: whole, so the whole outlines' bound.
   const Eigen::Vector3d& u = up_in_left_camera;
   const auto tilts = triangulator.side_tilts(lc, rc, u)[static_cast<std::size_t>(whole_side)];
   const double tilt = std::max(tilts[0], tilts[1]);
   if (tilt > std::sin(options.max_side_tilt_rad)) {
-    return refuse(StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)), options.max_side_tilt_rad);
+    return refuse(trace, StereoGate::kSideTilt, std::asin(std::min(tilt, 1.0)),
+                  options.max_side_tilt_rad);
   }
   const auto ends = triangulator.rectangle_ends(lc, rc, 1 - whole_side);
   // The covariance of the whole side's middle (a whole outline's reference point is its centre;
@@ -114,7 +113,7 @@ std::optional<Candidate> judge_side_cut_pair(
   const IdealPixel right_middle{0.5 * (rc[whole[0]] + rc[whole[1]]), right.reference.d_ideal_d_raw};
   const auto triangulation =
       triangulator.triangulate(left_middle, right_middle, options.pixel_sigma_px, 0.0);
-  if (!ends || !triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (!ends || !triangulation) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   Eigen::Vector3d top = (*ends)[static_cast<std::size_t>(2 * whole_side)];
   Eigen::Vector3d bottom = (*ends)[static_cast<std::size_t>(2 * whole_side + 1)];
   // The side's depth where the images around it correlate, searched around the outlines' depth
@@ -140,10 +139,10 @@ std::optional<Candidate> judge_side_cut_pair(
   // A door's height: both ends are seen.
   const double height_m = (top - bottom).dot(u);
   if (height_range && height_m < height_range->min_m) {
-    return refuse(StereoGate::kHeight, height_m, height_range->min_m);
+    return refuse(trace, StereoGate::kHeight, height_m, height_range->min_m);
   }
   if (height_range && height_m > height_range->max_m) {
-    return refuse(StereoGate::kHeight, height_m, height_range->max_m);
+    return refuse(trace, StereoGate::kHeight, height_m, height_range->max_m);
   }
   // The edges up to the border, in the image that sees more of the door.
   const std::array<Eigen::Vector3d, 2> side_end{top, bottom};
@@ -163,25 +162,28 @@ std::optional<Candidate> judge_side_cut_pair(
     direction += along[e].normalized();
     ++found;
   }
-  if (found == 0) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+  if (found == 0) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   if (found == 2) {
     const double cos_angle = along[0].normalized().dot(along[1].normalized());
     const double angle_rad = std::acos(std::clamp(cos_angle, -1.0, 1.0));
     if (angle_rad > kMaxEdgeAngleRad)
-      return refuse(StereoGate::kEdgeSlope, angle_rad, kMaxEdgeAngleRad);
+      return refuse(trace, StereoGate::kEdgeSlope, angle_rad, kMaxEdgeAngleRad);
   }
   visible_m /= found;
   direction.normalize();
   // Seen whole in one image, the door is as wide as that image shows it.
   const double min_visible_m =
       seen_whole ? door.min_width_m : kMinVisibleOfTypicalWidth * door.typical_width_m;
-  if (visible_m < min_visible_m) return refuse(StereoGate::kExtent, visible_m, min_visible_m);
-  if (visible_m > door.max_width_m) return refuse(StereoGate::kExtent, visible_m, door.max_width_m);
+  if (visible_m < min_visible_m)
+    return refuse(trace, StereoGate::kExtent, visible_m, min_visible_m);
+  if (visible_m > door.max_width_m)
+    return refuse(trace, StereoGate::kExtent, visible_m, door.max_width_m);
   // Seen from within about 78 deg of head-on (border_cut.hpp).
   const Eigen::Vector3d side_middle = 0.5 * (top + bottom);
   const Eigen::Vector3d normal = direction.cross(u).normalized();
   const double cos_viewing = std::abs(normal.dot(side_middle.normalized()));
-  if (cos_viewing < kMinCosViewing) return refuse(StereoGate::kExtent, cos_viewing, kMinCosViewing);
+  if (cos_viewing < kMinCosViewing)
+    return refuse(trace, StereoGate::kExtent, cos_viewing, kMinCosViewing);
   const double width_m = seen_whole ? visible_m : std::max(door.typical_width_m, visible_m);
   const Eigen::Vector3d centre = side_middle + 0.5 * width_m * direction;
   const double half_sigma_m = seen_whole ? 0.0 : 0.5 * door.width_sigma_m;

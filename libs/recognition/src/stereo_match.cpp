@@ -20,6 +20,7 @@
 #include "epipolar.hpp"
 #include "occluded_corner_door.hpp"
 #include "one_side_door.hpp"
+#include "pair_refusal.hpp"
 #include "side_correlation.hpp"
 #include "side_cut_door.hpp"
 #include "single_view.hpp"
@@ -188,15 +189,10 @@ std::vector<StereoPercept> match_and_triangulate(
                          const CutBarViews* cut_bar = nullptr) -> std::optional<detail::Candidate> {
     const Detection& dl = left[l];
     const Detection& dr = right[r];
-    const auto refuse = [&](StereoGate gate, double value, double limit) {
-      trace.refused_by = gate;
-      trace.value = value;
-      trace.limit = limit;
-      return std::nullopt;
-    };
     // Hysteresis: a blob the class model rates just beyond its threshold in one image counts
     // when the other image shows it clearly; two weak views are not evidence enough.
-    if (dl.needs_partner && dr.needs_partner) return refuse(StereoGate::kWeakPair, 0.0, 0.0);
+    if (dl.needs_partner && dr.needs_partner)
+      return detail::refuse(trace, StereoGate::kWeakPair, 0.0, 0.0);
     // Position: the right reference point on (near) the left one's epipolar line. For two
     // rectangle outlines, their vertical sides nest along the epipolar direction
     // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height.
@@ -206,7 +202,7 @@ std::vector<StereoPercept> match_and_triangulate(
     if (const detail::BarVerdict bars = judge_bars(
             dl, dr, options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
         bars.gate != StereoGate::kNone) {
-      return refuse(bars.gate, bars.value, bars.limit);
+      return detail::refuse(trace, bars.gate, bars.value, bars.limit);
     }
     // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in
     // 3D, and the position gate as the containment of the shorter segment in the longer.
@@ -221,12 +217,12 @@ std::vector<StereoPercept> match_and_triangulate(
       if (length > 0.0 && std::abs((b - a).dot(line.head<2>())) >= std::sqrt(0.5) * length) {
         bar = triangulator.bar_span({left_bar_ends[l][0].ideal_px, left_bar_ends[l][1].ideal_px},
                                     {a, b}, up_in_left_camera);
-        if (!bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+        if (!bar) return detail::refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
       }
     }
     // A cut view's reference point is the middle of what it shows, another point of the bar in
     // each image: a cut bar is placed only from its span, across the epipolar lines.
-    if (cut_bar && !bar) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+    if (cut_bar && !bar) return detail::refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
     const double mean_f_px = 0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px);
     double epipolar_px =
         bar ? bar->containment_excess_px
@@ -260,7 +256,7 @@ std::vector<StereoPercept> match_and_triangulate(
       return true;
     };
     if (!(epipolar_px <= max_epipolar_px)) {
-      refuse(StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
+      detail::refuse(trace, StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
       if (!place_occluded_corner()) return std::nullopt;
     }
     // The side gate of two door outlines (door_pair.hpp).
@@ -282,7 +278,8 @@ std::vector<StereoPercept> match_and_triangulate(
                                   (dr.area_px / dr.major_extent_px + kBarWidthQuantizationPx)))
               : std::abs(std::log(dl.area_px / dr.area_px));
       if (log_ratio > log_max_area_ratio) {
-        return refuse(StereoGate::kAreaRatio, std::exp(log_ratio), options.max_area_ratio);
+        return detail::refuse(trace, StereoGate::kAreaRatio, std::exp(log_ratio),
+                              options.max_area_ratio);
       }
       area_term = log_ratio / log_max_area_ratio;
     }
@@ -293,7 +290,8 @@ std::vector<StereoPercept> match_and_triangulate(
       const double difference =
           axis_difference_rad(dl.major_axis_angle_rad, dr.major_axis_angle_rad);
       if (difference > options.max_orientation_difference_rad) {
-        return refuse(StereoGate::kOrientation, difference, options.max_orientation_difference_rad);
+        return detail::refuse(trace, StereoGate::kOrientation, difference,
+                              options.max_orientation_difference_rad);
       }
       orientation_term = difference / options.max_orientation_difference_rad;
     }
@@ -303,7 +301,7 @@ std::vector<StereoPercept> match_and_triangulate(
     const double offset = reference_depth_offset(options, dl.type);
     std::optional<detail::Triangulation> triangulation =
         triangulator.triangulate(left_ideal[l], right_ideal[r], options.pixel_sigma_px, offset);
-    if (!triangulation) return refuse(StereoGate::kTriangulation, 0.0, 0.0);
+    if (!triangulation) return detail::refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
     // The gates below measure the visible surface, before the reference point's offset.
     Eigen::Vector3d point = triangulation->left_camera_position_m -
                             offset * triangulation->left_camera_position_m.normalized();
@@ -341,10 +339,10 @@ std::vector<StereoPercept> match_and_triangulate(
     // Disparity range, as the depth of the triangulated point along the left optical axis
     // (verging eyes make disparity alone depend on where the point is in the image).
     if (point.z() < options.min_depth_m) {
-      return refuse(StereoGate::kDepth, point.z(), options.min_depth_m);
+      return detail::refuse(trace, StereoGate::kDepth, point.z(), options.min_depth_m);
     }
     if (point.z() > options.max_depth_m) {
-      return refuse(StereoGate::kDepth, point.z(), options.max_depth_m);
+      return detail::refuse(trace, StereoGate::kDepth, point.z(), options.max_depth_m);
     }
     // Size at that depth: a fronto-parallel length L spans f L / z pixels.
     // (A cut bar's visible length was judged against its class's typical one.)
@@ -354,16 +352,20 @@ std::vector<StereoPercept> match_and_triangulate(
       const double length_m =
           bar ? bar->length_m
               : 0.5 * (dl.major_extent_px + dr.major_extent_px) * point.z() / mean_f_px;
-      if (length_m < range->min_m) return refuse(StereoGate::kExtent, length_m, range->min_m);
-      if (length_m > range->max_m) return refuse(StereoGate::kExtent, length_m, range->max_m);
+      if (length_m < range->min_m)
+        return detail::refuse(trace, StereoGate::kExtent, length_m, range->min_m);
+      if (length_m > range->max_m)
+        return detail::refuse(trace, StereoGate::kExtent, length_m, range->max_m);
     }
     // Height at that depth: the image length of the vertical edges in metres.
     const auto* height = height_range(options, dl.type);
     if (height && dl.height_px > 0.0 && dr.height_px > 0.0) {
       const double height_m = 0.5 * (dl.height_px + dr.height_px) * point.z() /
                               (0.5 * (left_intrinsics.fy_px + right_intrinsics.fy_px));
-      if (height_m < height->min_m) return refuse(StereoGate::kHeight, height_m, height->min_m);
-      if (height_m > height->max_m) return refuse(StereoGate::kHeight, height_m, height->max_m);
+      if (height_m < height->min_m)
+        return detail::refuse(trace, StereoGate::kHeight, height_m, height->min_m);
+      if (height_m > height->max_m)
+        return detail::refuse(trace, StereoGate::kHeight, height_m, height->max_m);
     }
     const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
     detail::Candidate c;
