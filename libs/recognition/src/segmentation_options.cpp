@@ -24,6 +24,7 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
   SegmentationOptions out;
   section.expect_map();
   section.expect_keys({"max_neighbour_difference_rgb",
+                       "max_run_mean_difference_rgb",
                        "max_colour_volume_rgb3",
                        "max_region_px",
                        "min_region_px",
@@ -47,6 +48,9 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
                        "split_horizontal_slits"});
   if (const auto v = section.find("max_neighbour_difference_rgb")) {
     out.max_neighbour_difference_rgb = v->as_double_in(0.0, 1.0);
+  }
+  if (const auto v = section.find("max_run_mean_difference_rgb")) {
+    out.max_run_mean_difference_rgb = v->as_double_in(0.0, 1.0);
   }
   // The ellipsoid of the whole RGB cube: 4/3 pi (1/2)^3 ~ 0.52.
   if (const auto v = section.find("max_colour_volume_rgb3")) {

@@ -2,7 +2,9 @@
 // region it is reached from when (1) its colour differs from that neighbour by
 // at most max_neighbour_difference_rgb in every channel (no growth across an
 // edge: with area-sampled images even a sub-pixel gap between two doors is a
-// blended pixel that differs by more), (2) the region's colour ellipsoid
+// blended pixel that differs by more) and, along a row, from the mean of the run
+// it extends by at most max_run_mean_difference_rgb (a shallow edge crossed in
+// small blended steps is still an edge), (2) the region's colour ellipsoid
 // spanned by K_mean, K_min and K_max keeps a volume V_i < V_max with it (the
 // region stays one colour: a slow drift across a shading gradient is refused
 // once its spread, not its step, is too large) and (3) the region holds at most
@@ -185,11 +187,14 @@ std::array<std::int64_t, 3> rgb_sum(const std::uint8_t* row, int begin, int end)
 
 // The row pass over one run of pixels off the barrier from column `begin`: the run ends before
 // the first pixel that is on the barrier, whose step from its left neighbour is refused
-// (refused_step, of mark_refused_steps), or with which the run's colour ellipsoid would reach
+// (refused_step, of mark_refused_steps), that differs from the run's mean by more than
+// max_mean_step_grey in a channel (|c n - sum c| > max_mean_step_grey n, in integers; -1: no
+// such test), or with which the run's colour ellipsoid would reach
 // V_max (then cut_by_edge is false). Returns the end and sets the run's colour sums and extremes.
 int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
              const std::uint8_t* refused_step, int begin, int width,
-             const VolumeLimit& volume_limit, GrownRegion& run, bool& cut_by_edge) {
+             const VolumeLimit& volume_limit, int max_mean_step_grey, GrownRegion& run,
+             bool& cut_by_edge) {
   // K_min, K_max (R, G, B) and the allowed ranges as scalars: arrays in the loop end up in memory.
   const std::uint8_t* p = row + 3 * begin;
   int lo_r = p[2], lo_g = p[1], lo_b = p[0];
@@ -197,11 +202,23 @@ int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
   std::array<int, 3> allowed = volume_limit.allowed_ranges({lo_r, lo_g, lo_b}, {hi_r, hi_g, hi_b});
   int allowed_r = allowed[0], allowed_g = allowed[1], allowed_b = allowed[2];
   cut_by_edge = true;
+  int sum_r = lo_r, sum_g = lo_g, sum_b = lo_b;
   int u = begin + 1;
   for (; u < width; ++u) {
     if (on_barrier[u] != 0 || refused_step[3 * u] != 0) break;
     const std::uint8_t* q = row + 3 * u;
     const int r = q[2], g = q[1], b = q[0];
+    if (max_mean_step_grey >= 0) {
+      const int n = u - begin;
+      const int limit = max_mean_step_grey * n;
+      if (std::abs(r * n - sum_r) > limit || std::abs(g * n - sum_g) > limit ||
+          std::abs(b * n - sum_b) > limit) {
+        break;
+      }
+      sum_r += r;
+      sum_g += g;
+      sum_b += b;
+    }
     const int widened_lo_r = std::min(lo_r, r), widened_hi_r = std::max(hi_r, r);
     const int widened_lo_g = std::min(lo_g, g), widened_hi_g = std::max(hi_g, g);
     const int widened_lo_b = std::min(lo_b, b), widened_hi_b = std::max(hi_b, b);
@@ -261,6 +278,10 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
 
   const int max_step_grey =
       static_cast<int>(std::floor(options.max_neighbour_difference_rgb * 255.0));
+  const int max_mean_step_grey =
+      options.max_run_mean_difference_rgb > 0.0
+          ? static_cast<int>(std::floor(options.max_run_mean_difference_rgb * 255.0))
+          : -1;
   // Computed once per image: pixels on thin lines neither join nor let regions grow across them.
   const cv::Mat barrier = line_barrier(bgr_image, options);
 
@@ -303,8 +324,8 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
         }
         run.rgb_sum = rgb_sum(row, begin, u);
       } else {
-        u = grow_run(row, on_barrier, refused_step.data(), begin, width, volume_limit, run,
-                     cut_by_edge);
+        u = grow_run(row, on_barrier, refused_step.data(), begin, width, volume_limit,
+                     max_mean_step_grey, run, cut_by_edge);
       }
       const int n = u - begin;
       run.pixel_count = n;

@@ -116,6 +116,36 @@ TEST(Segmentation, ThinBarIsOneBlobOfItsOwn) {
   EXPECT_NE(door, handle);
 }
 
+// A shallow-sloped edge between two dark colours, as a row crosses it: a blend in steps of 7 grey
+// levels, each within the neighbour step (11). The colour ellipsoid of both is below V_max, so the
+// step and V_max alone let one run hold both colours; the step from the run's mean does not.
+cv::Mat two_colours_joined_by_a_ramp() {
+  cv::Mat image(60, 96, CV_8UC3, cv::Scalar(60, 70, 80));         // worktop-lip grey (BGR)
+  image(cv::Rect(56, 0, 40, 60)).setTo(cv::Scalar(116, 70, 80));  // a bluer front
+  for (int k = 0; k < 8; ++k) {
+    image(cv::Rect(40 + 2 * k, 0, 2, 60)).setTo(cv::Scalar(60 + 7 * (k + 1) * 7 / 8, 70, 80));
+  }
+  return image;
+}
+
+TEST(Segmentation, AStepFromTheRunsMeanSeparatesColoursJoinedByABlend) {
+  const cv::Mat image = two_colours_joined_by_a_ramp();
+  SegmentationOptions off;
+  off.max_run_mean_difference_rgb = 0.0;
+  const std::vector<Blob> joined = segment(image, off);
+  ASSERT_NE(blob_at(joined, 10, 30), nullptr);
+  EXPECT_EQ(blob_at(joined, 10, 30), blob_at(joined, 85, 30));
+
+  const std::vector<Blob> separated = segment(image, SegmentationOptions{});
+  const Blob* grey = blob_at(separated, 10, 30);
+  const Blob* blue = blob_at(separated, 85, 30);
+  ASSERT_NE(grey, nullptr);
+  ASSERT_NE(blue, nullptr);
+  EXPECT_NE(grey, blue);
+  EXPECT_LE(grey->u_max, 47);
+  EXPECT_GE(blue->u_min, 48);
+}
+
 TEST(Segmentation, RejectsAnImageThatIsNotBgr) {
   const cv::Mat grey(10, 10, CV_8U, cv::Scalar(0));
   EXPECT_THROW(segment(grey, SegmentationOptions{}), std::invalid_argument);
@@ -137,7 +167,7 @@ std::string error_of(const std::string& text) {
 
 TEST(SegmentationOptions, ReadsEveryKey) {
   const SegmentationOptions options = options_from(
-      "segmentation:\n  max_neighbour_difference_rgb: 0.05\n  "
+      "segmentation:\n  max_neighbour_difference_rgb: 0.05\n  max_run_mean_difference_rgb: 0.02\n  "
       "max_colour_volume_rgb3: 1e-3\n"
       "  line_bridge_px: 3\n  min_line_contrast_rgb: 0.01\n"
       "  max_facet_px: 500\n  max_chromaticity_difference: 0.02\n"
@@ -149,6 +179,7 @@ TEST(SegmentationOptions, ReadsEveryKey) {
       "  min_twin_gap_support: 0.7\n  min_twin_piece_fraction: 0.3\n"
       "  min_twin_gap_chromaticity_difference: 0.1\n  split_horizontal_slits: false\n");
   EXPECT_DOUBLE_EQ(options.max_neighbour_difference_rgb, 0.05);
+  EXPECT_DOUBLE_EQ(options.max_run_mean_difference_rgb, 0.02);
   EXPECT_DOUBLE_EQ(options.max_colour_volume_rgb3, 1e-3);
   EXPECT_EQ(options.line_bridge_px, 3);
   EXPECT_DOUBLE_EQ(options.min_line_contrast_rgb, 0.01);
@@ -183,6 +214,9 @@ TEST(SegmentationOptions, BadValuesAreOneLineErrors) {
                 .find("seg.yaml:2: segmentation.colour_bandwidth_rgb:"),
             std::string::npos);
   EXPECT_NE(error_of("segmentation:\n  spatial_bandwidth_px: .nan\n").find("seg.yaml:2:"),
+            std::string::npos);
+  EXPECT_NE(error_of("segmentation:\n  max_run_mean_difference_rgb: 1.5\n")
+                .find("seg.yaml:2: segmentation.max_run_mean_difference_rgb:"),
             std::string::npos);
   EXPECT_NE(error_of("segmentation:\n  max_colour_volume_rgb3: 0\n").find("seg.yaml:2:"),
             std::string::npos);

@@ -189,10 +189,12 @@ TEST(Kitchen, ShippedWorldIsExactlyWhatTheGeneratorMakes) {
   }
 }
 
-// The evaluation layouts of recognition (docs/recognition.md): the galley and the L-shaped
-// check layout are shipped as generated worlds too, and must stay what their layouts make.
+// The evaluation layouts of recognition (docs/recognition.md): the galley, the L-shaped check
+// layout and the two tuning layouts are shipped as generated worlds too, and must stay what their
+// layouts make.
 TEST(Kitchen, ShippedEvaluationWorldsAreWhatTheirLayoutsMake) {
-  for (const std::string name : {"kitchen_galley", "kitchen_l"}) {
+  for (const std::string name :
+       {"kitchen_galley", "kitchen_l", "kitchen_tuning_corner", "kitchen_tuning_parallel"}) {
     const std::string layout = "config/layouts/" + name + ".yaml";
     const std::string world = "config/worlds/" + name + ".yaml";
     std::ifstream in(world, std::ios::binary);
