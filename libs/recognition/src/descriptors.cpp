@@ -23,10 +23,11 @@ struct Profile {
   explicit Profile(int bins)
       : low(static_cast<std::size_t>(bins), std::numeric_limits<double>::infinity()),
         high(static_cast<std::size_t>(bins), -std::numeric_limits<double>::infinity()) {}
-  void add(int bin, double value) {
-    low[static_cast<std::size_t>(bin)] = std::min(low[static_cast<std::size_t>(bin)], value);
-    high[static_cast<std::size_t>(bin)] = std::max(high[static_cast<std::size_t>(bin)], value);
+  void add(int bin, double lowest, double highest) {
+    low[static_cast<std::size_t>(bin)] = std::min(low[static_cast<std::size_t>(bin)], lowest);
+    high[static_cast<std::size_t>(bin)] = std::max(high[static_cast<std::size_t>(bin)], highest);
   }
+
   bool filled(std::size_t bin) const { return low[bin] <= high[bin]; }
   // [first, last) of the central bins.
   std::pair<std::size_t, std::size_t> central() const {
@@ -65,6 +66,29 @@ struct Profile {
     const double var = sxx - sx * sx / std::max(n, 1.0);
     if (n < 2.0 || var <= 0.0) return 0.0;
     return (sxy - sx * sy / n) / var;
+  }
+};
+
+// The extremes of the values added in one bin until the bin changes, kept in registers and
+// written to the profile then: along a run, consecutive pixels mostly share a bin of the
+// coordinate that changes slowly, and a store per pixel to the same bin was most of
+// blob_axes' time.
+struct PendingBin {
+  int bin = -1;
+  double lowest = 0.0, highest = 0.0;
+  void add(Profile& profile, int new_bin, double value) {
+    if (new_bin == bin) {
+      lowest = std::min(lowest, value);
+      highest = std::max(highest, value);
+      return;
+    }
+    flush(profile);
+    bin = new_bin;
+    lowest = highest = value;
+  }
+  void flush(Profile& profile) {
+    if (bin >= 0) profile.add(bin, lowest, highest);
+    bin = -1;
   }
 };
 
@@ -130,10 +154,13 @@ BlobAxes blob_axes(const Blob& blob) {
     const Eigen::Vector2d d0(run.u_begin - c.x(), run.v - c.y());
     double a = d0.dot(e1);
     double b = d0.dot(e2);
+    PendingBin major_bin, minor_bin;
     for (int u = run.u_begin; u < run.u_end; ++u, a += e1.x(), b += e2.x()) {
-      along_major.add(bin_of(b, out.b_min_px, b_bins), a);
-      along_minor.add(bin_of(a, out.a_min_px, a_bins), b);
+      major_bin.add(along_major, bin_of(b, out.b_min_px, b_bins), a);
+      minor_bin.add(along_minor, bin_of(a, out.a_min_px, a_bins), b);
     }
+    major_bin.flush(along_major);
+    minor_bin.flush(along_minor);
   }
   out.chord_ratio_major = along_major.chord_ratio();
   out.chord_ratio_minor = along_minor.chord_ratio();

@@ -188,8 +188,8 @@ std::array<std::int64_t, 3> rgb_sum(const std::uint8_t* row, int begin, int end)
 // The row pass over one run of pixels off the barrier from column `begin`: the run ends before
 // the first pixel that is on the barrier, whose step from its left neighbour is refused
 // (refused_step, of mark_refused_steps), that differs from the run's mean by more than
-// max_mean_step_grey in a channel (|c n - sum c| > max_mean_step_grey n, in integers; -1: no
-// such test), or with which the run's colour ellipsoid would reach
+// max_mean_step_grey in a channel (|c n - sum c| > max_mean_step_grey n, in integers), or with
+// which the run's colour ellipsoid would reach
 // V_max (then cut_by_edge is false). Returns the end and sets the run's colour sums and extremes.
 int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
              const std::uint8_t* refused_step, int begin, int width,
@@ -202,22 +202,20 @@ int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
   std::array<int, 3> allowed = volume_limit.allowed_ranges({lo_r, lo_g, lo_b}, {hi_r, hi_g, hi_b});
   int allowed_r = allowed[0], allowed_g = allowed[1], allowed_b = allowed[2];
   cut_by_edge = true;
+  // The run's sums (R, G, B): for the mean test, V_max's exact test and the run's statistics.
   int sum_r = lo_r, sum_g = lo_g, sum_b = lo_b;
   int u = begin + 1;
   for (; u < width; ++u) {
     if (on_barrier[u] != 0 || refused_step[3 * u] != 0) break;
     const std::uint8_t* q = row + 3 * u;
     const int r = q[2], g = q[1], b = q[0];
-    if (max_mean_step_grey >= 0) {
-      const int n = u - begin;
-      const int limit = max_mean_step_grey * n;
-      if (std::abs(r * n - sum_r) > limit || std::abs(g * n - sum_g) > limit ||
-          std::abs(b * n - sum_b) > limit) {
-        break;
-      }
-      sum_r += r;
-      sum_g += g;
-      sum_b += b;
+    // |c n - sum c| <= T n as one unsigned comparison: c n - sum c + T n in [0, 2 T n].
+    const int n = u - begin;
+    const unsigned limit = static_cast<unsigned>(max_mean_step_grey * n);
+    if (static_cast<unsigned>(r * n - sum_r) + limit > 2 * limit ||
+        static_cast<unsigned>(g * n - sum_g) + limit > 2 * limit ||
+        static_cast<unsigned>(b * n - sum_b) + limit > 2 * limit) {
+      break;
     }
     const int widened_lo_r = std::min(lo_r, r), widened_hi_r = std::max(hi_r, r);
     const int widened_lo_g = std::min(lo_g, g), widened_hi_g = std::max(hi_g, g);
@@ -230,7 +228,7 @@ int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
       const VolumeLimit::Verdict verdict = volume_limit.bounds(widened_lo, widened_hi);
       if (verdict == VolumeLimit::Verdict::refused ||
           (verdict == VolumeLimit::Verdict::undecided &&
-           !volume_limit.admits_exactly(rgb_sum(row, begin, u + 1), u + 1 - begin, widened_lo,
+           !volume_limit.admits_exactly({sum_r + r, sum_g + g, sum_b + b}, n + 1, widened_lo,
                                         widened_hi))) {
         cut_by_edge = false;
         break;
@@ -240,6 +238,9 @@ int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
       allowed_g = allowed[1];
       allowed_b = allowed[2];
     }
+    sum_r += r;
+    sum_g += g;
+    sum_b += b;
     lo_r = widened_lo_r;
     lo_g = widened_lo_g;
     lo_b = widened_lo_b;
@@ -247,7 +248,7 @@ int grow_run(const std::uint8_t* row, const std::uint8_t* on_barrier,
     hi_g = widened_hi_g;
     hi_b = widened_hi_b;
   }
-  run.rgb_sum = rgb_sum(row, begin, u);
+  run.rgb_sum = {sum_r, sum_g, sum_b};
   run.rgb_min = {static_cast<std::uint8_t>(lo_r), static_cast<std::uint8_t>(lo_g),
                  static_cast<std::uint8_t>(lo_b)};
   run.rgb_max = {static_cast<std::uint8_t>(hi_r), static_cast<std::uint8_t>(hi_g),
@@ -278,10 +279,11 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
 
   const int max_step_grey =
       static_cast<int>(std::floor(options.max_neighbour_difference_rgb * 255.0));
+  // 0 (off): a bound no run reaches, 255 grey levels from its mean.
   const int max_mean_step_grey =
       options.max_run_mean_difference_rgb > 0.0
           ? static_cast<int>(std::floor(options.max_run_mean_difference_rgb * 255.0))
-          : -1;
+          : 255;
   // Computed once per image: pixels on thin lines neither join nor let regions grow across them.
   const cv::Mat barrier = line_barrier(bgr_image, options);
 

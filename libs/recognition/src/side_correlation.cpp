@@ -205,8 +205,64 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
     a_z[i] = right_a[i].z();
     inverse_z[i] = 1.0 / a_z[i];
   }
+  // Step k's score from the right window's values (right_values) and their sum.
+  const auto score_step = [&](int k, double right_sum) {
+    const double right_mean = right_sum / static_cast<double>(n);
+    double dot = 0.0, right_norm2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = right_values[i] - right_mean;
+      dot += v * left_values[i];
+      right_norm2 += v * v;
+    }
+    // 2 cov / (var_l + var_r): the correlation, times 2 k / (1 + k^2) for a contrast ratio k of
+    // the two windows, so that a faint groove does not match a door's outer edge.
+    scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm * left_norm + right_norm2);
+    contrasts[static_cast<std::size_t>(k)] = std::sqrt(right_norm2) / left_norm;
+  };
   const bool constant_z = c_right_.z() == 0.0;
-  for (int k = 0; k < steps; ++k) {
+  // Where the right camera's centre lies on the left camera's x axis as well (C_y = C_z = 0: the
+  // simulated head, and any head whose frames are rectified) and the right image is not
+  // distorted, a sample's row y = A_y / A_z is the same at every step, and only its column
+  // moves: its two rows and their weights are looked up once (the values are those of sample(),
+  // computed the same way).
+  const bool rows_fixed = constant_z && c_right_.y() == 0.0 && !right_distorted_;
+  std::vector<const unsigned char*> row0(rows_fixed ? n : 0), row1(rows_fixed ? n : 0);
+  std::vector<double> fy(rows_fixed ? n : 0);
+  bool rows_inside = true;
+  for (std::size_t i = 0; i < row0.size() && rows_inside; ++i) {
+    const double y = a_y[i] * inverse_z[i];
+    rows_inside = y >= 0.0 && y < right_grey_.rows - 1;
+    if (!rows_inside) break;
+    const int y0 = static_cast<int>(y);
+    fy[i] = y - y0;
+    row0[i] = right_grey_.ptr<unsigned char>(y0);
+    row1[i] = right_grey_.ptr<unsigned char>(y0 + 1);
+  }
+  const double last_column = right_grey_.cols - 1;
+  for (int k = 0; k < steps && rows_fixed; ++k) {
+    if (!rows_inside) break;  // a sample off the image's rows at every step: all scores stay -2
+    const double cx = (lambda_min + k * step) * c_right_.x();
+    bool inside = true;
+    double right_mean = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = (a_x[i] - cx) * inverse_z[i];
+      if (!(x >= 0.0 && x < last_column)) {
+        inside = false;
+        break;
+      }
+      const int x0 = static_cast<int>(x);
+      const double fx = x - x0;
+      const unsigned char* r0 = row0[i] + x0;
+      const unsigned char* r1 = row1[i] + x0;
+      const double value = (1.0 - fy[i]) * ((1.0 - fx) * r0[0] + fx * r0[1]) +
+                           fy[i] * ((1.0 - fx) * r1[0] + fx * r1[1]);
+      right_values[i] = value;
+      right_mean += value;
+    }
+    if (!inside) continue;
+    score_step(k, right_mean);
+  }
+  for (int k = 0; k < steps && !rows_fixed; ++k) {
     const double lambda = lambda_min + k * step;
     const double cx = lambda * c_right_.x(), cy = lambda * c_right_.y();
     const double cz = lambda * c_right_.z();
@@ -234,17 +290,7 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
       right_mean += value;
     }
     if (!inside) continue;
-    right_mean /= static_cast<double>(n);
-    double dot = 0.0, right_norm2 = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double v = right_values[i] - right_mean;
-      dot += v * left_values[i];
-      right_norm2 += v * v;
-    }
-    // 2 cov / (var_l + var_r): the correlation, times 2 k / (1 + k^2) for a contrast ratio k of
-    // the two windows, so that a faint groove does not match a door's outer edge.
-    scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm * left_norm + right_norm2);
-    contrasts[static_cast<std::size_t>(k)] = std::sqrt(right_norm2) / left_norm;
+    score_step(k, right_mean);
   }
   const auto best = std::max_element(scores.begin(), scores.end());
   if (*best < -1.5) return std::nullopt;
