@@ -193,6 +193,30 @@ TEST_F(SideCorrelationTest, FindsTheSideFromAWrongStart) {
   }
 }
 
+// With the right camera's centre on the left camera's x axis (this rectified head), the sweep
+// looks each sample's rows up once; a centre a picometre off that axis takes the general path,
+// which must score the same.
+TEST_F(SideCorrelationTest, TheRectifiedSweepScoresAsTheGeneralOne) {
+  const detail::SideCorrelator rectified(left_grey_, right_grey_, calibration_.left,
+                                         calibration_.right, left_T_right_, up());
+  Eigen::Isometry3d off_axis = left_T_right_;
+  off_axis.translation().z() += 1e-12;
+  const detail::SideCorrelator general(left_grey_, right_grey_, calibration_.left,
+                                       calibration_.right, off_axis, up());
+  const std::array<Eigen::Vector3d, 4> c = door_.corners();
+  for (const auto& [top, bottom] : {std::pair{0, 3}, std::pair{1, 2}}) {
+    const double start_m = 1.1 * rectified.horizontal_distance(c[top]);
+    const auto a =
+        rectified.correlate(left_px(c[top]), left_px(c[bottom]), start_m, 12.0, 0.3, 6.0);
+    const auto b = general.correlate(left_px(c[top]), left_px(c[bottom]), start_m, 12.0, 0.3, 6.0);
+    ASSERT_TRUE(a.has_value());
+    ASSERT_TRUE(b.has_value());
+    EXPECT_NEAR(a->horizontal_distance_m, b->horizontal_distance_m, 1e-9);
+    EXPECT_NEAR(a->correlation, b->correlation, 1e-9);
+    EXPECT_NEAR(a->second_correlation, b->second_correlation, 1e-9);
+  }
+}
+
 TEST_F(SideCorrelationTest, TheOuterEdgeIsNotTakenForTheGroove) {
   // The groove inside the right stile is a line of the door's own colour, 25 grey levels darker;
   // the side, door against wall, has 120. Started where the groove is (the disparity of a right
