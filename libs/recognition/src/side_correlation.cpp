@@ -1,5 +1,6 @@
 #include "side_correlation.hpp"
 
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/core/mat.hpp>
 
 #include <algorithm>
@@ -262,20 +263,40 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
     if (!inside) continue;
     score_step(k, right_mean);
   }
+  // Otherwise each step projects every sample anew: the projections first, two samples at a
+  // time (one packed division for both), then the samples. The same operations in the same
+  // order as one at a time, so the same values.
+  std::vector<double> xs(rows_fixed ? 0 : n), ys(rows_fixed ? 0 : n);
+  const auto project_all = [&](double cx, double cy, double cz) {
+    const cv::v_float64x2 v_cx = cv::v_setall_f64(cx), v_cy = cv::v_setall_f64(cy);
+    const cv::v_float64x2 v_cz = cv::v_setall_f64(cz), v_min_z = cv::v_setall_f64(1e-9);
+    const cv::v_float64x2 one = cv::v_setall_f64(1.0);
+    std::size_t i = 0;
+    for (; i + 2 <= n; i += 2) {
+      const cv::v_float64x2 z = cv::v_load(&a_z[i]) - v_cz;
+      if (cv::v_signmask(z > v_min_z) != 3) return false;  // behind the camera (or not a number)
+      const cv::v_float64x2 r = constant_z ? cv::v_load(&inverse_z[i]) : one / z;
+      cv::v_store(&xs[i], (cv::v_load(&a_x[i]) - v_cx) * r);
+      cv::v_store(&ys[i], (cv::v_load(&a_y[i]) - v_cy) * r);
+    }
+    for (; i < n; ++i) {
+      const double z = a_z[i] - cz;
+      if (!(z > 1e-9)) return false;
+      const double r = constant_z ? inverse_z[i] : 1.0 / z;
+      xs[i] = (a_x[i] - cx) * r;
+      ys[i] = (a_y[i] - cy) * r;
+    }
+    return true;
+  };
   for (int k = 0; k < steps && !rows_fixed; ++k) {
     const double lambda = lambda_min + k * step;
-    const double cx = lambda * c_right_.x(), cy = lambda * c_right_.y();
-    const double cz = lambda * c_right_.z();
+    if (!project_all(lambda * c_right_.x(), lambda * c_right_.y(), lambda * c_right_.z())) {
+      continue;
+    }
     bool inside = true;
     double right_mean = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      const double z = a_z[i] - cz;
-      if (!(z > 1e-9)) {
-        inside = false;
-        break;
-      }
-      const double r = constant_z ? inverse_z[i] : 1.0 / z;
-      double x = (a_x[i] - cx) * r, y = (a_y[i] - cy) * r;
+      double x = xs[i], y = ys[i];
       if (right_distorted_) {
         const Eigen::Vector2d raw = distort(Eigen::Vector2d(x, y), right_);
         x = raw.x();
