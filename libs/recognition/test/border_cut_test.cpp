@@ -182,9 +182,10 @@ TEST_F(BorderCutTest, WidthSideTiltAndEdgeGates) {
   EXPECT_TRUE(match({grazing.left}, {grazing.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
   EXPECT_LT(trace[0].value, 0.2);
-  // The right image's outline 30 px narrower: another strip of doors, not this door.
+  // The right image's outline 60 px narrower (its width ratio past 1.6, the area ratio's bound):
+  // another strip of doors, not this door.
   Pair narrow = p;
-  for (const int k : {1, 2}) narrow.right.corners_px[k].x() -= 30.0;
+  for (const int k : {1, 2}) narrow.right.corners_px[k].x() -= 60.0;
   EXPECT_TRUE(match({narrow.left}, {narrow.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kAreaRatio);
 }
