@@ -231,8 +231,13 @@ TEST_F(BorderCutTest, TwoHandlesInsideAreDrawersOrDoorsMerged) {
   handle.reference_px = p.left.reference_px - Eigen::Vector2d(0.0, 30.0);
   Detection second = handle;
   second.reference_px.x() += 12.0;
+  Detection third = second;
+  third.reference_px.x() += 12.0;
   std::vector<StereoPairTrace> trace;
-  // One handle inside (a door carries one): kept. Two: refused.
+  // A cut pair is held to the pairs' bound, as a whole pair is: a door carries one handle, and a
+  // double door's second one may stand inside the outline's slack. With a bound of 1, two are
+  // refused.
+  options_.pair_max_bars_inside = 1;
   EXPECT_EQ(match({p.left, handle}, {p.right}).size(), 1u);
   EXPECT_TRUE(match({p.left, handle, second}, {p.right}, &trace).empty());
   ASSERT_FALSE(trace.empty());
@@ -245,6 +250,14 @@ TEST_F(BorderCutTest, TwoHandlesInsideAreDrawersOrDoorsMerged) {
   EXPECT_EQ(match({p.left, handle, at_side}, {p.right}).size(), 1u);
   at_side.reference_px.x() = p.left.corners_px[2].x() - 3.0;
   EXPECT_TRUE(match({p.left, handle, at_side}, {p.right}).empty());
+  // The shipped bound, 2: two handles kept, three refused; the single views' bound (1) does not
+  // apply to pairs.
+  options_.pair_max_bars_inside = 2;
+  options_.single_view_max_bars_inside = 1;
+  EXPECT_EQ(match({p.left, handle, second}, {p.right}).size(), 1u);
+  EXPECT_TRUE(match({p.left, handle, second, third}, {p.right}, &trace).empty());
+  ASSERT_FALSE(trace.empty());
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kBarsInside);
 }
 
 TEST_F(BorderCutTest, PairsOnlyWithADetectionCutAlongTheSameBorderOfAConfiguredClass) {

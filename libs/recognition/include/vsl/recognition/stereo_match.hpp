@@ -149,7 +149,7 @@ struct StereoMatchOptions {
   // split off is narrower) and seen from within about 78 deg of head-on, the sides' visible
   // length is at least half the least typical height (a door half in view; a drawer front of the
   // same colour is shorter) and at most 1.05 times the tallest, at most
-  // single_view_max_bars_inside bar detections (handles) lie inside each outline, and the centre
+  // pair_max_bars_inside bar detections (handles) lie inside each outline, and the centre
   // is within the depth range. With min_side_correlation, each side is placed where the images
   // around it correlate, as for whole outlines, when that peak is clear (min_peak_margin). The
   // centre is the edge's middle moved half the door's height (typical_heights_m) along the up
@@ -298,8 +298,8 @@ enum class StereoGate {
   kExtent,
   kHeight,
   kWeakPair,  // both detections weak (Detection::needs_partner)
-  // more bar detections inside an outline than allowed (border-cut doors:
-  // single_view_max_bars_inside; whole door pairs: pair_max_bars_inside)
+  // more bar detections inside an outline than allowed (door pairs, whole or cut by the border:
+  // pair_max_bars_inside; single views: single_view_max_bars_inside)
   kBarsInside,
   // bar detections on an outline one above another (max_bar_height_spread)
   kStackedBars
