@@ -58,38 +58,35 @@ void add_colours(const std::uint8_t* row, int u_begin, int u_end, ColourStatisti
   // 16-bit lane before widening).
   int u = u_begin;
   if (u_end - u >= 16) {
-    cv::v_uint8x16 lo_r = cv::v_setall_u8(255), lo_g = lo_r, lo_b = lo_r;
-    cv::v_uint8x16 hi_r = cv::v_setzero_u8(), hi_g = hi_r, hi_b = hi_r;
-    cv::v_uint32x4 total_r = cv::v_setzero_u32(), total_g = total_r, total_b = total_r;
-    const auto accumulate = [](const cv::v_uint8x16& channel, cv::v_uint32x4& total) {
-      cv::v_uint16x8 low, high;
-      cv::v_expand(channel, low, high);
-      cv::v_uint32x4 a, b;
-      cv::v_expand(low + high, a, b);
-      total += a + b;
+    struct Lanes {
+      cv::v_uint8x16 lowest = cv::v_setall_u8(255), highest = cv::v_setzero_u8();
+      cv::v_uint32x4 total = cv::v_setzero_u32();
+      void add(const cv::v_uint8x16& channel) {
+        lowest = cv::v_min(lowest, channel);
+        highest = cv::v_max(highest, channel);
+        cv::v_uint16x8 low, high;
+        cv::v_expand(channel, low, high);
+        cv::v_uint32x4 a, b;
+        cv::v_expand(low + high, a, b);
+        total += a + b;
+      }
+      void fold_into(std::int64_t& sum, int& min, int& max) const {
+        sum += cv::v_reduce_sum(total);
+        min = std::min<int>(min, cv::v_reduce_min(lowest));
+        max = std::max<int>(max, cv::v_reduce_max(highest));
+      }
     };
+    Lanes lanes_r, lanes_g, lanes_b;
     for (; u + 16 <= u_end; u += 16) {
       cv::v_uint8x16 b, g, r;
       cv::v_load_deinterleave(row + 3 * u, b, g, r);
-      lo_r = cv::v_min(lo_r, r);
-      lo_g = cv::v_min(lo_g, g);
-      lo_b = cv::v_min(lo_b, b);
-      hi_r = cv::v_max(hi_r, r);
-      hi_g = cv::v_max(hi_g, g);
-      hi_b = cv::v_max(hi_b, b);
-      accumulate(r, total_r);
-      accumulate(g, total_g);
-      accumulate(b, total_b);
+      lanes_r.add(r);
+      lanes_g.add(g);
+      lanes_b.add(b);
     }
-    sum_r += cv::v_reduce_sum(total_r);
-    sum_g += cv::v_reduce_sum(total_g);
-    sum_b += cv::v_reduce_sum(total_b);
-    min_r = std::min<int>(min_r, cv::v_reduce_min(lo_r));
-    min_g = std::min<int>(min_g, cv::v_reduce_min(lo_g));
-    min_b = std::min<int>(min_b, cv::v_reduce_min(lo_b));
-    max_r = std::max<int>(max_r, cv::v_reduce_max(hi_r));
-    max_g = std::max<int>(max_g, cv::v_reduce_max(hi_g));
-    max_b = std::max<int>(max_b, cv::v_reduce_max(hi_b));
+    lanes_r.fold_into(sum_r, min_r, max_r);
+    lanes_g.fold_into(sum_g, min_g, max_g);
+    lanes_b.fold_into(sum_b, min_b, max_b);
   }
   for (const std::uint8_t* bgr = row + 3 * u; bgr != row + 3 * u_end; bgr += 3) {
     const int r = bgr[2], g = bgr[1], b = bgr[0];
