@@ -27,14 +27,17 @@ constexpr double kMinWindowStdDev = 2.0;
 constexpr int kDistinctPeakSteps = 3;
 
 // Bilinear grey value at raw pixel (x, y); false outside the image.
+// Bilinear interpolation between the pixels row0[0], row0[1] (above) and row1[0], row1[1].
+double bilinear(const unsigned char* row0, const unsigned char* row1, double fx, double fy) {
+  return (1.0 - fy) * ((1.0 - fx) * row0[0] + fx * row0[1]) +
+         fy * ((1.0 - fx) * row1[0] + fx * row1[1]);
+}
+
 bool sample(const cv::Mat& grey, double x, double y, double& value) {
   if (!(x >= 0.0 && y >= 0.0 && x < grey.cols - 1 && y < grey.rows - 1)) return false;
   const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
-  const double fx = x - x0, fy = y - y0;
-  const unsigned char* row0 = grey.ptr<unsigned char>(y0) + x0;
-  const unsigned char* row1 = grey.ptr<unsigned char>(y0 + 1) + x0;
-  value = (1.0 - fy) * ((1.0 - fx) * row0[0] + fx * row0[1]) +
-          fy * ((1.0 - fx) * row1[0] + fx * row1[1]);
+  value = bilinear(grey.ptr<unsigned char>(y0) + x0, grey.ptr<unsigned char>(y0 + 1) + x0, x - x0,
+                   y - y0);
   return true;
 }
 
@@ -224,94 +227,84 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
   // Where the right camera's centre lies on the left camera's x axis as well (C_y = C_z = 0: the
   // simulated head, and any head whose frames are rectified) and the right image is not
   // distorted, a sample's row y = A_y / A_z is the same at every step, and only its column
-  // moves: its two rows and their weights are looked up once (the values are those of sample(),
-  // computed the same way).
-  const bool rows_fixed = constant_z && c_right_.y() == 0.0 && !right_distorted_;
-  std::vector<const unsigned char*> row0(rows_fixed ? n : 0), row1(rows_fixed ? n : 0);
-  std::vector<double> fy(rows_fixed ? n : 0);
-  bool rows_inside = true;
-  for (std::size_t i = 0; i < row0.size() && rows_inside; ++i) {
-    const double y = a_y[i] * inverse_z[i];
-    rows_inside = y >= 0.0 && y < right_grey_.rows - 1;
-    if (!rows_inside) break;
-    const int y0 = static_cast<int>(y);
-    fy[i] = y - y0;
-    row0[i] = right_grey_.ptr<unsigned char>(y0);
-    row1[i] = right_grey_.ptr<unsigned char>(y0 + 1);
-  }
-  const double last_column = right_grey_.cols - 1;
-  for (int k = 0; k < steps && rows_fixed; ++k) {
-    if (!rows_inside) break;  // a sample off the image's rows at every step: all scores stay -2
-    const double cx = (lambda_min + k * step) * c_right_.x();
-    bool inside = true;
-    double right_mean = 0.0;
+  // moves: its two rows and their weight are looked up once (the values are sample()'s).
+  if (constant_z && c_right_.y() == 0.0 && !right_distorted_) {
+    std::vector<const unsigned char*> row0(n), row1(n);
+    std::vector<double> fy(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const double x = (a_x[i] - cx) * inverse_z[i];
-      if (!(x >= 0.0 && x < last_column)) {
-        inside = false;
-        break;
+      const double y = a_y[i] * inverse_z[i];
+      // A sample off the image's rows at every step: all scores stay -2.
+      if (!(y >= 0.0 && y < right_grey_.rows - 1)) return std::nullopt;
+      const int y0 = static_cast<int>(y);
+      fy[i] = y - y0;
+      row0[i] = right_grey_.ptr<unsigned char>(y0);
+      row1[i] = right_grey_.ptr<unsigned char>(y0 + 1);
+    }
+    const double last_column = right_grey_.cols - 1;
+    for (int k = 0; k < steps; ++k) {
+      const double cx = (lambda_min + k * step) * c_right_.x();
+      bool inside = true;
+      double right_sum = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double x = (a_x[i] - cx) * inverse_z[i];
+        if (!(x >= 0.0 && x < last_column)) {
+          inside = false;
+          break;
+        }
+        const int x0 = static_cast<int>(x);
+        right_values[i] = bilinear(row0[i] + x0, row1[i] + x0, x - x0, fy[i]);
+        right_sum += right_values[i];
       }
-      const int x0 = static_cast<int>(x);
-      const double fx = x - x0;
-      const unsigned char* r0 = row0[i] + x0;
-      const unsigned char* r1 = row1[i] + x0;
-      const double value = (1.0 - fy[i]) * ((1.0 - fx) * r0[0] + fx * r0[1]) +
-                           fy[i] * ((1.0 - fx) * r1[0] + fx * r1[1]);
-      right_values[i] = value;
-      right_mean += value;
+      if (inside) score_step(k, right_sum);
     }
-    if (!inside) continue;
-    score_step(k, right_mean);
-  }
-  // Otherwise each step projects every sample anew: the projections first, two samples at a
-  // time (one packed division for both), then the samples. The same operations in the same
-  // order as one at a time, so the same values.
-  std::vector<double> xs(rows_fixed ? 0 : n), ys(rows_fixed ? 0 : n);
-  const auto project_all = [&](double cx, double cy, double cz) {
-    const cv::v_float64x2 v_cx = cv::v_setall_f64(cx), v_cy = cv::v_setall_f64(cy);
-    const cv::v_float64x2 v_cz = cv::v_setall_f64(cz), v_min_z = cv::v_setall_f64(1e-9);
-    const cv::v_float64x2 one = cv::v_setall_f64(1.0);
-    std::size_t i = 0;
-    for (; i + 2 <= n; i += 2) {
-      const cv::v_float64x2 z = cv::v_load(&a_z[i]) - v_cz;
-      if (cv::v_signmask(z > v_min_z) != 3) return false;  // behind the camera (or not a number)
-      const cv::v_float64x2 r = constant_z ? cv::v_load(&inverse_z[i]) : one / z;
-      cv::v_store(&xs[i], (cv::v_load(&a_x[i]) - v_cx) * r);
-      cv::v_store(&ys[i], (cv::v_load(&a_y[i]) - v_cy) * r);
-    }
-    for (; i < n; ++i) {
-      const double z = a_z[i] - cz;
-      if (!(z > 1e-9)) return false;
-      const double r = constant_z ? inverse_z[i] : 1.0 / z;
-      xs[i] = (a_x[i] - cx) * r;
-      ys[i] = (a_y[i] - cy) * r;
-    }
-    return true;
-  };
-  for (int k = 0; k < steps && !rows_fixed; ++k) {
-    const double lambda = lambda_min + k * step;
-    if (!project_all(lambda * c_right_.x(), lambda * c_right_.y(), lambda * c_right_.z())) {
-      continue;
-    }
-    bool inside = true;
-    double right_mean = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      double x = xs[i], y = ys[i];
-      if (right_distorted_) {
-        const Eigen::Vector2d raw = distort(Eigen::Vector2d(x, y), right_);
-        x = raw.x();
-        y = raw.y();
+  } else {
+    // Each step projects every sample anew: the projections first, two samples at a time (one
+    // packed division for both), then the samples. The same operations in the same order as
+    // one at a time, so the same values.
+    std::vector<double> xs(n), ys(n);
+    const auto project_all = [&](double cx, double cy, double cz) {
+      const cv::v_float64x2 v_cx = cv::v_setall_f64(cx), v_cy = cv::v_setall_f64(cy);
+      const cv::v_float64x2 v_cz = cv::v_setall_f64(cz), v_min_z = cv::v_setall_f64(1e-9);
+      const cv::v_float64x2 one = cv::v_setall_f64(1.0);
+      std::size_t i = 0;
+      for (; i + 2 <= n; i += 2) {
+        const cv::v_float64x2 z = cv::v_load(&a_z[i]) - v_cz;
+        if (cv::v_signmask(z > v_min_z) != 3) return false;  // behind the camera (or not a number)
+        const cv::v_float64x2 r = constant_z ? cv::v_load(&inverse_z[i]) : one / z;
+        cv::v_store(&xs[i], (cv::v_load(&a_x[i]) - v_cx) * r);
+        cv::v_store(&ys[i], (cv::v_load(&a_y[i]) - v_cy) * r);
       }
-      double value = 0.0;
-      if (!sample(right_grey_, x, y, value)) {
-        inside = false;
-        break;
+      for (; i < n; ++i) {
+        const double z = a_z[i] - cz;
+        if (!(z > 1e-9)) return false;
+        const double r = constant_z ? inverse_z[i] : 1.0 / z;
+        xs[i] = (a_x[i] - cx) * r;
+        ys[i] = (a_y[i] - cy) * r;
       }
-      right_values[i] = value;
-      right_mean += value;
+      return true;
+    };
+    for (int k = 0; k < steps; ++k) {
+      const double lambda = lambda_min + k * step;
+      if (!project_all(lambda * c_right_.x(), lambda * c_right_.y(), lambda * c_right_.z())) {
+        continue;
+      }
+      bool inside = true;
+      double right_sum = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        double x = xs[i], y = ys[i];
+        if (right_distorted_) {
+          const Eigen::Vector2d raw = distort(Eigen::Vector2d(x, y), right_);
+          x = raw.x();
+          y = raw.y();
+        }
+        if (!sample(right_grey_, x, y, right_values[i])) {
+          inside = false;
+          break;
+        }
+        right_sum += right_values[i];
+      }
+      if (inside) score_step(k, right_sum);
     }
-    if (!inside) continue;
-    score_step(k, right_mean);
   }
   const auto best = std::max_element(scores.begin(), scores.end());
   if (*best < -1.5) return std::nullopt;
