@@ -198,8 +198,11 @@ INSTANTIATE_TEST_SUITE_P(
 // An ambiguous start: the one-gaze scan of config/vsl-localizer-ambiguous.yaml leaves several
 // hypotheses from this pose; only active validation (paper §2.4.2) resolves it. Which frames the
 // scan takes depends on the head's timing (the simulator moves in wall-clock time), so the first
-// scan's few percepts vary from run to run and not every run resolves: up to three runs, at least
-// one resolved by an active look within 5 cm and 2 degrees, and none confidently wrong. A run
+// scan's few percepts vary from run to run and not every run resolves: up to five runs, at least
+// one resolved by an active look within 5 cm and 2 degrees, and none confidently wrong (under
+// heavy load, as ctest -j2 beside other work, the scan's frames see more: on this VM with three
+// evaluations running beside it, 2 of 6 runs localized at once, and three runs were not always
+// enough). A run
 // whose scan already settles the place, but not precisely enough, takes precision looks
 // (docs/localizer-daemon.md), which are active looks too; one whose scan localizes at once does
 // not count, and the next run is tried. A recognizer that finds more lets that one gaze see
@@ -208,7 +211,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(FullPipelineAmbiguousStart, ResolvedByActiveValidation) {
   bool resolved = false;
   std::string outputs;
-  for (int attempt = 0; attempt < 3 && !resolved; ++attempt) {
+  for (int attempt = 0; attempt < 5 && !resolved; ++attempt) {
     Pipeline::Options options = Pipeline::live(17845, "2.504,2.967,0,-43.8");
     options.localizer_config = "config/vsl-localizer-ambiguous.yaml";
     Pipeline pipeline(options);
