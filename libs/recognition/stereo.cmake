@@ -8,6 +8,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/border_cut.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_cut_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/corner_cut_door.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/occluder_cut_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/occluded_corner_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
@@ -24,6 +25,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/cut_bar_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/occluder_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/twin_handle_split_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/one_side_door_test.cpp

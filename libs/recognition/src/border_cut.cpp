@@ -89,6 +89,16 @@ std::optional<Candidate> judge_border_cut_pair(
   if ((cut != BorderCut::kTop && cut != BorderCut::kBottom) || right.detection.border_cut != cut) {
     return refuse(trace, StereoGate::kEpipolar, 0.0, 0.0);
   }
+  return judge_pair_cut_along(cut, l, r, left, right, epipolar, triangulator, correlator,
+                              up_in_left_camera, options, door, reference_offset_m, trace);
+}
+
+std::optional<Candidate> judge_pair_cut_along(
+    BorderCut cut, int l, int r, const BorderCutView& left, const BorderCutView& right,
+    const EpipolarGeometry& epipolar, const Triangulator& triangulator,
+    const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
+    const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
+    double reference_offset_m, StereoPairTrace& trace) {
   // Position: the whole edge's two corners on each other's epipolar lines (a strip of shadow
   // along that edge in one image only moves them along the sides by a few per cent of the
   // visible height).

@@ -64,4 +64,15 @@ std::optional<Candidate> judge_border_cut_pair(
     const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
     double reference_offset_m, StereoPairTrace& trace);
 
+// The same judgement for a pair whose outlines are cut along their top (kTop) or bottom
+// (kBottom) edge by something other than the border (an occluder's contour: occluder_cut_door.hpp),
+// whatever their detections' border_cut: the two corners on that side are where the vertical
+// sides meet the cut, and the whole edge is the opposite one.
+std::optional<Candidate> judge_pair_cut_along(
+    BorderCut cut, int l, int r, const BorderCutView& left, const BorderCutView& right,
+    const EpipolarGeometry& epipolar, const Triangulator& triangulator,
+    const SideCorrelator* correlator, const Eigen::Vector3d& up_in_left_camera,
+    const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
+    double reference_offset_m, StereoPairTrace& trace);
+
 }  // namespace vsl::recognition::detail

@@ -19,6 +19,7 @@
 #include "door_pair.hpp"
 #include "epipolar.hpp"
 #include "occluded_corner_door.hpp"
+#include "occluder_cut_door.hpp"
 #include "one_side_door.hpp"
 #include "pair_refusal.hpp"
 #include "side_correlation.hpp"
@@ -435,6 +436,23 @@ std::vector<StereoPercept> match_and_triangulate(
       std::optional<detail::Candidate> c;
       if (!cut) {
         c = judge(l, r, trace);
+        // Too short for a door, or an edge sloping: perhaps an occluder hides the door's lower
+        // part in both images (occluder_cut_door.hpp, Doors item 28). The first refusal stays
+        // in the trace unless the pair is so placed.
+        const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, left[l].type);
+        if (!c && door && door->occluder_cut && detail::may_be_occluder_cut(trace) &&
+            left_corners[l].size() == 4 && right_corners[r].size() == 4 &&
+            up_in_left_camera.norm() > 0.0) {
+          StereoPairTrace retry;
+          retry.left_detection = l;
+          retry.right_detection = r;
+          c = detail::judge_occluder_cut_pair(
+              l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
+              {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
+              correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options, *door,
+              reference_depth_offset(options, left[l].type), retry);
+          if (c) trace = retry;
+        }
       } else if (const detail::BarVerdict bars = judge_bars(
                      left[l], right[r],
                      options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);

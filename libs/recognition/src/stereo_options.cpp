@@ -139,7 +139,8 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       door.expect_map();
       door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
                         "max_side_tilt_rad", "min_peak_margin", "from_one_side", "merged_side",
-                        "occluded_corner", "typical_width_m", "width_sigma_m"});
+                        "occluded_corner", "occluder_cut", "occluder_cut_min_level_visible_m",
+                        "typical_width_m", "width_sigma_m"});
       StereoMatchOptions::BorderCutDoor parsed;
       parsed.type = type;
       const config::Node heights = door.at("typical_heights_m");
@@ -182,6 +183,16 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         if (parsed.occluded_corner && !(out.max_side_tilt_rad > 0.0)) {
           v->fail("needs max_side_tilt_rad > 0 (the good side's test)");
         }
+      }
+      if (const auto v = door.find("occluder_cut")) {
+        parsed.occluder_cut = v->as_bool();
+        // The sides are judged by the cut pairs' side gate.
+        if (parsed.occluder_cut && !(parsed.max_side_tilt_rad > 0.0)) {
+          v->fail("needs max_side_tilt_rad > 0 (the sides' test)");
+        }
+      }
+      if (const auto v = door.find("occluder_cut_min_level_visible_m")) {
+        parsed.occluder_cut_min_level_visible_m = v->as_double_in(0.0, 100.0);
       }
       if (const auto v = door.find("typical_width_m")) {
         parsed.typical_width_m = v->as_double_in(0.0, 100.0);

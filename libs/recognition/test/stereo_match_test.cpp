@@ -674,7 +674,8 @@ stereo:
   border_cut:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
-           merged_side: true, occluded_corner: true, typical_width_m: 0.45, width_sigma_m: 0.08}
+           merged_side: true, occluded_corner: true, occluder_cut: true,
+           occluder_cut_min_level_visible_m: 0.38, typical_width_m: 0.45, width_sigma_m: 0.08}
   cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}
 )",
                                               "stereo.yaml");
@@ -719,6 +720,8 @@ stereo:
   EXPECT_TRUE(o.border_cut[0].from_one_side);
   EXPECT_TRUE(o.border_cut[0].occluded_corner);
   EXPECT_TRUE(o.border_cut[0].merged_side);
+  EXPECT_TRUE(o.border_cut[0].occluder_cut);
+  EXPECT_EQ(o.border_cut[0].occluder_cut_min_level_visible_m, 0.38);
   EXPECT_EQ(o.border_cut[0].typical_width_m, 0.45);
   ASSERT_EQ(o.cut_bars.size(), 1u);
   EXPECT_EQ(o.cut_bars[0].type, "handle");
@@ -840,6 +843,16 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                       "max_side_tilt_rad > 0"),
             std::string::npos);
   EXPECT_EQ(cut_door_error("occluded_corner: true", "  max_side_tilt_rad: 0.03\n"), "");
+  // A door cut by an occluder (item 28) is judged by the cut doors' side gate.
+  EXPECT_NE(cut_door_error("occluder_cut: true")
+                .find("s.yaml:2: stereo.border_cut.door.occluder_cut: needs "
+                      "max_side_tilt_rad > 0"),
+            std::string::npos)
+      << cut_door_error("occluder_cut: true");
+  EXPECT_EQ(cut_door_error("occluder_cut: true, max_side_tilt_rad: 0.09"), "");
+  EXPECT_NE(cut_door_error("occluder_cut_min_level_visible_m: -1")
+                .find("stereo.border_cut.door.occluder_cut_min_level_visible_m"),
+            std::string::npos);
   // Doors cut by the left or right border (item 20): a door's width, the whole side judged by
   // the whole outlines' side gate.
   EXPECT_NE(cut_door_error("typical_width_m: 0.2", "  max_side_tilt_rad: 0.03\n")

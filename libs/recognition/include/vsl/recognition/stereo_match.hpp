@@ -211,6 +211,19 @@ struct StereoMatchOptions {
     // single_view_max_bars_inside handles inside each outline. The other gates of a pair then
     // apply; its covariance is a pair's.
     bool occluded_corner = false;
+    // A pair of whole door outlines that the height gate finds too short (height_range_m) or the
+    // level-edge gate refuses (max_edge_slope_rad), whose top edge is level in 3D (within 0.1
+    // rad), judged as a door cut along its bottom edge as the image border cuts one (the
+    // border_cut gates above: the sides vertical, the top edge level and min_width_m ..
+    // max_width_m long, the visible height at least half the least typical height, the centre
+    // from a typical height): an occluder in front of the door (a chair's seat, the table's top)
+    // hides its lower part in both images, and the outlines end at the occluder's contour
+    // (occluder_cut_door.hpp, Doors item 28).
+    bool occluder_cut = false;
+    // With occluder_cut: a pair whose cut edge is level too (within 0.05 rad, as a table's
+    // edge along the cupboards is) shows at least this much of the door, metres: a drawer front
+    // of the door's colour, both edges level, is at most this tall.
+    double occluder_cut_min_level_visible_m = 0.0;
     // Doors cut along a whole vertical side by the left or right image border (Detection::
     // border_cut kLeft, kRight; side_cut_door.hpp, Doors item 20), placed from the side they
     // show whole and this width: two detections cut along the same border pair when that side's
