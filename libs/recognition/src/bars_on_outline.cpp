@@ -65,12 +65,41 @@ double bar_height_spread(const std::vector<Detection>& detections, const Detecti
   return count >= 2 ? (highest - lowest) / height_px : 0.0;
 }
 
+bool bars_inside_at_one_side(const std::vector<Detection>& detections, const Detection& outline,
+                             const StereoMatchOptions& options, double band) {
+  const std::vector<Eigen::Vector2d>& c = outline.corners_px;
+  if (c.size() != 4 || !(band > 0.0)) return false;
+  // Corners clockwise from the top left (quadrilateral.hpp): the outline's horizontal axis runs
+  // from the middle of its left side (3, 0) to the middle of its right side (1, 2); a bar's
+  // place across it is its reference point's projection on that axis, 0 at the left side, 1 at
+  // the right.
+  const Eigen::Vector2d left = 0.5 * (c[0] + c[3]);
+  const Eigen::Vector2d axis = 0.5 * (c[1] + c[2]) - left;
+  const double width2 = axis.squaredNorm();
+  if (!(width2 > 0.0)) return false;
+  int at_left = 0, at_right = 0, inside = 0;
+  for (const Detection& d : detections) {
+    if (!is_bar_type(options, d.type)) continue;
+    if (depth_inside_convex(c, c.size(), d.reference_px) < kBarInsideMarginPx) continue;
+    ++inside;
+    const double across = (d.reference_px - left).dot(axis) / width2;
+    at_left += across <= band;
+    at_right += across >= 1.0 - band;
+  }
+  return inside > 0 && (at_left == inside || at_right == inside);
+}
+
 BarVerdict judge_bars_on_outline(const std::vector<Detection>& detections, const Detection& outline,
                                  int max_bars_inside, const StereoMatchOptions& options) {
   if (outline.corners_px.empty()) return {};
   if (max_bars_inside >= 0) {
     const int bars = bars_inside(detections, outline, options);
-    if (bars > max_bars_inside) {
+    // Two where one is allowed, both by one side: a door's own handle and its double-door
+    // neighbour's beyond the reveal (StereoMatchOptions::neighbour_handle_side_band).
+    const bool neighbour_at_side =
+        bars == 2 && max_bars_inside == 1 &&
+        bars_inside_at_one_side(detections, outline, options, options.neighbour_handle_side_band);
+    if (bars > max_bars_inside && !neighbour_at_side) {
       return {StereoGate::kBarsInside, static_cast<double>(bars),
               static_cast<double>(max_bars_inside)};
     }

@@ -28,10 +28,17 @@ int bars_inside(const std::vector<Detection>& detections, const Detection& outli
 double bar_height_spread(const std::vector<Detection>& detections, const Detection& outline,
                          const StereoMatchOptions& options);
 
+// Whether every bar detection inside `outline` (as bars_inside counts) lies within `band` of its
+// width from the same vertical side (along the line between the sides' middles), and there is
+// at least one; false without four corners or with band <= 0.
+bool bars_inside_at_one_side(const std::vector<Detection>& detections, const Detection& outline,
+                             const StereoMatchOptions& options, double band);
+
 // The verdict on one outline: kBarsInside when more than `max_bars_inside` bars lie inside it
-// (negative: not tested), kStackedBars when their height spread exceeds
-// StereoMatchOptions::max_bar_height_spread (0: not tested), else kNone; with the quantity and
-// its limit for the pair trace.
+// (negative: not tested; two where one is allowed pass when
+// bars_inside_at_one_side with StereoMatchOptions::neighbour_handle_side_band), kStackedBars when
+// their height spread exceeds StereoMatchOptions::max_bar_height_spread (0: not tested), else
+// kNone; with the quantity and its limit for the pair trace.
 struct BarVerdict {
   StereoGate gate = StereoGate::kNone;
   double value = 0.0;

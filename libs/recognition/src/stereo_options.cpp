@@ -35,6 +35,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "single_view_min_peak_margin",
                        "single_view_min_separation_m",
                        "single_view_max_bars_inside",
+                       "neighbour_handle_side_band",
                        "pair_max_bars_inside",
                        "max_bar_height_spread",
                        "max_twin_handle_gap",
@@ -83,6 +84,10 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     const std::int64_t bars = v->as_int();
     if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
     out.single_view_max_bars_inside = static_cast<int>(bars);
+  }
+  if (const auto v = section.find("neighbour_handle_side_band")) {
+    // Below a half: the two sides' bands do not meet.
+    out.neighbour_handle_side_band = v->as_double_in(0.0, 0.49);
   }
   if (const auto v = section.find("pair_max_bars_inside")) {
     const std::int64_t bars = v->as_int();

@@ -418,6 +418,28 @@ TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
   EXPECT_TRUE(match({left, upper, lower}, {}, images).empty());
   EXPECT_EQ(match({left, upper}, {}, images).size(), 1u);
   options.max_bar_height_spread = 0.0;
+  // Two handles at one height by one side: the door's own by its closing edge and its double-
+  // door neighbour's beyond the reveal, inside the outline's slack (Doors item 29). Kept with
+  // neighbour_handle_side_band; two in the middle are two doors merged, and one by each side is
+  // no door either. The outline is c[0]..c[3] (top left clockwise); `at` places a handle at a
+  // fraction of the width across, at mid-height.
+  const auto at = [&](double across) {
+    Detection bar = handle;
+    bar.reference_px = left_px(0.5 * (c[0] + c[3]) + across * (c[1] - c[0]));
+    return bar;
+  };
+  options.max_bar_height_spread = 0.3;
+  EXPECT_TRUE(match({left, at(0.1), at(0.25)}, {}, images).empty());
+  options.neighbour_handle_side_band = 0.35;
+  EXPECT_EQ(match({left, at(0.1), at(0.25)}, {}, images).size(), 1u);
+  EXPECT_EQ(match({left, at(0.9), at(0.7)}, {}, images).size(), 1u);
+  EXPECT_TRUE(match({left, at(0.45), at(0.55)}, {}, images).empty());
+  EXPECT_TRUE(match({left, at(0.1), at(0.9)}, {}, images).empty());
+  EXPECT_TRUE(match({left, at(0.1), at(0.4)}, {}, images).empty());
+  // Three are never a door and its neighbour's handle.
+  EXPECT_TRUE(match({left, at(0.1), at(0.2), at(0.3)}, {}, images).empty());
+  options.neighbour_handle_side_band = 0.0;
+  options.max_bar_height_spread = 0.0;
   // A weak detection never makes a percept alone.
   Detection weak = left;
   weak.needs_partner = true;

@@ -668,6 +668,7 @@ stereo:
   single_view_min_peak_margin: 0.15
   single_view_min_separation_m: 0.25
   single_view_max_bars_inside: 2
+  neighbour_handle_side_band: 0.3
   pair_max_bars_inside: 3
   max_bar_height_spread: 0.35
   max_twin_handle_gap: 0.12
@@ -706,6 +707,7 @@ stereo:
   EXPECT_EQ(o.single_view_min_peak_margin, 0.15);
   EXPECT_EQ(o.single_view_min_separation_m, 0.25);
   EXPECT_EQ(o.single_view_max_bars_inside, 2);
+  EXPECT_EQ(o.neighbour_handle_side_band, 0.3);
   EXPECT_EQ(o.pair_max_bars_inside, 3);
   EXPECT_EQ(o.max_bar_height_spread, 0.35);
   EXPECT_EQ(o.max_twin_handle_gap, 0.12);
@@ -774,6 +776,11 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                 .find("s.yaml:2: stereo.single_view_max_bars_inside"),
             std::string::npos)
       << stereo_error("  single_view_max_bars_inside: 1.5\n");
+  // The two sides' bands must not meet (Doors item 29).
+  EXPECT_NE(stereo_error("  neighbour_handle_side_band: 0.5\n")
+                .find("s.yaml:2: stereo.neighbour_handle_side_band"),
+            std::string::npos)
+      << stereo_error("  neighbour_handle_side_band: 0.5\n");
   EXPECT_NE(stereo_error("  single_view_max_bars_inside: -1\n").find("[0, 100]"),
             std::string::npos);
   EXPECT_NE(

@@ -114,6 +114,14 @@ struct StereoMatchOptions {
   double single_view_min_peak_margin = 0.1;
   double single_view_min_separation_m = 0.2;
   int single_view_max_bars_inside = 1;
+  // An outline that holds one handle more than single_view_max_bars_inside allows (two where
+  // one is) is kept when both lie within this fraction of its width (along its top and bottom
+  // edges) from the same vertical side: its own handle by its closing edge and its double-door
+  // neighbour's a few centimetres beyond the reveal, inside the outline's slack. Two doors merged
+  // into one blob hold their handles in the middle, a drawer stack one above another
+  // (max_bar_height_spread). Applies wherever single_view_max_bars_inside does (single views,
+  // occluded-corner and cut pairs' outlines; Doors item 29); 0 turns it off.
+  double neighbour_handle_side_band = 0.0;
   // A pair of whole door outlines (detections with corners) is refused when more than this many
   // detections of a bar type (handles) lie inside either outline: a door carries one handle, and
   // a neighbour's may stand within its outline's slack (a double door's two handles are a few
