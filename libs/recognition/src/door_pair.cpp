@@ -174,6 +174,17 @@ DoorCentre door_centre(const DoorOutlines& outlines, const DoorSides& sides,
       ends = outline_ends;
     }
     if (ends) {
+      // Both sides' heights, h_s = (T_s - B_s) . u (T, B: the side's top and bottom ends, u up),
+      // agree within max_side_height_mismatch of the taller (Doors item 30).
+      if (options.max_side_height_mismatch > 0.0) {
+        const Eigen::Vector3d& u = up_in_left_camera;
+        const double a = std::abs(((*ends)[0] - (*ends)[1]).dot(u));
+        const double b = std::abs(((*ends)[2] - (*ends)[3]).dot(u));
+        const double mismatch = std::abs(a - b) / std::max({a, b, 1e-9});
+        if (mismatch > options.max_side_height_mismatch) {
+          return refused(StereoGate::kSideHeights, mismatch, options.max_side_height_mismatch);
+        }
+      }
       out.centre = Triangulator::rectangle_centre(*ends);
       // Both sides measured: the edges between their ends must be level.
       if (options.max_edge_slope_rad > 0.0) {

@@ -31,7 +31,8 @@ double slope_rad(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen
 
 bool may_be_occluder_cut(const StereoPairTrace& refusal) {
   return (refusal.refused_by == StereoGate::kHeight && refusal.value < refusal.limit) ||
-         refusal.refused_by == StereoGate::kEdgeSlope;
+         refusal.refused_by == StereoGate::kEdgeSlope ||
+         refusal.refused_by == StereoGate::kSideHeights;
 }
 
 std::optional<Candidate> judge_occluder_cut_pair(

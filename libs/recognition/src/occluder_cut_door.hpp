@@ -25,7 +25,7 @@
 namespace vsl::recognition::detail {
 
 // Whether the cross match tries judge_occluder_cut_pair after a whole pair's refusal: the height
-// gate found it too short, or the level-edge gate refused it.
+// gate found it too short, or the level-edge gate or the side-heights gate refused it.
 bool may_be_occluder_cut(const StereoPairTrace& refusal);
 
 // The candidate of two whole outlines (the views' border_cut is ignored) cut along their bottom

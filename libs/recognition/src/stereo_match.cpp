@@ -436,9 +436,9 @@ std::vector<StereoPercept> match_and_triangulate(
       std::optional<detail::Candidate> c;
       if (!cut) {
         c = judge(l, r, trace);
-        // Too short for a door, or an edge sloping: perhaps an occluder hides the door's lower
-        // part in both images (occluder_cut_door.hpp, Doors item 28). The first refusal stays
-        // in the trace unless the pair is so placed.
+        // Too short for a door, an edge sloping or one side shorter than the other: perhaps an
+        // occluder hides the door's lower part in both images (occluder_cut_door.hpp, Doors
+        // item 28). The first refusal stays in the trace unless the pair is so placed.
         const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, left[l].type);
         if (!c && door && door->occluder_cut && detail::may_be_occluder_cut(trace) &&
             left_corners[l].size() == 4 && right_corners[r].size() == 4 &&
@@ -651,6 +651,8 @@ const char* stereo_gate_name(StereoGate gate) {
       return "bars_inside";
     case StereoGate::kStackedBars:
       return "stacked_bars";
+    case StereoGate::kSideHeights:
+      return "side_heights";
   }
   return "?";
 }

@@ -29,6 +29,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "height_range_m",
                        "max_side_tilt_rad",
                        "max_edge_slope_rad",
+                       "max_side_height_mismatch",
                        "bar_types",
                        "min_side_correlation",
                        "min_single_view_correlation",
@@ -63,6 +64,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   }
   if (const auto v = section.find("max_edge_slope_rad")) {
     out.max_edge_slope_rad = v->as_double_in(0.0, 1.5);
+  }
+  if (const auto v = section.find("max_side_height_mismatch")) {
+    out.max_side_height_mismatch = v->as_double_in(0.0, 1.0);
   }
   if (const auto v = section.find("min_side_correlation")) {
     out.min_side_correlation = v->as_double_in(0.0, 1.0);

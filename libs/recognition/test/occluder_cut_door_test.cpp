@@ -120,6 +120,34 @@ TEST_F(OccluderCutDoorTest, ALevelCutMustShowMoreThanADrawerFront) {
   EXPECT_TRUE(match(occluded_door(0.30, 0.34), &trace).empty());
 }
 
+TEST_F(OccluderCutDoorTest, SidesOfUnequalHeightAreNoWholeDoor) {
+  // The contour crosses the right side 0.15 m above its bottom corner: the bottom edge slopes by
+  // 0.29 rad (the level-edge gate's 0.3 passes it), the sides are 0.716 and 0.566 m tall, 0.21
+  // of the taller apart (Doors item 30).
+  const Pair p = occluded_door(kHeightM, kHeightM - 0.15);
+  std::vector<StereoPairTrace> trace;
+  // Without the gate, a pair whose centre is the visible part's, centimetres off.
+  const std::vector<StereoPercept> whole = match(p, &trace);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_GT((whole[0].left_camera_position_m - kCentre).norm(), 0.03);
+  // With it, refused as a whole door ...
+  options_.max_side_height_mismatch = 0.2;
+  options_.border_cut[0].occluder_cut = false;
+  EXPECT_TRUE(match(p, &trace).empty());
+  ASSERT_EQ(trace.size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kSideHeights);
+  EXPECT_NEAR(trace[0].value, 0.15 / kHeightM, 0.02);
+  EXPECT_EQ(trace[0].limit, 0.2);
+  // ... and placed from its level top edge as a door whose lower part is hidden.
+  options_.border_cut[0].occluder_cut = true;
+  const std::vector<StereoPercept> placed = match(p, &trace);
+  ASSERT_EQ(placed.size(), 1u);
+  EXPECT_LT((placed[0].left_camera_position_m - kCentre).norm(), 2e-3);
+  // Sides within the bound: a whole pair as before.
+  const std::vector<StereoPercept> nearly = match(occluded_door(kHeightM, kHeightM - 0.1));
+  ASSERT_EQ(nearly.size(), 1u);
+}
+
 TEST_F(OccluderCutDoorTest, TheTopEdgeMustBeLevel) {
   // The top hidden instead, the contour 0.25 and 0.35 m up from the bottom corners at 0.2 rad:
   // only a bottom cut is taken (the occluders in front of cupboards stand on the floor).

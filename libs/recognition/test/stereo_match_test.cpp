@@ -662,6 +662,7 @@ stereo:
   height_range_m: {door: [0.5, 2.5]}
   max_side_tilt_rad: 0.05
   max_edge_slope_rad: 0.3
+  max_side_height_mismatch: 0.25
   bar_types: [handle]
   min_side_correlation: 0.7
   min_single_view_correlation: 0.75
@@ -701,6 +702,7 @@ stereo:
   EXPECT_EQ(o.height_range_m[0].max_m, 2.5);
   EXPECT_EQ(o.max_side_tilt_rad, 0.05);
   EXPECT_EQ(o.max_edge_slope_rad, 0.3);
+  EXPECT_EQ(o.max_side_height_mismatch, 0.25);
   EXPECT_EQ(o.bar_types, std::vector<std::string>{"handle"});
   EXPECT_EQ(o.min_side_correlation, 0.7);
   EXPECT_EQ(o.min_single_view_correlation, 0.75);
@@ -748,6 +750,9 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_NE(stereo_error("  pixel_sigma_px: -1\n").find("s.yaml:2: stereo.pixel_sigma_px"),
             std::string::npos);
   EXPECT_NE(stereo_error("  max_area_ratio: .nan\n").find("max_area_ratio"), std::string::npos);
+  EXPECT_NE(stereo_error("  max_side_height_mismatch: 1.5\n")
+                .find("s.yaml:2: stereo.max_side_height_mismatch"),
+            std::string::npos);
   EXPECT_NE(stereo_error("  max_edge_slope_rad: 2\n").find("s.yaml:2: stereo.max_edge_slope_rad"),
             std::string::npos);
   EXPECT_NE(stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n").find("must exceed"),

@@ -68,6 +68,13 @@ struct StereoMatchOptions {
   // between the images (a stile lost, a neighbour's strip added in one image) has a wrong depth
   // that tilts them. Needs the up direction; 0 turns it off.
   double max_edge_slope_rad = 0.0;
+  // The same outlines are refused when their two vertical sides, placed in 3D, differ in height
+  // by more than this fraction of the taller: a door's sides are equal, and an occluder (a
+  // chair's seat, the table's top) that hides a corner in both images shortens one side in both,
+  // where the side gate and the level-edge gate can pass it and the centre lands tens of
+  // centimetres off (Doors item 30). Such a pair may still be a door whose lower part is hidden
+  // (BorderCutDoor::occluder_cut). Needs the up direction; 0 turns it off.
+  double max_side_height_mismatch = 0.0;
   // Types whose detections are bars (handles): a pair of such elongated detections (both at
   // least min_elongation_for_orientation, their axis at least 45 degrees from the epipolar line)
   // is matched as two views of one bar segment (Triangulator::bar_span) rather than by its
@@ -219,8 +226,9 @@ struct StereoMatchOptions {
     // single_view_max_bars_inside handles inside each outline. The other gates of a pair then
     // apply; its covariance is a pair's.
     bool occluded_corner = false;
-    // A pair of whole door outlines that the height gate finds too short (height_range_m) or the
-    // level-edge gate refuses (max_edge_slope_rad), whose top edge is level in 3D (within 0.1
+    // A pair of whole door outlines that the height gate finds too short (height_range_m), the
+    // level-edge gate (max_edge_slope_rad) or the side-heights gate (max_side_height_mismatch)
+    // refuses, whose top edge is level in 3D (within 0.1
     // rad), judged as a door cut along its bottom edge as the image border cuts one (the
     // border_cut gates above: the sides vertical, the top edge level and min_width_m ..
     // max_width_m long, the visible height at least half the least typical height, the centre
@@ -323,7 +331,9 @@ enum class StereoGate {
   // pair_max_bars_inside; single views: single_view_max_bars_inside)
   kBarsInside,
   // bar detections on an outline one above another (max_bar_height_spread)
-  kStackedBars
+  kStackedBars,
+  // a whole pair's vertical sides of unequal height in 3D (max_side_height_mismatch)
+  kSideHeights
 };
 const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
 
