@@ -126,8 +126,8 @@ struct StereoMatchOptions {
   // edges) from the same vertical side: its own handle by its closing edge and its double-door
   // neighbour's a few centimetres beyond the reveal, inside the outline's slack. Two doors merged
   // into one blob hold their handles in the middle, a drawer stack one above another
-  // (max_bar_height_spread). Applies wherever single_view_max_bars_inside does (single views,
-  // occluded-corner and cut pairs' outlines; Doors item 29); 0 turns it off.
+  // (max_bar_height_spread). Applies wherever single_view_max_bars_inside does (single views and
+  // occluded-corner pairs; Doors item 29); 0 turns it off.
   double neighbour_handle_side_band = 0.0;
   // A pair of whole door outlines (detections with corners) is refused when more than this many
   // detections of a bar type (handles) lie inside either outline: a door carries one handle, and
