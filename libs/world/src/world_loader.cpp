@@ -58,6 +58,42 @@ Colour colour(const Node& node) {
   return Colour{byte(1), byte(3), byte(5)};
 }
 
+// `{colour, finish, pattern_colour, pattern_scale, contrast, specular, roughness, light}`; only
+// the colour is required, so files written before finishes existed load as matte colours.
+Material material_from(const Node& node, const std::string& name) {
+  node.expect_keys({"colour", "finish", "pattern_colour", "pattern_scale", "contrast", "specular",
+                    "roughness", "light"});
+  Material out{name, colour(node.at("colour"))};
+  if (const auto finish = node.find("finish")) {
+    const std::optional<Finish> found = finish_from_name(finish->as_string());
+    if (!found) {
+      std::string allowed;
+      for (const Finish f : kAllFinishes)
+        allowed += std::string(allowed.empty() ? "" : ", ") + finish_name(f);
+      finish->fail("unknown finish '" + finish->as_string() + "' (allowed: " + allowed + ")");
+    }
+    out.finish = *found;
+  }
+  if (const auto v = node.find("pattern_colour")) out.pattern_colour = colour(*v);
+  if (const auto v = node.find("pattern_scale")) out.pattern_scale_m = v->as_double_in(0.001, 10.0);
+  if (const auto v = node.find("contrast")) out.contrast = v->as_double_in(0.0, 1.0);
+  if (const auto v = node.find("specular")) out.specular = v->as_double_in(0.0, 1.0);
+  if (const auto v = node.find("roughness")) out.roughness = v->as_double_in(0.0, 1.0);
+  if (const auto light = node.find("light")) {
+    light->expect_keys({"flux_lm", "colour_temperature_k", "beam_half_angle"});
+    MaterialLight emitted;
+    if (const auto v = light->find("flux_lm")) emitted.luminous_flux_lm = v->as_double_in(0.0, 1e6);
+    if (const auto v = light->find("colour_temperature_k")) {
+      emitted.colour_temperature_k = v->as_double_in(1500.0, 12000.0);
+    }
+    if (const auto v = light->find("beam_half_angle")) {
+      emitted.beam_half_angle_rad = v->as_double_in(0.1, 1.45);
+    }
+    out.light = emitted;
+  }
+  return out;
+}
+
 Polyhedron polyhedron(const Node& node) {
   node.expect_keys({"vertices", "faces"});
   Polyhedron out;
@@ -208,9 +244,7 @@ Node objects_of(const Node& document, bool first, WorldModel& world) {
   world.name = document.get("name", "");
   if (const auto materials = document.find("materials")) {
     for (const std::string& name : materials->keys()) {
-      const Node material = materials->at(name);
-      material.expect_keys({"colour"});
-      world.materials.push_back(Material{name, colour(material.at("colour"))});
+      world.materials.push_back(material_from(materials->at(name), name));
     }
   }
   return document.at("objects");

@@ -4,6 +4,37 @@
 
 namespace vsl::world {
 
+const char* finish_name(Finish finish) {
+  switch (finish) {
+    case Finish::matte:
+      return "matte";
+    case Finish::painted:
+      return "painted";
+    case Finish::laminate:
+      return "laminate";
+    case Finish::wood:
+      return "wood";
+    case Finish::brushed_metal:
+      return "brushed_metal";
+    case Finish::polished_metal:
+      return "polished_metal";
+    case Finish::stone:
+      return "stone";
+    case Finish::tiles:
+      return "tiles";
+    case Finish::glass:
+      return "glass";
+  }
+  return "matte";
+}
+
+std::optional<Finish> finish_from_name(const std::string& name) {
+  for (const Finish finish : kAllFinishes) {
+    if (name == finish_name(finish)) return finish;
+  }
+  return std::nullopt;
+}
+
 Eigen::Isometry3d Primitive::object_T_primitive() const {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = object_orientation.toRotationMatrix();

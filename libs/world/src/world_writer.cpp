@@ -139,6 +139,21 @@ void write_primitive(const Primitive& p, const WorldModel& world, std::ostream& 
   out << "}\n";
 }
 
+// The optional fields of a material, each as ", key: value" (none for a plain colour).
+void write_appearance(const Material& m, std::ostream& out) {
+  if (m.finish != Finish::matte) out << ", finish: " << finish_name(m.finish);
+  if (m.pattern_colour) out << ", pattern_colour: " << colour(*m.pattern_colour);
+  if (m.pattern_scale_m) out << ", pattern_scale: " << number(*m.pattern_scale_m, kUnitless);
+  if (m.contrast) out << ", contrast: " << number(*m.contrast, kUnitless);
+  if (m.specular) out << ", specular: " << number(*m.specular, kUnitless);
+  if (m.roughness) out << ", roughness: " << number(*m.roughness, kUnitless);
+  if (m.light) {
+    out << ", light: {flux_lm: " << number(m.light->luminous_flux_lm, kUnitless)
+        << ", colour_temperature_k: " << number(m.light->colour_temperature_k, kUnitless)
+        << ", beam_half_angle: " << number(m.light->beam_half_angle_rad, kUnitless) << "}";
+  }
+}
+
 }  // namespace
 
 void write_world(const WorldModel& world, std::ostream& out) {
@@ -151,7 +166,9 @@ void write_world(const WorldModel& world, std::ostream& out) {
   if (!world.materials.empty()) {
     out << "materials:\n";
     for (const Material& m : world.materials) {
-      out << "  " << text(m.name) << ": {colour: " << colour(m.colour) << "}\n";
+      out << "  " << text(m.name) << ": {colour: " << colour(m.colour);
+      write_appearance(m, out);
+      out << "}\n";
     }
   }
   out << "objects:\n";

@@ -257,3 +257,66 @@ TEST(WorldWriter, HalfTurnYawRoundTripsAsText) {
 
 }  // namespace
 }  // namespace vsl::world
+
+namespace vsl::world {
+namespace {
+
+TEST(WorldLoader, MaterialsCarryFinishesPatternsAndLights) {
+  const std::string text =
+      "materials:\n"
+      "  plain: {colour: \"#808080\"}\n"
+      "  oak: {colour: \"#a0784a\", finish: wood, pattern_colour: \"#6b4a2a\", pattern_scale: "
+      "0.012, contrast: 0.6, specular: 0.2, roughness: 0.5}\n"
+      "  lamp: {colour: \"#ffffff\", light: {flux_lm: 650, colour_temperature_k: 2700, "
+      "beam_half_angle: 0.9}}\n"
+      "objects:\n  - {id: a, type: door, position: [0, 0, 0]}\n";
+  const WorldModel world = load_world_from_string(text, "m.yaml");
+  ASSERT_EQ(world.materials.size(), 3u);
+  const Material& plain = world.materials[0];
+  EXPECT_EQ(plain.finish, Finish::matte);  // files from before finishes keep their flat look
+  EXPECT_FALSE(plain.pattern_scale_m || plain.contrast || plain.light);
+  const Material& oak = world.materials[1];
+  EXPECT_EQ(oak.finish, Finish::wood);
+  EXPECT_EQ(*oak.pattern_colour, (Colour{0x6b, 0x4a, 0x2a}));
+  EXPECT_DOUBLE_EQ(*oak.pattern_scale_m, 0.012);
+  EXPECT_DOUBLE_EQ(*oak.contrast, 0.6);
+  ASSERT_TRUE(world.materials[2].light.has_value());
+  EXPECT_DOUBLE_EQ(world.materials[2].light->luminous_flux_lm, 650.0);
+  EXPECT_DOUBLE_EQ(world.materials[2].light->colour_temperature_k, 2700.0);
+
+  std::ostringstream written;
+  write_world(world, written);
+  const WorldModel again = load_world_from_string(written.str(), "again.yaml");
+  std::ostringstream rewritten;
+  write_world(again, rewritten);
+  EXPECT_EQ(written.str(), rewritten.str());
+  EXPECT_EQ(again.materials[1].finish, Finish::wood);
+  EXPECT_EQ(*again.materials[2].light, *world.materials[2].light);
+}
+
+TEST(WorldLoader, BadMaterialFieldsAreOneLineErrors) {
+  auto error = [](const std::string& material) {
+    try {
+      load_world_from_string("materials:\n  m: " + material +
+                                 "\nobjects:\n  - {id: a, type: door, position: [0, 0, 0]}\n",
+                             "bad.yaml");
+    } catch (const config::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error("{colour: \"#808080\", finish: velvet}")
+                .find("bad.yaml:2: materials.m.finish: "
+                      "unknown finish 'velvet'"),
+            std::string::npos);
+  EXPECT_NE(error("{colour: \"#808080\", contrast: 2}").find("materials.m.contrast"),
+            std::string::npos);
+  EXPECT_NE(error("{colour: \"#808080\", light: {flux_lm: 10, watts: 5}}").find("watts"),
+            std::string::npos);
+  EXPECT_NE(error("{colour: \"#808080\", light: {colour_temperature_k: 100}}")
+                .find("colour_temperature_k"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace vsl::world

@@ -19,6 +19,53 @@
 
 namespace vsl::render {
 
+// How far the renderer goes beyond flat colours (docs/rendering.md shows each level).
+enum class RealismLevel {
+  off,        // flat Lambert colours under one directional light, as the recognizer was tuned on
+  materials,  // + textured finishes, the world's lamps and window light, shadows, highlights
+  full,       // + the camera: auto-exposure, vignetting, defocus, motion blur, shot and read
+              //   noise, white-balance error, MJPEG compression
+};
+const char* realism_level_name(RealismLevel level);
+
+// The realism levels' parameters. Only read when level is not `off`.
+struct RealismOptions {
+  RealismLevel level = RealismLevel::off;
+
+  // --- materials and light (level materials and full) ---
+  // Diffuse light with shadows is baked once per Renderer into light maps of this texel size, m:
+  // the scene is static, only the head moves, so it is view-independent.
+  double light_map_texel_m = 0.03;
+  int shadow_map_px = 512;       // side of each lamp's shadow map, pixels
+  double indirect_light = 0.35;  // light that bounces around the room, as a fraction of the mean
+                                 // direct light on the room's surfaces (no shadows, no direction)
+  double daylight = 1.0;         // window light relative to a bright overcast day; 0: night
+  double daylight_colour_temperature_k = 6500.0;
+  bool textures = true;  // false: finishes keep their highlights but lose their pattern
+  // Used only when the world has no lamp and no window: RenderOptions::world_light_direction as
+  // a distant light with a shadow map.
+  double fallback_light_lux = 300.0;
+
+  // --- the camera (level full) ---
+  bool auto_exposure = true;              // scale so that the image's mean is exposure_target_grey
+  double exposure_target_grey = 0.42;     // mean of the final image, 0-1, after the tone curve
+  double exposure_compensation_ev = 0.0;  // added to the auto-exposure (or to the fixed gain)
+  double exposure_time_s = 0.015;         // length of motion blur when the head turns
+  double vignetting = 0.35;               // fraction of light lost in the image corners
+  double aperture_m = 0.0015;             // lens aperture diameter: defocus blur; 0: pinhole
+  double focus_distance_m = 0.0;          // 0: focus on the image centre's median depth
+  double full_well_electrons = 6000.0;    // shot noise: a white pixel collects this many electrons
+  double read_noise_electrons = 6.0;      // read noise, electrons (Gaussian)
+  double white_balance_error = 0.04;  // each image's red and blue gains off by up to this fraction
+  int jpeg_quality = 80;              // MJPEG as a UVC camera delivers it (4:2:0); 0: none
+};
+
+// The camera's motion during the exposure, for motion blur (level full). Camera frame: x right,
+// y down, z forward; rad/s.
+struct CameraMotion {
+  Eigen::Vector3d camera_angular_velocity_rad_s = Eigen::Vector3d::Zero();
+};
+
 struct RenderOptions {
   // Lambert shading: grey level = albedo * (ambient + diffuse * max(0, n . l)), then exposure gain.
   double ambient = 0.45;
@@ -45,6 +92,7 @@ struct RenderOptions {
   // width w keeps w / (w + depth) of its light (depth: the facet's shorter side), so the 4 mm gap
   // between two doors reads as the dark line a camera sees, not as more door. 0: off.
   double slot_occlusion_max_width_m = 0.02;
+  RealismOptions realism;  // level off: everything above, exactly as without realism
 };
 
 struct RenderedImage {
@@ -72,6 +120,9 @@ class Renderer {
   // shared: a frame loop saves the page faults of three fresh frame-sized allocations (~10%).
   void render(const head::CameraIntrinsics& intrinsics, const Eigen::Isometry3d& world_T_camera,
               std::uint64_t noise_seed, RenderedImage& out) const;
+  // The same for a camera that moves during the exposure (motion blur at realism level full).
+  void render(const head::CameraIntrinsics& intrinsics, const Eigen::Isometry3d& world_T_camera,
+              std::uint64_t noise_seed, const CameraMotion& motion, RenderedImage& out) const;
 
   const RenderOptions& options() const { return options_; }
   std::size_t triangle_count() const;

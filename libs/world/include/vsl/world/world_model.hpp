@@ -25,10 +25,49 @@ struct Colour {
   friend bool operator==(const Colour&, const Colour&) = default;
 };
 
+// How a surface looks beyond its colour when the renderer's realism is on (docs/rendering.md).
+// `matte` is the flat colour every material had before finishes existed.
+enum class Finish {
+  matte,           // flat colour, no pattern
+  painted,         // fine noise of a painted surface, slight sheen
+  laminate,        // fine noise, clear specular highlights
+  wood,            // grain: distorted growth rings along the surface's long axis
+  brushed_metal,   // fine streaks along the long axis, broad highlights
+  polished_metal,  // mirror-like: sharp highlights, reflected room
+  stone,           // speckled granite or marble
+  tiles,           // square tiles with grout lines
+  glass,           // transparent-looking pane: reflection of the room, sharp highlights
+};
+inline constexpr Finish kAllFinishes[] = {
+    Finish::matte,          Finish::painted, Finish::laminate, Finish::wood, Finish::brushed_metal,
+    Finish::polished_metal, Finish::stone,   Finish::tiles,    Finish::glass};
+const char* finish_name(Finish finish);
+// The finish of this name, or nullopt.
+std::optional<Finish> finish_from_name(const std::string& name);
+
+// Light a lamp material emits (a downlight, an under-cupboard strip). Each primitive of the
+// material is one lamp, at the primitive's centre, shining along the primitive's -z axis.
+struct MaterialLight {
+  double luminous_flux_lm = 500.0;       // total light out, lumens (a kitchen downlight: 400-800)
+  double colour_temperature_k = 3000.0;  // correlated colour temperature, kelvin (1500-12000)
+  double beam_half_angle_rad = 1.05;     // half angle of the cone it lights, rad (0.1-1.45)
+  friend bool operator==(const MaterialLight&, const MaterialLight&) = default;
+};
+
 // A named surface appearance that primitives refer to, so that a kitchen's door panels share one.
+// Every field but the colour is optional: unset, the renderer takes the finish's default.
 struct Material {
   std::string name;
   Colour colour;
+  Finish finish = Finish::matte;
+  std::optional<Colour> pattern_colour =
+      std::nullopt;  // grain, grout or speckle colour; default: from colour
+  std::optional<double> pattern_scale_m =
+      std::nullopt;  // size of the pattern's features (ring spacing, tile), m
+  std::optional<double> contrast = std::nullopt;   // strength of the pattern, 0 (none) to 1
+  std::optional<double> specular = std::nullopt;   // strength of highlights, 0 to 1
+  std::optional<double> roughness = std::nullopt;  // 0 (mirror) to 1 (chalk): width of highlights
+  std::optional<MaterialLight> light = std::nullopt;  // set: the material emits light (a lamp)
 };
 
 // Axis-aligned box in its own frame, centred on the origin; full extents along x, y, z (m).
