@@ -100,6 +100,15 @@ void rasterize_sampled(const Scene& scene, const Pinhole& camera,
 
 }  // namespace
 
+const char* realism_level_name(RealismLevel level) {
+  switch (level) {
+    case RealismLevel::off: return "off";
+    case RealismLevel::materials: return "materials";
+    case RealismLevel::full: return "full";
+  }
+  return "off";
+}
+
 Renderer::Renderer(const world::WorldModel& world, RenderOptions options)
     : options_(checked(options)),
       scene_(std::make_shared<const Scene>(world, options_)),
@@ -121,6 +130,12 @@ RenderedImage Renderer::render(const head::CameraIntrinsics& intrinsics,
 void Renderer::render(const head::CameraIntrinsics& intrinsics,
                       const Eigen::Isometry3d& world_T_camera, std::uint64_t noise_seed,
                       RenderedImage& out) const {
+  render(intrinsics, world_T_camera, noise_seed, CameraMotion{}, out);
+}
+
+void Renderer::render(const head::CameraIntrinsics& intrinsics,
+                      const Eigen::Isometry3d& world_T_camera, std::uint64_t noise_seed,
+                      const CameraMotion& /*motion*/, RenderedImage& out) const {
   check_intrinsics(intrinsics);
   check_pose(world_T_camera);
   SensorRandom random(noise_seed);
