@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "random.hpp"
 #include "vsl/worldgen/geometry.hpp"
 #include "vsl/worldgen/world_builder.hpp"
 
@@ -27,30 +28,6 @@ constexpr double kProjection = 0.03;  // handle bar axis in front of its front
 constexpr double kBarRadius = 0.006;
 constexpr double kSill = 0.9, kLintel = 2.2;  // ribbon windows
 constexpr double kDoorWidth = 0.9, kDoorHeight = 2.05;
-
-// splitmix64: tiny, fast, and the same sequence on every platform (unlike std:: distributions).
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
-  int between(int lo, int hi) { return lo + below(hi - lo + 1); }  // inclusive
-  bool chance(double p) { return uniform() < p; }
-  template <typename T>
-  const T& pick(const std::vector<T>& items) {
-    return items[static_cast<std::size_t>(below(static_cast<int>(items.size())))];
-  }
-
- private:
-  std::uint64_t state_;
-};
 
 enum class Kind { office, kitchenette, meeting, store };
 enum class HandleAt { top, bottom, middle };
