@@ -35,9 +35,19 @@ int coordinate_of(const Node& node) {
   return static_cast<int>(value);
 }
 
+int int_in(const Node& node, std::int64_t min, std::int64_t max) {
+  const std::int64_t value = node.as_int();
+  if (value < min || value > max) {
+    node.fail("expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+              "], got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
+
 LabelBox box_of(const Node& node) {
   node.expect_map();
-  node.expect_keys({"type", "u_min", "v_min", "u_max", "v_max"});
+  node.expect_keys({"type", "u_min", "v_min", "u_max", "v_max", "id", "class", "visible_px",
+                    "truncated", "occluded"});
   LabelBox box;
   box.type = type_of(node.at("type"));
   box.u_min = coordinate_of(node.at("u_min"));
@@ -48,6 +58,13 @@ LabelBox box_of(const Node& node) {
   box.v_max = coordinate_of(v_max);
   if (box.u_max < box.u_min) u_max.fail("u_max is less than u_min");
   if (box.v_max < box.v_min) v_max.fail("v_max is less than v_min");
+  if (const auto id = node.find("id")) box.object_id = id->as_string();
+  if (const auto c = node.find("class")) box.class_id = int_in(*c, 0, 3);
+  if (const auto v = node.find("visible_px")) {
+    box.visible_px = int_in(*v, 0, std::numeric_limits<int>::max());
+  }
+  if (const auto t = node.find("truncated")) box.truncated = t->as_bool();
+  if (const auto o = node.find("occluded")) box.occluded = o->as_double_in(0.0, 1.0);
   box.line = node.line();
   box.path = node.path();
   return box;

@@ -118,6 +118,28 @@ TEST(BoxLabels, BlobsAreLabelledByTheBoxTheyFill) {
   EXPECT_EQ(box_sample_role(door, scene.labels.images[1].boxes, "door"), SampleRole::negative);
 }
 
+TEST(BoxLabels, ReadsTheOptionalKeysOfGeneratedDatasets) {
+  const auto dir = scratch_dir("generated");
+  write_text(dir / "a.png", "exists");
+  write_text(dir / "labels.yaml", R"(images:
+  - image: a.png
+    boxes:
+      - {type: door, u_min: 1, v_min: 2, u_max: 30, v_max: 40, id: "north.base2.door1", class: 2,
+         visible_px: 1000, truncated: true, occluded: 0.25}
+      - {type: handle, u_min: 1, v_min: 2, u_max: 3, v_max: 4}
+)");
+  const BoxLabels labels = load_box_labels((dir / "labels.yaml").string());
+  const LabelBox& door = labels.images.at(0).boxes.at(0);
+  EXPECT_EQ(door.object_id, "north.base2.door1");
+  EXPECT_EQ(door.class_id, 2);
+  EXPECT_EQ(door.visible_px, 1000);
+  EXPECT_EQ(door.truncated, true);
+  EXPECT_DOUBLE_EQ(*door.occluded, 0.25);
+  const LabelBox& handle = labels.images.at(0).boxes.at(1);
+  EXPECT_TRUE(handle.object_id.empty());
+  EXPECT_FALSE(handle.class_id || handle.visible_px || handle.truncated || handle.occluded);
+}
+
 // Every bad file gives one line naming the file, the line and the key.
 TEST(BoxLabels, BadFilesGiveOneLineWithFileLineAndKey) {
   const auto dir = scratch_dir("bad");
@@ -147,6 +169,12 @@ TEST(BoxLabels, BadFilesGiveOneLineWithFileLineAndKey) {
       {"images:\n  - image: a.png\n    boxes:\n      - {type: door, u_min: 1, v_min: 0, u_max: "
        "4, v_max: 3, colour: red}\n",
        "labels.yaml:4: images[0].boxes[0].colour: unknown key"},
+      {"images:\n  - image: a.png\n    boxes:\n      - {type: door, u_min: 1, v_min: 0, u_max: "
+       "4, v_max: 3, class: 4}\n",
+       "labels.yaml:4: images[0].boxes[0].class: expected an integer in [0, 3], got 4"},
+      {"images:\n  - image: a.png\n    boxes:\n      - {type: door, u_min: 1, v_min: 0, u_max: "
+       "4, v_max: 3, occluded: 1.5}\n",
+       "labels.yaml:4: images[0].boxes[0].occluded:"},
   };
   for (const auto& [text, expected] : cases) {
     write_text(dir / "labels.yaml", text);

@@ -9,6 +9,10 @@
 //         - {type: door, u_min: 120, v_min: 40, u_max: 260, v_max: 400}
 //         - {type: handle, u_min: 230, v_min: 200, u_max: 240, v_max: 290}
 //
+// Optional per box, as vsl-make-dataset writes them (docs/dataset.md): `id` (the world object),
+// `class` (DoorDetect class id, 0-3), `visible_px`, `truncated` (cut by the image border) and
+// `occluded` (fraction of the object's in-image pixels hidden by other objects, 0-1).
+//
 // Box corners are inclusive pixel coordinates (u = column, v = row, pixel centres at integers).
 // A blob is labelled by the box that holds at least 90% of its pixels and whose area the blob
 // fills to at least 50% (the tightest such box when several qualify: a handle inside a door's
@@ -16,6 +20,7 @@
 // lie in boxes of type c, or when a box of another type labels it.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -37,6 +42,12 @@ struct LabelBox {
   int v_max = 0;
   int line = 0;      // in the label file, for messages
   std::string path;  // key path in the label file ("images[2].boxes[0]"), for messages
+  // Optional keys (generated datasets).
+  std::string object_id;           // "" when not given
+  std::optional<int> class_id;     // DoorDetect class: 0 door, 1 handle, 2 cabinet, 3 fridge door
+  std::optional<int> visible_px;   // pixels of the object (with its handle) in the image
+  std::optional<bool> truncated;   // the image border cuts the object
+  std::optional<double> occluded;  // fraction of its in-image pixels that others hide
 
   long area_px() const {
     return static_cast<long>(u_max - u_min + 1) * static_cast<long>(v_max - v_min + 1);
