@@ -56,6 +56,14 @@ LookSpec gloss(std::uint32_t hex, double weight) {
   return {Finish::laminate, rgb(hex),   rgb(hex),     kFineScale,
           {0.0, 0.05},      {0.7, 0.9}, {0.05, 0.15}, weight};
 }
+// Plain colour with highlights: the realism renderer makes a texture per material (about 15 ms for
+// a patterned finish, next to nothing for matte), and clutter's fine texture matters less than its
+// shape and colour, so clutter is plain.
+LookSpec plain(std::uint32_t hex, Range specular, Range roughness, double weight) {
+  return {Finish::matte, rgb(hex), rgb(hex), kFineScale, {0.0, 0.0}, specular, roughness, weight};
+}
+constexpr Range kPlainDull{0.0, 0.1}, kPlainGlossy{0.4, 0.8};
+
 LookSpec wood(std::uint32_t hex, std::uint32_t grain, double weight) {
   return {Finish::wood,  rgb(hex),   rgb(grain), kGrainScale, {0.3, 0.65},
           kWoodSpecular, kWoodRough, weight,     0.1};
@@ -151,25 +159,32 @@ const std::vector<LookSpec>& floor_looks() {
 }
 
 const std::vector<LookSpec>& clutter_looks(ClutterLook kind) {
-  static const std::vector<LookSpec> cardboard{painted(0xb8946a, 3.0), painted(0xa47c52, 1.0),
-                                               painted(0xe6e0d4, 0.5)};
+  static const std::vector<LookSpec> cardboard{plain(0xb8946a, kPlainDull, kPaintRough, 3.0),
+                                               plain(0xa47c52, kPlainDull, kPaintRough, 1.0),
+                                               plain(0xe6e0d4, kPlainDull, kPaintRough, 0.5)};
   static const std::vector<LookSpec> bottle{
       {Finish::glass, rgb(0x2f5e3a), rgb(0x2f5e3a), kFineScale, {0, 0}, {0.7, 0.9}, {0.02, 0.1}, 1},
       {Finish::glass, rgb(0x5a3a1e), rgb(0x5a3a1e), kFineScale, {0, 0}, {0.7, 0.9}, {0.02, 0.1}, 1},
       {Finish::glass, rgb(0xc8d4d0), rgb(0xc8d4d0), kFineScale, {0, 0}, {0.7, 0.9}, {0.02, 0.1}, 1},
       laminate(0xd8e4ea, 0.5)};
   static const std::vector<LookSpec> steel{brushed(0xb5b7ba, 2.0), polished(0xd6d8db, 1.0)};
-  static const std::vector<LookSpec> appliance{gloss(0xf2f2f0, 2.0),   gloss(0x1f1f21, 1.5),
-                                               brushed(0xb5b7ba, 1.5), gloss(0xb0282a, 0.4),
-                                               gloss(0xe8dfc8, 0.5),   gloss(0x5d7f95, 0.3)};
-  static const std::vector<LookSpec> fabric{painted(0xf4f2ee, 1.0), painted(0x9a9c9e, 1.0),
-                                            painted(0xa3312c, 0.7), painted(0x35547a, 0.7),
-                                            painted(0xd8c28a, 0.5), painted(0x5f7a55, 0.5)};
-  static const std::vector<LookSpec> black_glass{gloss(0x151517, 1.0)};
+  static const std::vector<LookSpec> appliance{plain(0xf2f2f0, kPlainGlossy, kLaminateRough, 2.0),
+                                               plain(0x1f1f21, kPlainGlossy, kLaminateRough, 1.5),
+                                               brushed(0xb5b7ba, 1.5),
+                                               plain(0xb0282a, kPlainGlossy, kLaminateRough, 0.4),
+                                               plain(0xe8dfc8, kPlainGlossy, kLaminateRough, 0.5),
+                                               plain(0x5d7f95, kPlainGlossy, kLaminateRough, 0.3)};
+  static const std::vector<LookSpec> fabric{
+      plain(0xf4f2ee, kPlainDull, kPaintRough, 1.0), plain(0x9a9c9e, kPlainDull, kPaintRough, 1.0),
+      plain(0xa3312c, kPlainDull, kPaintRough, 0.7), plain(0x35547a, kPlainDull, kPaintRough, 0.7),
+      plain(0xd8c28a, kPlainDull, kPaintRough, 0.5), plain(0x5f7a55, kPlainDull, kPaintRough, 0.5)};
+  static const std::vector<LookSpec> black_glass{plain(0x151517, {0.7, 0.9}, {0.05, 0.15}, 1.0)};
   static const std::vector<LookSpec> woods{
       wood(0xb5834f, 0x8a5a30, 2.0), wood(0xd9bf94, 0xb8976a, 1.0), wood(0x6b4a33, 0x3f2a1c, 0.5)};
-  static const std::vector<LookSpec> fruit{gloss(0xb3261e, 1.0), gloss(0x7fae3a, 1.0),
-                                           gloss(0xe88a1a, 1.0), gloss(0xe8cf3a, 0.7)};
+  static const std::vector<LookSpec> fruit{plain(0xb3261e, kPlainGlossy, kLaminateRough, 1.0),
+                                           plain(0x7fae3a, kPlainGlossy, kLaminateRough, 1.0),
+                                           plain(0xe88a1a, kPlainGlossy, kLaminateRough, 1.0),
+                                           plain(0xe8cf3a, kPlainGlossy, kLaminateRough, 0.7)};
   switch (kind) {
     case ClutterLook::cardboard:
       return cardboard;
@@ -302,8 +317,9 @@ world::Material draw_look(LookRole role, Rng& rng, double free_colour_probabilit
 
 world::Material draw_clutter_look(ClutterLook kind, Rng& rng) {
   if (kind == ClutterLook::printed || kind == ClutterLook::plastic) {
-    const LookSpec spec =
-        kind == ClutterLook::printed ? painted(0x808080, 1.0) : laminate(0x808080, 1.0);
+    const LookSpec spec = kind == ClutterLook::printed
+                              ? plain(0x808080, {0.05, 0.3}, kLaminateRough, 1.0)
+                              : plain(0x808080, kPlainGlossy, kLaminateRough, 1.0);
     world::Material m = material_of(spec, rng);
     m.colour = free_colour(rng);
     m.pattern_colour = scaled(m.colour, 0.7);

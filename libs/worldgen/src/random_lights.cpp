@@ -109,6 +109,7 @@ void relight_ceiling(world::WorldModel& world, std::size_t index, WorldBoxes& bo
   const LampSpec common = draw_lamp(o, rng);
   const Eigen::Isometry3d object_T_world = ceiling.world_T_object().inverse();
   std::vector<Eigen::Vector2d> placed;
+  std::string lamp_material;
   for (const Eigen::Vector2d& xy : candidates(area, count, rng)) {
     if (static_cast<int>(placed.size()) >= count) break;
     const LampSpec lamp = shared ? common : draw_lamp(o, rng);
@@ -120,9 +121,12 @@ void relight_ceiling(world::WorldModel& world, std::size_t index, WorldBoxes& bo
       return (p - xy).norm() < kMinSpacing_m;
     });
     if (crowded || boxes.intersects(lamp_box, index)) continue;
-    const std::string name = "looks.lamp.ceiling" + std::to_string(++lamp_number);
-    set_material(world, {.name = name, .colour = kLampColour, .light = lamp.light});
-    world::Primitive primitive = fixture_primitive(lamp, name);
+    // Lamps of one kind share their material: each material costs the realism renderer a texture.
+    if (!shared || lamp_material.empty()) {
+      lamp_material = "looks.lamp.ceiling" + std::to_string(++lamp_number);
+      set_material(world, {.name = lamp_material, .colour = kLampColour, .light = lamp.light});
+    }
+    world::Primitive primitive = fixture_primitive(lamp, lamp_material);
     primitive.object_position_m = object_T_world * world_centre_m;
     primitive.object_orientation = ceiling.world_orientation.conjugate();  // -z points down
     primitive.colour = kLampColour;

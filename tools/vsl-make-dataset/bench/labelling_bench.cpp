@@ -51,14 +51,46 @@ void BM_RandomizeLooks(benchmark::State& state) {
 BENCHMARK(BM_RandomizeLooks)->Unit(benchmark::kMillisecond);
 
 // At realism full, as vsl-make-dataset --randomize builds one renderer per view.
+// Argument: the looks' seed. Counter `materials`: the realism renderer builds a texture tile per
+// material (and colour), which is most of its construction.
 void BM_RendererConstruction(benchmark::State& state) {
-  const world::WorldModel looks = worldgen::randomize_looks(setup().world, 1);
+  const world::WorldModel looks =
+      worldgen::randomize_looks(setup().world, static_cast<std::uint64_t>(state.range(0)));
   for (auto _ : state) {
     const render::Renderer renderer(looks, setup().render_options);
     benchmark::DoNotOptimize(renderer.triangle_count());
   }
+  state.counters["materials"] = static_cast<double>(looks.materials.size());
 }
-BENCHMARK(BM_RendererConstruction)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RendererConstruction)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
+
+// The shipped kitchen as it is (19 materials): what the bake costs without randomized looks.
+void BM_RendererConstructionShippedKitchen(benchmark::State& state) {
+  for (auto _ : state) {
+    const render::Renderer renderer(setup().world, setup().render_options);
+    benchmark::DoNotOptimize(renderer.triangle_count());
+  }
+}
+BENCHMARK(BM_RendererConstructionShippedKitchen)->Unit(benchmark::kMillisecond);
+
+// The same with coarser light maps and shadow maps: arguments light-map texel (mm), shadow-map
+// side (px). How much of the construction the bake's resolution costs.
+void BM_RendererConstructionBake(benchmark::State& state) {
+  const world::WorldModel looks = worldgen::randomize_looks(setup().world, 1);
+  render::RenderOptions options = setup().render_options;
+  options.realism.light_map_texel_m = 0.001 * static_cast<double>(state.range(0));
+  options.realism.shadow_map_px = static_cast<int>(state.range(1));
+  for (auto _ : state) {
+    const render::Renderer renderer(looks, options);
+    benchmark::DoNotOptimize(renderer.triangle_count());
+  }
+}
+BENCHMARK(BM_RendererConstructionBake)
+    ->Args({30, 512})
+    ->Args({60, 512})
+    ->Args({30, 256})
+    ->Args({60, 256})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_RenderImage(benchmark::State& state) {
   const render::Renderer renderer(worldgen::randomize_looks(setup().world, 1),
