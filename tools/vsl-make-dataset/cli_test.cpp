@@ -172,6 +172,18 @@ TEST(VslMakeDataset, TheSameSeedGivesTheSameFilesWhateverTheThreads) {
             file_hashes(other).at("images/view000000_left.jpg"));
 }
 
+TEST(VslMakeDataset, ViewsCanShareALook) {
+  const fs::path a = scratch("per_look_a"), b = scratch("per_look_b");
+  for (const auto& [dir, threads] : {std::pair{a, "1"}, std::pair{b, "2"}}) {
+    const auto result =
+        make_dataset({"--world", kKitchen, "--views", "3", "--randomize", "--views-per-look", "2",
+                      "--threads", threads, "-q", "--out", dir.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+  }
+  EXPECT_EQ(vsl::recognition::load_box_labels((a / "labels.yaml").string()).images.size(), 6u);
+  EXPECT_EQ(file_hashes(a), file_hashes(b));
+}
+
 TEST(VslMakeDataset, WritesPngImagesOfTheWorldAsItIs) {
   const fs::path dir = scratch("png");
   const auto result = make_dataset({"--world", kKitchen, "--views", "2", "--realism", "off",

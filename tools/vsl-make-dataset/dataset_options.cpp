@@ -20,6 +20,8 @@ options:
   --seed S            random seed (default 1): the same seed gives the same files
   --randomize         every view in a world of its own look: materials, lamps, clutter, exposure
                       and daylight (vsl::worldgen::randomize_looks)
+  --views-per-look K  with --randomize: K views share one look (default 1); the renderer's
+                      construction per look is most of a view's time
   --realism LEVEL     off, materials or full (default full): the renderer's realism
   --head FILE         head kinematics and calibration (default config/heads/armar3.yaml)
   --format jpg|png    image files (default jpg, quality 95)
@@ -96,6 +98,8 @@ std::optional<DatasetOptions> parse_dataset_options(const std::vector<std::strin
       o.out_dir = value();
     } else if (arg == "--randomize") {
       o.randomize = true;
+    } else if (arg == "--views-per-look") {
+      o.views_per_look = parse_count(value(), arg, 1, kMaxViews);
     } else if (arg == "--realism") {
       o.realism = parse_realism(value());
     } else if (arg == "--head") {

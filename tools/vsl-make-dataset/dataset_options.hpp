@@ -19,6 +19,7 @@ struct DatasetOptions {
   std::uint64_t views = 0;
   std::uint64_t seed = 1;
   bool randomize = false;
+  std::uint64_t views_per_look = 1;  // with randomize: views that share one randomized world
   render::RealismLevel realism = render::RealismLevel::full;
   std::string head_file = "config/heads/armar3.yaml";
   bool depth = false;

@@ -88,10 +88,19 @@ void run_dataset(const DatasetOptions& o) {
   ProgressLine progress(o.views, !o.quiet);
   const unsigned threads =
       o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  // One job per look: --views-per-look views that share a randomized world and its renderer.
+  const std::uint64_t per_look = o.randomize ? o.views_per_look : 1;
+  const std::uint64_t jobs = (o.views + per_look - 1) / per_look;
   run_parallel(
-      o.views, static_cast<unsigned>(std::min<std::uint64_t>(threads, o.views)),
-      [&](std::uint64_t view) { results[view] = make_view(context, view); },
-      [&](std::uint64_t done) { progress.update(done); }, std::chrono::milliseconds(500));
+      jobs, static_cast<unsigned>(std::min<std::uint64_t>(threads, jobs)),
+      [&](std::uint64_t job) {
+        const std::uint64_t first = job * per_look;
+        std::vector<ViewResult> made =
+            make_views(context, first, std::min(per_look, o.views - first));
+        for (std::size_t k = 0; k < made.size(); ++k) results[first + k] = std::move(made[k]);
+      },
+      [&](std::uint64_t done) { progress.update(std::min(o.views, done * per_look)); },
+      std::chrono::milliseconds(500));
   progress.finish();
   write_text_file_atomically(std::filesystem::path(o.out_dir) / "labels.yaml",
                              labels_yaml(o, results));

@@ -52,6 +52,24 @@ void randomize_camera(render::RealismOptions& realism, scenario::Rng& rng, bool 
   realism.jpeg_quality = jpeg_quality;
 }
 
+// A view's random numbers, drawn from its own stream so that view k is the same whatever the
+// number of views, threads or views per look.
+struct ViewSeeds {
+  std::uint64_t looks = 0, left = 0, right = 0;
+  render::RenderOptions render_options;
+};
+
+ViewSeeds view_seeds(const DatasetOptions& options, std::uint64_t view) {
+  scenario::Rng rng = scenario::Rng::for_scenario(options.seed, view, scenario::Stream::noise);
+  ViewSeeds seeds;
+  seeds.looks = rng.next();
+  seeds.left = rng.next();
+  seeds.right = rng.next();
+  seeds.render_options = dataset_render_options(options);
+  randomize_camera(seeds.render_options.realism, rng, options.randomize);
+  return seeds;
+}
+
 struct Camera {
   const char* name;
   const head::CameraIntrinsics& intrinsics;
@@ -105,36 +123,41 @@ ViewTimes& ViewTimes::operator+=(const ViewTimes& other) {
   return *this;
 }
 
-ViewResult make_view(const DatasetContext& c, std::uint64_t view) {
-  ViewResult result;
+std::vector<ViewResult> make_views(const DatasetContext& c, std::uint64_t first,
+                                   std::uint64_t count) {
+  std::vector<ViewResult> results(count);
   StageClock clock;
-  const ViewPose pose = c.sampler.sample(c.options.seed, view);
-  scenario::Rng rng = scenario::Rng::for_scenario(c.options.seed, view, scenario::Stream::noise);
-  const std::uint64_t looks_seed = rng.next();
-  const std::uint64_t left_seed = rng.next(), right_seed = rng.next();
-  render::RenderOptions render_options = dataset_render_options(c.options);
-  randomize_camera(render_options.realism, rng, c.options.randomize);
-
+  std::vector<ViewSeeds> seeds;
+  std::vector<ViewPose> poses;
+  for (std::uint64_t k = 0; k < count; ++k) {
+    poses.push_back(c.sampler.sample(c.options.seed, first + k));
+    seeds.push_back(view_seeds(c.options, first + k));
+  }
+  // The views share the first view's look and camera settings.
   const render::Renderer* renderer = c.shared_renderer;
   std::optional<render::Renderer> own_renderer;
   if (c.options.randomize) {
     worldgen::LookRandomization looks;
-    looks.keep_clear.push_back({pose.world_T_ego.translation().head<2>(), kRobotClearance_m});
-    const world::WorldModel world = worldgen::randomize_looks(c.world, looks_seed, looks);
-    result.times.looks_s = clock.lap();
-    own_renderer.emplace(world, render_options);
+    for (const ViewPose& pose : poses) {
+      looks.keep_clear.push_back({pose.world_T_ego.translation().head<2>(), kRobotClearance_m});
+    }
+    const world::WorldModel world = worldgen::randomize_looks(c.world, seeds[0].looks, looks);
+    results[0].times.looks_s = clock.lap();
+    own_renderer.emplace(world, seeds[0].render_options);
     renderer = &*own_renderer;
-    result.times.renderer_s = clock.lap();
+    results[0].times.renderer_s = clock.lap();
   }
-  Eigen::Isometry3d ego_T_left, ego_T_right;
-  c.head.ego_T_cameras(pose.joints.positions_rad, ego_T_left, ego_T_right);
-  const Camera cameras[] = {
-      {"left", c.head.calibration().left, pose.world_T_ego * ego_T_left, left_seed},
-      {"right", c.head.calibration().right, pose.world_T_ego * ego_T_right, right_seed}};
-  for (const Camera& camera : cameras) {
-    result.label_entries += make_image(c, *renderer, camera, view, result, clock);
+  for (std::uint64_t k = 0; k < count; ++k) {
+    Eigen::Isometry3d ego_T_left, ego_T_right;
+    c.head.ego_T_cameras(poses[k].joints.positions_rad, ego_T_left, ego_T_right);
+    const Camera cameras[] = {
+        {"left", c.head.calibration().left, poses[k].world_T_ego * ego_T_left, seeds[k].left},
+        {"right", c.head.calibration().right, poses[k].world_T_ego * ego_T_right, seeds[k].right}};
+    for (const Camera& camera : cameras) {
+      results[k].label_entries += make_image(c, *renderer, camera, first + k, results[k], clock);
+    }
   }
-  return result;
+  return results;
 }
 
 }  // namespace vsl::tools

@@ -1,10 +1,11 @@
-// One view of the dataset (docs/dataset.md): its seeded pose, its look (with --randomize), its
-// stereo rendering, the labels of both images and their files.
+// Views of the dataset (docs/dataset.md): their seeded poses, their look (with --randomize), their
+// stereo renderings, the labels of both images and their files.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "dataset_options.hpp"
 #include "label_plan.hpp"
@@ -49,8 +50,10 @@ struct ViewResult {
   ViewTimes times;
 };
 
-// Makes view `view` and writes its files. Deterministic in (options.seed, view) alone. Throws
-// IoError when a file cannot be written.
-ViewResult make_view(const DatasetContext& context, std::uint64_t view);
+// Makes the views first .. first + count - 1 and writes their files. With --randomize they share
+// one look, the first view's (--views-per-look). Deterministic in the seed and the views alone.
+// Throws IoError when a file cannot be written.
+std::vector<ViewResult> make_views(const DatasetContext& context, std::uint64_t first,
+                                   std::uint64_t count);
 
 }  // namespace vsl::tools
