@@ -129,9 +129,13 @@ int check_image(const vsl::world::WorldModel& world, const fs::path& dir,
 
 TEST(VslMakeDataset, LabelsAgreeWithTheWrittenIdImages) {
   const fs::path dir = scratch("labels");
-  const auto result = make_dataset({"--world", kKitchen, "--views", "3", "--seed", "4",
-                                    "--randomize", "--ids", "--depth", "--out", dir.string()});
+  const fs::path preview = dir.string() + "_preview.png";
+  const auto result =
+      make_dataset({"--world", kKitchen, "--views", "3", "--seed", "4", "--randomize", "--ids",
+                    "--depth", "--preview", preview.string(), "--out", dir.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
+  const cv::Mat sheet = cv::imread(preview.string());
+  EXPECT_EQ(sheet.size(), cv::Size(3 * 320, 240));  // three left images at half size
   EXPECT_NE(result.err.find("wrote 6 images"), std::string::npos) << result.err;
   EXPECT_EQ(read(dir / "classes.txt"), "door\nhandle\ncabinet door\nrefrigerator door\n");
   const vsl::recognition::BoxLabels labels =

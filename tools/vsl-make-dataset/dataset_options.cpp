@@ -31,6 +31,8 @@ options:
   --min-visible-px N  skip boxes of fewer visible pixels (default 20)
   --min-box-px N      skip boxes narrower or lower than this (default 3)
   --max-occluded F    skip boxes whose object is hidden more than this fraction (default 0.8)
+  --preview FILE      also write a contact sheet of the first six left images with their
+                      boxes (room door red, handle yellow, cabinet door green, fridge magenta)
   -q, --quiet         no progress or summary on standard error
 exit codes: 0 ok, 1 a file could not be written, 2 bad usage, world or head file
 )";
@@ -118,6 +120,8 @@ std::optional<DatasetOptions> parse_dataset_options(const std::vector<std::strin
       o.filter.min_box_side_px = static_cast<int>(parse_count(value(), arg, 1, kMaxInt));
     } else if (arg == "--max-occluded") {
       o.filter.max_occluded = parse_fraction(value(), arg);
+    } else if (arg == "--preview") {
+      o.preview_file = value();
     } else if (arg == "-q" || arg == "--quiet") {
       o.quiet = true;
     } else {

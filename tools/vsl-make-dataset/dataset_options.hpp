@@ -30,6 +30,7 @@ struct DatasetOptions {
   int jpeg_quality = 95;
   LabelFilter filter;
   bool quiet = false;
+  std::string preview_file;  // "": none
 };
 
 // A bad command line; the message names the problem (without the program's name).

@@ -12,6 +12,7 @@
 #include "dataset_view.hpp"
 #include "label_formats.hpp"
 #include "parallel_views.hpp"
+#include "preview_sheet.hpp"
 #include "vsl/world/world_io.hpp"
 
 namespace vsl::tools {
@@ -104,6 +105,11 @@ void run_dataset(const DatasetOptions& o) {
   progress.finish();
   write_text_file_atomically(std::filesystem::path(o.out_dir) / "labels.yaml",
                              labels_yaml(o, results));
+  if (!o.preview_file.empty()) {
+    const cv::Mat sheet =
+        preview_sheet((std::filesystem::path(o.out_dir) / "labels.yaml").string());
+    write_image_file(o.preview_file, sheet, o);
+  }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet) print_summary(o, results, wall_s);
