@@ -84,7 +84,7 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
     r.offset = total;
     total += static_cast<std::size_t>(g.width) * g.height;
   }
-  texels_.assign(total * 3, 0.0f);
+  texels_.assign(total, Eigen::Array4f::Zero());
 
   // Direct light, through the shadow maps. The shadow test starts 1 cm off the surface so that a
   // surface never shadows itself.
@@ -101,7 +101,8 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
         const Eigen::Vector3f p =
             (g.origin + i * g.texel_u * g.axis_u + j * g.texel_v * g.axis_v).cast<float>();
         const Eigen::Vector3f lifted = p + 0.01f * normal;
-        float* texel = &texels_[(rects_[t].offset + static_cast<std::size_t>(j) * g.width + i) * 3];
+        Eigen::Array4f& texel =
+            texels_[rects_[t].offset + static_cast<std::size_t>(j) * g.width + i];
         for (const Light& light : lights) {
           const float scale = light.unshadowed_scale(p, normal, nullptr);
           if (scale <= 0.0f) continue;
@@ -140,10 +141,11 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
   for (std::size_t t = 0; t < count; ++t) {
     if (inputs.skip[t]) continue;
     const float slot = inputs.slot_factor[t];
-    float* texel = &texels_[rects_[t].offset * 3];
+    const Eigen::Array4f bounce(indirect[0], indirect[1], indirect[2], 0.0f);
     const std::size_t n = static_cast<std::size_t>(rects_[t].width) * rects_[t].height;
     for (std::size_t i = 0; i < n; ++i) {
-      for (int k = 0; k < 3; ++k) texel[3 * i + k] = slot * (texel[3 * i + k] + indirect[k]);
+      Eigen::Array4f& texel = texels_[rects_[t].offset + i];
+      texel = slot * (texel + bounce);
     }
   }
 }
