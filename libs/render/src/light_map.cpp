@@ -53,6 +53,36 @@ Grid grid_of(const std::array<Eigen::Vector3d, 3>& corner, const Eigen::Vector3d
   return g;
 }
 
+// The lights that can reach any point of triangle t: the triangle's plane faces them, and its
+// bounding sphere meets their cone. Most lamps light a small part of a room (a strip under a
+// cupboard lights the worktop below it), so this leaves a few lights per texel instead of all.
+std::vector<const Light*> lights_reaching(const Scene& scene, std::size_t t,
+                                          const std::vector<Light>& lights) {
+  const auto& tri = scene.triangles[t];
+  const Eigen::Vector3f a = scene.world_vertices_m[tri[0]].cast<float>();
+  const Eigen::Vector3f b = scene.world_vertices_m[tri[1]].cast<float>();
+  const Eigen::Vector3f c = scene.world_vertices_m[tri[2]].cast<float>();
+  const Eigen::Vector3f normal = scene.world_planes[t].head<3>().cast<float>();
+  const Eigen::Vector3f centre = (a + b + c) / 3.0f;
+  const float radius = std::sqrt(std::max({(a - centre).squaredNorm(), (b - centre).squaredNorm(),
+                                           (c - centre).squaredNorm()})) +
+                       0.05f;
+  std::vector<const Light*> out;
+  for (const Light& light : lights) {
+    if (normal.dot(light.world_position_m - a) <= 0.0f) continue;  // behind the plane
+    const Eigen::Vector3f d = centre - light.world_position_m;
+    const float distance = d.norm();
+    if (distance > radius) {
+      const float to_centre =
+          std::acos(std::clamp(light.world_axis.dot(d) / distance, -1.0f, 1.0f));
+      const float sphere = std::asin(std::min(radius / distance, 1.0f));
+      if (to_centre - sphere > std::acos(light.cos_beam_half_angle)) continue;  // outside the cone
+    }
+    out.push_back(&light);
+  }
+  return out;
+}
+
 }  // namespace
 
 LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
@@ -95,6 +125,7 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
     if (inputs.skip[t]) continue;
     const Grid& g = grids[t];
     const Eigen::Vector3f normal = scene.world_planes[t].head<3>().cast<float>();
+    const std::vector<const Light*> reaching = lights_reaching(scene, t, lights);
     std::array<double, 3> triangle_sum{0, 0, 0};
     for (int j = 0; j < g.height; ++j) {
       for (int i = 0; i < g.width; ++i) {
@@ -103,7 +134,8 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
         const Eigen::Vector3f lifted = p + 0.01f * normal;
         Eigen::Array4f& texel =
             texels_[rects_[t].offset + static_cast<std::size_t>(j) * g.width + i];
-        for (const Light& light : lights) {
+        for (const Light* light_pointer : reaching) {
+          const Light& light = *light_pointer;
           const float scale = light.unshadowed_scale(p, normal, nullptr);
           if (scale <= 0.0f) continue;
           const float lit = light.shadow ? light.shadow->visibility(lifted) * scale : scale;

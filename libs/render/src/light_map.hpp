@@ -20,7 +20,7 @@ namespace vsl::render {
 class Scene;
 
 struct LightMapInputs {
-  double texel_m = 0.03;
+  double texel_m = 0.04;
   double indirect_light = 0.8;  // RealismOptions::indirect_light
   // Per triangle: its mean linear albedo (tints the bounced light) and whether to bake it at
   // all (lamps and window panes draw their own radiance and need no light).
