@@ -85,6 +85,33 @@ std::vector<const Light*> lights_reaching(const Scene& scene, std::size_t t,
 
 }  // namespace
 
+void LightMap::soften() {
+  // A [1 2 1] / 4 filter along rows and then columns of each triangle's grid (edges clamped):
+  // the shadow of a chair leg drawn through bilinear 4 cm texels shows stair steps, a penumbra
+  // a texel wide does not (and real lamps, not points, cast soft shadows anyway).
+  std::vector<Eigen::Array4f, Eigen::aligned_allocator<Eigen::Array4f>> line;
+  for (std::size_t t = 0; t < rects_.size(); ++t) {
+    const Rect& r = rects_[t];
+    if (r.width < 3 && r.height < 3) continue;
+    auto at = [&](int x, int y) -> Eigen::Array4f& {
+      return texels_[r.offset + static_cast<std::size_t>(y) * r.width + x];
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+      const int n = pass == 0 ? r.width : r.height, lines = pass == 0 ? r.height : r.width;
+      if (n < 3) continue;
+      line.resize(static_cast<std::size_t>(n));
+      for (int l = 0; l < lines; ++l) {
+        for (int i = 0; i < n; ++i) line[i] = pass == 0 ? at(i, l) : at(l, i);
+        for (int i = 0; i < n; ++i) {
+          const Eigen::Array4f value = 0.25f * line[std::max(i - 1, 0)] + 0.5f * line[i] +
+                                       0.25f * line[std::min(i + 1, n - 1)];
+          (pass == 0 ? at(i, l) : at(l, i)) = value;
+        }
+      }
+    }
+  }
+}
+
 LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
                    const LightMapInputs& inputs) {
   const std::size_t count = scene.triangles.size();
@@ -136,9 +163,13 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
             texels_[rects_[t].offset + static_cast<std::size_t>(j) * g.width + i];
         for (const Light* light_pointer : reaching) {
           const Light& light = *light_pointer;
-          const float scale = light.unshadowed_scale(p, normal, nullptr);
+          Eigen::Vector3f to_light;
+          const float scale = light.unshadowed_scale(p, normal, &to_light);
           if (scale <= 0.0f) continue;
-          const float lit = light.shadow ? light.shadow->visibility(lifted) * scale : scale;
+          // Moved 2 cm toward the light as well: light grazing a wall meets the shadow map's
+          // coarse texels at a slant, where a normal offset alone leaves shadow acne.
+          const float lit =
+              light.shadow ? light.shadow->visibility(lifted + 0.02f * to_light) * scale : scale;
           if (lit <= 0.0f) continue;
           for (int k = 0; k < 3; ++k) texel[k] += lit * light.intensity_rgb[k];
         }
@@ -160,6 +191,8 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
     area_sum += area;
   }
   if (!(area_sum > 0.0)) return;
+
+  soften();
 
   // Bounced light: the light the room's surfaces reflect, spread evenly. Its colour is the
   // reflected light's, its level indirect_light times the mean direct irradiance.

@@ -67,6 +67,8 @@ class LightMap {
     int width = 1, height = 1;
     std::size_t offset = 0;  // first texel in texels_
   };
+  void soften();  // a texel-wide penumbra on the baked shadows
+
   std::vector<Rect> rects_;
   // Linear RGB irradiance (lux) and a pad: one aligned 4-float load per texel.
   std::vector<Eigen::Array4f, Eigen::aligned_allocator<Eigen::Array4f>> texels_;
