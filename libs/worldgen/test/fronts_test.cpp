@@ -304,5 +304,29 @@ TEST(HandleKinds, RunsMayHaveTheirOwn) {
   for (const std::string& problem : check_generated_world(world)) ADD_FAILURE() << problem;
 }
 
+TEST(HandleKinds, EveryUnitWorksInEveryStyleWithEveryKind) {
+  for (const UnitKind& unit : kitchen_unit_kinds()) {
+    if (std::string(unit.name) == "gap") continue;
+    for (const char* style : kStyles) {
+      for (const char* kind : kKinds) {
+        std::string text = "room: {size: [4.0, 3.0, 2.5]}\ndoors: {style: ";
+        text += style;
+        text += "}\nhandles: {kind: ";
+        text += kind;
+        text += "}\nruns:\n  - {wall: north, at: 1.0, ";
+        text += unit.upper ? "upper: [" : "base: [";
+        text += unit.name;
+        text += ", {";
+        text += unit.name;
+        text += ": 0.5}]}\n";
+        const world::WorldModel world = generate(text);
+        for (const std::string& problem : check_generated_world(world)) {
+          ADD_FAILURE() << unit.name << " " << style << " " << kind << ": " << problem;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vsl::worldgen
