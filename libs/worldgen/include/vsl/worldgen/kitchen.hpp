@@ -8,8 +8,9 @@
 // generated object is turned about z only, and its frame has x to the right as seen from the
 // room, y pointing back (away from a viewer facing it, into the wall) and z up: its front is its
 // -y face. Positions are what a stereo camera would triangulate: the centre of the front face for
-// flat things (door, drawer_front, window, oven, room_door, wall), the centre of the bar for a
-// handle, the middle of the top for tables, hobs and sinks, the centre of the body otherwise.
+// flat things (door, drawer_front, window, oven, room_door, wall), the centre of the visible grip
+// for a handle (a bar's centre, a knob's front, a cup pull's opening, a recessed grip's opening),
+// the middle of the top for tables, hobs and sinks, the centre of the body otherwise.
 #pragma once
 
 #include <Eigen/Core>
