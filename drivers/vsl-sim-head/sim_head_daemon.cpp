@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <variant>
 
+#include "camera_motion.hpp"
 #include "gaze_command.hpp"
 #include "messages.hpp"
 #include "vsl/ground_truth_pose_t.hpp"
@@ -19,6 +20,10 @@ using Clock = std::chrono::steady_clock;
 // A stalled loop (a debugger, a suspended process) must not make the joints jump: longer gaps
 // count as this much motion time.
 constexpr double kMaxStepS = 0.25;
+
+// The window over which the joints' velocities are taken for motion blur when the exposure time
+// is 0 (no blur then, but the cameras' motion stays what it is).
+constexpr double kMinMotionWindowS = 1e-3;
 
 // "neck_yaw=0.1234, neck_pitch=..." for the debug log.
 std::string joint_list(const head::HeadKinematics& head, const std::vector<double>& radians) {
@@ -50,7 +55,8 @@ SimHeadDaemon::SimHeadDaemon(runtime::Daemon& daemon, SimHeadSetup setup)
   daemon_.log().info("world ", world_name_, " (", setup_.world.objects.size(), " objects, ",
                      renderer_.triangle_count(), " triangles), head ", setup_.head.name(), " (",
                      setup_.head.joints().size(), " joints), robot at (", t.x(), ", ", t.y(), ", ",
-                     t.z(), ") m, ", config.frame_rate_hz, " frames/s");
+                     t.z(), ") m, ", config.frame_rate_hz, " frames/s, realism ",
+                     render::realism_level_name(config.render.realism.level));
 }
 
 void SimHeadDaemon::on_gaze_command(const vsl::gaze_command_t& command) {
@@ -101,10 +107,15 @@ void SimHeadDaemon::frame_tick() {
   const Eigen::Isometry3d& world_T_ego = setup_.config.world_T_ego;
   // Each image its own noise, reproducible from the seed and the frame id.
   const std::uint64_t seed = setup_.config.noise_seed + 2 * static_cast<std::uint64_t>(frame_id_);
+  // Motion blur: how the cameras turn during the exposure that starts now.
+  const double exposure_s = setup_.config.render.realism.exposure_time_s;
+  const StereoCameraMotion motion = stereo_camera_motion(
+      setup_.head, state.positions_rad,
+      simulator_.velocities_over_rad_s(std::max(exposure_s, kMinMotionWindowS)));
   const head::StereoCalibration& calibration = setup_.head.calibration();
   const Clock::time_point render_start = Clock::now();
-  renderer_.render(calibration.left, world_T_ego * ego_T_left, seed, left_);
-  renderer_.render(calibration.right, world_T_ego * ego_T_right, seed + 1, right_);
+  renderer_.render(calibration.left, world_T_ego * ego_T_left, seed, motion.left, left_);
+  renderer_.render(calibration.right, world_T_ego * ego_T_right, seed + 1, motion.right, right_);
   report_slow_rendering(Clock::now() - render_start);
 
   vsl::ground_truth_pose_t truth;
