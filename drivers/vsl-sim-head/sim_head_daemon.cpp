@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <variant>
 
-#include "camera_motion.hpp"
+#include "frame_render.hpp"
 #include "gaze_command.hpp"
 #include "messages.hpp"
 #include "vsl/ground_truth_pose_t.hpp"
@@ -20,10 +20,6 @@ using Clock = std::chrono::steady_clock;
 // A stalled loop (a debugger, a suspended process) must not make the joints jump: longer gaps
 // count as this much motion time.
 constexpr double kMaxStepS = 0.25;
-
-// The window over which the joints' velocities are taken for motion blur when the exposure time
-// is 0 (no blur then, but the cameras' motion stays what it is).
-constexpr double kMinMotionWindowS = 1e-3;
 
 // "neck_yaw=0.1234, neck_pitch=..." for the debug log.
 std::string joint_list(const head::HeadKinematics& head, const std::vector<double>& radians) {
@@ -101,21 +97,11 @@ void SimHeadDaemon::control_tick() {
 void SimHeadDaemon::frame_tick() {
   step_to_now();
   const std::int64_t utime = runtime::wall_utime();
-  const head::JointState& state = simulator_.state();
-  Eigen::Isometry3d ego_T_left, ego_T_right;
-  setup_.head.ego_T_cameras(state.positions_rad, ego_T_left, ego_T_right);
   const Eigen::Isometry3d& world_T_ego = setup_.config.world_T_ego;
   // Each image its own noise, reproducible from the seed and the frame id.
   const std::uint64_t seed = setup_.config.noise_seed + 2 * static_cast<std::uint64_t>(frame_id_);
-  // Motion blur: how the cameras turn during the exposure that starts now.
-  const double exposure_s = setup_.config.render.realism.exposure_time_s;
-  const StereoCameraMotion motion = stereo_camera_motion(
-      setup_.head, state.positions_rad,
-      simulator_.velocities_over_rad_s(std::max(exposure_s, kMinMotionWindowS)));
-  const head::StereoCalibration& calibration = setup_.head.calibration();
   const Clock::time_point render_start = Clock::now();
-  renderer_.render(calibration.left, world_T_ego * ego_T_left, seed, motion.left, left_);
-  renderer_.render(calibration.right, world_T_ego * ego_T_right, seed + 1, motion.right, right_);
+  render_stereo_frame(renderer_, setup_.head, simulator_, world_T_ego, seed, left_, right_);
   report_slow_rendering(Clock::now() - render_start);
 
   vsl::ground_truth_pose_t truth;
@@ -132,7 +118,7 @@ void SimHeadDaemon::frame_tick() {
   frame.gaze_reached = simulator_.reached();
   frame.left = image_message(left_.image, utime);
   frame.right = image_message(right_.image, utime);
-  frame.head = head_state_message(setup_.head, state, utime);
+  frame.head = head_state_message(setup_.head, simulator_.state(), utime);
   daemon_.publish(daemon_.channels().stereo_frame, frame);
 }
 
