@@ -29,7 +29,8 @@ Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
   for (std::size_t object = 0; object < world.objects.size(); ++object) {
     const world::ObjectModel& model = world.objects[object];
     const Eigen::Isometry3d world_T_object = model.world_T_object();
-    for (const world::Primitive& primitive : model.primitives) {
+    for (std::size_t p = 0; p < model.primitives.size(); ++p) {
+      const world::Primitive& primitive = model.primitives[p];
       const Mesh mesh = mesh_of(primitive.shape, options.cylinder_segments);
       const Eigen::Isometry3d world_T_primitive = world_T_object * primitive.object_T_primitive();
       Chunk chunk;
@@ -59,6 +60,7 @@ Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
                                   unit_normal.dot(a));
         shaded_bgr.push_back(lambert_bgr(primitive.colour, unit_normal, options));
         object_index.push_back(static_cast<std::int32_t>(object));
+        primitive_index.push_back(static_cast<std::uint32_t>(p));
       }
       chunk.triangle_count = static_cast<std::uint32_t>(triangles.size()) - chunk.first_triangle;
       if (chunk.triangle_count == 0) continue;
@@ -66,10 +68,10 @@ Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
       max_chunk_vertices = std::max(max_chunk_vertices, chunk.vertex_count);
     }
   }
-  const std::vector<float> slot_factors = slot_light_factors(
-      world_vertices_m, triangles, world_planes, options.slot_occlusion_max_width_m);
+  slot_factor = slot_light_factors(world_vertices_m, triangles, world_planes,
+                                   options.slot_occlusion_max_width_m);
   for (std::size_t t = 0; t < shaded_bgr.size(); ++t) {
-    for (float& channel : shaded_bgr[t]) channel *= slot_factors[t];
+    for (float& channel : shaded_bgr[t]) channel *= slot_factor[t];
   }
 }
 

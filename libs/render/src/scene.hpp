@@ -33,8 +33,10 @@ class Scene {
   std::vector<std::array<std::uint32_t, 3>> triangles;  // global vertex indices, CCW outside
   // Per triangle: outward unit normal n and offset d of its plane n . x = d (world frame, m).
   std::vector<Eigen::Vector4d> world_planes;
-  std::vector<ShadedColour> shaded_bgr;    // per triangle
-  std::vector<std::int32_t> object_index;  // per triangle, index into WorldModel::objects
+  std::vector<ShadedColour> shaded_bgr;        // per triangle
+  std::vector<std::int32_t> object_index;      // per triangle, index into WorldModel::objects
+  std::vector<std::uint32_t> primitive_index;  // per triangle, index into the object's primitives
+  std::vector<float> slot_factor;  // per triangle, light kept in a narrow slot (1: not in one)
   std::vector<Chunk> chunks;
   std::uint32_t max_chunk_vertices = 0;  // size of the rasterizer's per-chunk scratch
 };

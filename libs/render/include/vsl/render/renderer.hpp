@@ -36,10 +36,10 @@ struct RealismOptions {
   // Diffuse light with shadows is baked once per Renderer into light maps of this texel size, m:
   // the scene is static, only the head moves, so it is view-independent.
   double light_map_texel_m = 0.03;
-  int shadow_map_px = 512;       // side of each lamp's shadow map, pixels
-  double indirect_light = 0.35;  // light that bounces around the room, as a fraction of the mean
-                                 // direct light on the room's surfaces (no shadows, no direction)
-  double daylight = 1.0;         // window light relative to a bright overcast day; 0: night
+  int shadow_map_px = 512;      // side of each lamp's shadow map, pixels
+  double indirect_light = 0.8;  // light that bounces around the room, as a fraction of the mean
+                                // direct light on the room's surfaces (no shadows, no direction)
+  double daylight = 1.0;        // window light relative to a bright overcast day; 0: night
   double daylight_colour_temperature_k = 6500.0;
   bool textures = true;  // false: finishes keep their highlights but lose their pattern
   // Used only when the world has no lamp and no window: RenderOptions::world_light_direction as
@@ -104,6 +104,7 @@ struct RenderedImage {
 class Scene;            // world-frame triangle soup, built once from the world model
 class DistortionCache;  // per-intrinsics distortion maps, built on first use
 class NoiseTable;       // the sensor noise's distribution, built once
+class RealisticScene;   // textures, light maps and lights of the realism levels
 
 class Renderer {
  public:
@@ -126,12 +127,20 @@ class Renderer {
 
   const RenderOptions& options() const { return options_; }
   std::size_t triangle_count() const;
+  // Lights found in the world at realism materials or full (lamps, windows, or the fallback);
+  // 0 at level off.
+  std::size_t light_count() const;
 
  private:
+  void render_realistic(const head::CameraIntrinsics& intrinsics,
+                        const Eigen::Isometry3d& world_T_camera, std::uint64_t noise_seed,
+                        const CameraMotion& motion, RenderedImage& out) const;
+
   RenderOptions options_;
   std::shared_ptr<const Scene> scene_;
   std::shared_ptr<const NoiseTable> noise_;
   std::shared_ptr<DistortionCache> distortion_cache_;  // guarded by its own mutex
+  std::shared_ptr<const RealisticScene> realistic_;    // null at realism level off
 };
 
 }  // namespace vsl::render

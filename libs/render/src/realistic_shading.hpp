@@ -1,0 +1,70 @@
+// The realistic renderer's surfaces and light (realism levels materials and full): textured
+// finishes, the world's lamps and window light baked with shadows into a light map, specular
+// highlights of the strongest lights and a reflection of the room on metal and glass. Built
+// once per Renderer from the world; shading is const and thread-safe.
+#pragma once
+
+#include <opencv2/core/mat.hpp>
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "light_map.hpp"
+#include "lights.hpp"
+#include "procedural_texture.hpp"
+#include "rasterizer.hpp"
+#include "surface_look.hpp"
+
+namespace vsl::render {
+
+class RealisticScene {
+ public:
+  RealisticScene(const world::WorldModel& world, const Scene& scene, const RenderOptions& options);
+
+  // Linear radiance (CV_32FC3, BGR, arbitrary units before exposure) of every pixel of `camera`,
+  // from `fine`, the raster buffers of the same view drawn at `samples` times the resolution
+  // (Pinhole of `fine` = finer(camera, samples)). A pixel whose samples all show one triangle is
+  // shaded once, at its centre sample; a pixel on an edge is the mean of its shaded samples, so
+  // edges are anti-aliased at the cost of shading only the pixels on them several times.
+  void shade(const Scene& scene, const Pinhole& camera, int samples,
+             const Eigen::Isometry3d& world_T_camera, const RasterTarget& fine,
+             cv::Mat& radiance_bgr) const;
+
+  std::size_t light_count() const { return lights_.lights.size(); }
+  std::size_t light_map_texels() const { return light_map_ ? light_map_->texel_count() : 0; }
+
+ private:
+  struct Look {
+    SurfaceLook surface;
+    std::shared_ptr<const TextureTile> texture;
+    float specular = 0.0f, exponent = 1.0f, reflectance = 0.0f, fresnel_base = 0.0f;
+    bool emissive = false;
+    std::array<float, 3> emitted_rgb{0, 0, 0};  // radiance of a lamp or a window's sky
+  };
+  struct TriangleLook {
+    std::uint16_t look = 0;
+    std::array<std::int16_t, 2> highlight_lights{-1, -1};  // the strongest lights, or -1
+    Eigen::Vector4f s_axis, t_axis;  // texture coordinates (m) = axis . (world point, 1)
+    Eigen::Vector3f world_normal;    // unit, outward
+  };
+
+  void shade_sample(const Scene& scene, std::int32_t triangle, const Eigen::Vector3f& world_point,
+                    const Eigen::Vector3f& to_camera, float footprint_m, float rgb[3]) const;
+  void add_highlights(const Look& look, const TriangleLook& t, const Eigen::Vector3f& p,
+                      const Eigen::Vector3f& n, const Eigen::Vector3f& v, float rgb[3]) const;
+
+  bool textures_ = true;
+  WorldLights lights_;
+  std::unique_ptr<const LightMap> light_map_;
+  std::vector<Look> looks_;
+  std::vector<TriangleLook> triangles_;
+  std::array<float, 3> background_rgb_{0, 0, 0};
+  std::array<float, 3> room_below_rgb_{0, 0, 0};  // reflected room: radiance seen looking down
+  std::array<float, 3> room_above_rgb_{0, 0, 0};  // and looking up
+};
+
+}  // namespace vsl::render
