@@ -24,7 +24,7 @@ void read_scene_keys(const Node& section, render::RealismOptions& out) {
   if (const auto v = section.find("light_map_texel_m")) {
     out.light_map_texel_m = v->as_double_in(0.005, 0.5);
   }
-  if (const auto v = section.find("shadow_map_px")) out.shadow_map_px = int_in(*v, 64, 8192);
+  if (const auto v = section.find("shadow_map_px")) out.shadow_map_px = int_in(*v, 64, 4096);
   if (const auto v = section.find("indirect_light")) out.indirect_light = v->as_double_in(0.0, 2.0);
   if (const auto v = section.find("daylight")) out.daylight = v->as_double_in(0.0, 10.0);
   if (const auto v = section.find("daylight_colour_temperature_k")) {
@@ -61,7 +61,13 @@ void read_camera_keys(const Node& section, render::RealismOptions& out) {
     }
   }
   if (const auto v = section.find("full_well_electrons")) {
-    out.full_well_electrons = v->as_double_in(100.0, 1e6);
+    out.full_well_electrons = v->as_double();
+    if (out.full_well_electrons != 0.0 &&
+        !(out.full_well_electrons >= 100.0 && out.full_well_electrons <= 1e7)) {
+      std::ostringstream what;
+      what << "must be 0 (no sensor noise) or in [100, 1e7], got " << out.full_well_electrons;
+      v->fail(what.str());
+    }
   }
   if (const auto v = section.find("read_noise_electrons")) {
     out.read_noise_electrons = v->as_double_in(0.0, 1000.0);

@@ -90,6 +90,13 @@ TEST(VslRender, RealismLevels) {
     const cv::Mat left = cv::imread((dir / (std::string(level) + "_left.png")).string());
     EXPECT_EQ(left.size(), cv::Size(640, 480)) << level;
   }
+  // --clean leaves nothing random at level full either: another seed, the same image.
+  ASSERT_EQ(
+      render("full_seed5", {"--realism", "full", "--exposure-ev", "-0.5", "--seed", "5"}).exit_code,
+      0);
+  EXPECT_EQ(cv::norm(cv::imread((dir / "full_left.png").string()),
+                     cv::imread((dir / "full_seed5_left.png").string()), cv::NORM_INF),
+            0.0);
   // --exposure-ev below full changes nothing, and says so.
   const auto materials = render("materials", {"--realism", "materials", "--exposure-ev", "1"});
   EXPECT_EQ(materials.err, "vsl-render: warning: --exposure-ev acts only at --realism full\n");

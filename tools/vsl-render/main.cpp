@@ -41,8 +41,8 @@ options:
   --depth               also write PREFIX_depth.png: the left camera's depth, 16-bit, millimetres
                         along the optical axis (0 where nothing)
   --seed N              sensor noise seed of the left image (the right one uses N + 1); default 0
-  --clean               no sensor noise and no exposure variation (at realism full also no
-                        read noise, no white-balance error and shot noise below 0.01 grey levels)
+  --clean               no sensor noise and no exposure variation (at realism full no shot
+                        or read noise and no white-balance error)
   --realism LEVEL       off (default: flat colours), materials (textures, lamps, window light,
                         shadows, highlights) or full (materials and the camera's effects:
                         auto-exposure, vignetting, defocus, sensor noise, white balance, MJPEG)
@@ -216,11 +216,8 @@ vsl::render::RenderOptions render_options(const Options& options) {
     // Nothing random: the same image for every seed.
     out.noise_sigma_grey = 0.0;
     out.exposure_variation = 0.0;
-    out.realism.read_noise_electrons = 0.0;
+    out.realism.full_well_electrons = 0.0;  // no shot and no read noise
     out.realism.white_balance_error = 0.0;
-    // Shot noise has no switch of its own: sigma = sqrt(electrons), so a white pixel's relative
-    // noise is 1 / sqrt(full well): 3e-5, under 0.01 of a grey level.
-    out.realism.full_well_electrons = 1e9;
   }
   return out;
 }

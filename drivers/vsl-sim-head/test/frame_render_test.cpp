@@ -70,5 +70,36 @@ TEST(FrameRender, BelowLevelFullATurningHeadLooksAsAStillOne) {
   }
 }
 
+TEST(FrameRender, AtLevelFullATurningHeadBlursAlongTheTurn) {
+  render::RenderOptions options;
+  options.realism.level = render::RealismLevel::full;
+  options.realism.full_well_electrons = 0.0;  // no noise: only the blur differs
+  options.realism.white_balance_error = 0.0;
+  options.realism.aperture_m = 0.0;
+  options.realism.exposure_time_s = 0.02;
+  const render::Renderer renderer(kitchen(), options);
+  const HeadSimulator still(armar3(), armar3().rest_state(), 0.002);
+  HeadSimulator turning(armar3(), armar3().rest_state(), 0.002);
+  turning.accept({1, std::nullopt, {{0, 1.0}}});  // neck yaw at 1.5 rad/s: 17 px in 20 ms
+  render::RenderedImage still_left, still_right, turning_left, turning_right;
+  render_stereo_frame(renderer, armar3(), still, robot_in_kitchen(), 4, still_left, still_right);
+  render_stereo_frame(renderer, armar3(), turning, robot_in_kitchen(), 4, turning_left,
+                      turning_right);
+  // A horizontal blur: the turning image's columns change less from one to the next, its rows
+  // about as much as before.
+  const auto gradient_l1 = [](const cv::Mat& image, int dx, int dy) {
+    const cv::Rect inner(1, 1, image.cols - 2, image.rows - 2);
+    return cv::norm(image(inner), image(inner + cv::Point(dx, dy)), cv::NORM_L1);
+  };
+  for (const auto& [still_image, turning_image] :
+       {std::pair{still_left.image, turning_left.image},
+        std::pair{still_right.image, turning_right.image}}) {
+    EXPECT_LT(gradient_l1(turning_image, 1, 0), 0.7 * gradient_l1(still_image, 1, 0));
+    EXPECT_GT(gradient_l1(turning_image, 0, 1), 0.7 * gradient_l1(still_image, 0, 1));
+  }
+  // The depth and ids are the frame's pose, not blurred.
+  EXPECT_EQ(max_difference(still_left.object_ids, turning_left.object_ids), 0.0);
+}
+
 }  // namespace
 }  // namespace vsl::sim_head

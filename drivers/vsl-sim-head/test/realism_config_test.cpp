@@ -95,7 +95,7 @@ TEST(RealismConfig, BadValuesAreOneLineErrors) {
             "exposure_time_s, vignetting, aperture_m, focus_distance_m, full_well_electrons, "
             "read_noise_electrons, white_balance_error, jpeg_quality)");
   EXPECT_EQ(error_of("  shadow_map_px: 16\n"),
-            "config/sim.yaml:2: realism.shadow_map_px: must be an integer in [64, 8192], got 16");
+            "config/sim.yaml:2: realism.shadow_map_px: must be an integer in [64, 4096], got 16");
   EXPECT_EQ(error_of("  shadow_map_px: 512.5\n"),
             "config/sim.yaml:2: realism.shadow_map_px: expected an integer, got '512.5'");
   EXPECT_EQ(error_of("  jpeg_quality: 101\n"),
@@ -106,8 +106,10 @@ TEST(RealismConfig, BadValuesAreOneLineErrors) {
             "config/sim.yaml:2: realism.vignetting: must be in [0, 0.95], got 1");
   EXPECT_EQ(error_of("  exposure_compensation_ev: 9\n"),
             "config/sim.yaml:2: realism.exposure_compensation_ev: must be in [-8, 8], got 9");
-  EXPECT_EQ(error_of("  full_well_electrons: 0\n"),
-            "config/sim.yaml:2: realism.full_well_electrons: must be in [100, 1e+06], got 0");
+  EXPECT_EQ(error_of("  full_well_electrons: 50\n"),
+            "config/sim.yaml:2: realism.full_well_electrons: must be 0 (no sensor noise) or in "
+            "[100, 1e7], got 50");
+  EXPECT_EQ(read("  full_well_electrons: 0\n").full_well_electrons, 0.0);
   EXPECT_EQ(error_of("  textures: maybe\n"),
             "config/sim.yaml:2: realism.textures: expected true or false, got 'maybe'");
   EXPECT_EQ(error_of("  focus_distance_m: 0.01\n"),
