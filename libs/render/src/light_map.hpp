@@ -20,7 +20,7 @@ namespace vsl::render {
 class Scene;
 
 struct LightMapInputs {
-  double texel_m = 0.03;
+  double texel_m = 0.04;
   double indirect_light = 0.8;  // RealismOptions::indirect_light
   // Per triangle: its mean linear albedo (tints the bounced light) and whether to bake it at
   // all (lamps and window panes draw their own radiance and need no light).
@@ -67,6 +67,8 @@ class LightMap {
     int width = 1, height = 1;
     std::size_t offset = 0;  // first texel in texels_
   };
+  void soften();  // a texel-wide penumbra on the baked shadows
+
   std::vector<Rect> rects_;
   // Linear RGB irradiance (lux) and a pad: one aligned 4-float load per texel.
   std::vector<Eigen::Array4f, Eigen::aligned_allocator<Eigen::Array4f>> texels_;

@@ -11,9 +11,10 @@ namespace {
 
 using world::Finish;
 
-// Value noise on a periodic lattice of period_s x period_t cells across the tile: smooth
-// (smoothstep-interpolated) random values in [0, 1] that wrap at the tile's edges, so that the
-// tile repeats without seams. Different periods along s and t stretch it (brushed streaks, wood).
+// Value noise on a periodic lattice of period_s x period_t cells (powers of two) across the tile:
+// smooth (smoothstep-interpolated) random values in [0, 1] that wrap at the tile's edges, so that
+// the tile repeats without seams. Different periods along s and t stretch it (brushed streaks,
+// wood).
 class PeriodicNoise {
  public:
   PeriodicNoise(std::uint64_t seed, int period_s, int period_t)
@@ -32,10 +33,9 @@ class PeriodicNoise {
 
  private:
   static double smooth(double f) { return f * f * (3.0 - 2.0 * f); }
+  // Periods are powers of two: wrapping is a mask (also for negative i, in two's complement).
   float at(int i, int j) const {
-    i = ((i % period_s_) + period_s_) % period_s_;
-    j = ((j % period_t_) + period_t_) % period_t_;
-    return values_[j * period_s_ + i];
+    return values_[(j & (period_t_ - 1)) * period_s_ + (i & (period_s_ - 1))];
   }
   int period_s_, period_t_;
   std::vector<float> values_;

@@ -35,7 +35,7 @@ struct RealismOptions {
   // --- materials and light (level materials and full) ---
   // Diffuse light with shadows is baked once per Renderer into light maps of this texel size, m:
   // the scene is static, only the head moves, so it is view-independent.
-  double light_map_texel_m = 0.03;
+  double light_map_texel_m = 0.04;
   int shadow_map_px = 512;      // side of each lamp's shadow map, pixels
   double indirect_light = 0.8;  // light that bounces around the room, as a fraction of the mean
                                 // direct light on the room's surfaces (no shadows, no direction)
