@@ -54,8 +54,8 @@ struct RealismOptions {
   double vignetting = 0.35;               // fraction of light lost in the image corners
   double aperture_m = 0.0015;             // lens aperture diameter: defocus blur; 0: pinhole
   double focus_distance_m = 0.0;          // 0: focus on the image centre's median depth
-  double full_well_electrons =
-      6000.0;  // shot noise: a white pixel collects this many electrons (0: no sensor noise)
+  // Shot noise: a white pixel collects this many electrons (0: no sensor noise at all).
+  double full_well_electrons = 6000.0;
   double read_noise_electrons = 6.0;  // read noise, electrons (Gaussian)
   double white_balance_error = 0.04;  // each image's red and blue gains off by up to this fraction
   int jpeg_quality = 80;              // MJPEG as a UVC camera delivers it (4:2:0); 0: none
