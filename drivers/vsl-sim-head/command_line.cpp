@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "realism_config.hpp"
 #include "vsl/runtime/command_line.hpp"
 
 namespace vsl::sim_head {
@@ -61,6 +62,12 @@ SplitCommandLine split_command_line(int argc, const char* const* argv) {
       out.overrides.world_path = std::move(world);
     } else if (auto pose = option_value("--pose", argc, argv, i)) {
       out.overrides.pose = parse_pose(*pose);
+    } else if (auto realism = option_value("--realism", argc, argv, i)) {
+      out.overrides.realism_level = realism_level_from_name(*realism);
+      if (!out.overrides.realism_level) {
+        throw UsageError("option --realism: expected off, materials or full, got '" + *realism +
+                         "'");
+      }
     } else {
       out.rest.emplace_back(argv[i]);
     }

@@ -2,6 +2,7 @@
 // (--config, --lcm-url, --help) sees the rest:
 //   --world FILE            world model instead of sim_head.world (relative to the working dir)
 //   --pose X,Y,Z,YAW_DEG    robot pose instead of sim_head.robot_pose
+//   --realism LEVEL         off, materials or full instead of sim_head.realism.level
 #pragma once
 
 #include <string>

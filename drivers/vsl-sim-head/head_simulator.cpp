@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace vsl::sim_head {
 
@@ -38,6 +39,11 @@ GazeOutcome HeadSimulator::accept(const GazeRequest& request) {
 
 void HeadSimulator::advance(double dt_s) {
   state_ = head_.step_toward(state_, target_rad_, dt_s);
+}
+
+std::vector<double> HeadSimulator::velocities_over_rad_s(double window_s) const {
+  if (!(window_s > 0.0)) throw std::invalid_argument("velocities_over_rad_s: window_s must be > 0");
+  return head_.step_toward(state_, target_rad_, window_s).velocities_rad_s;
 }
 
 bool HeadSimulator::reached() const {

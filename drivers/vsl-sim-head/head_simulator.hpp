@@ -41,6 +41,11 @@ class HeadSimulator {
   void advance(double dt_s);
 
   const head::JointState& state() const { return state_; }
+  // The joint velocities the simulator applies from now on, averaged over the next window_s
+  // seconds (> 0): each joint at its velocity limit toward its target, 0 once there. A frame's
+  // exposure is such a window, and a joint that arrives during it moves for only part of it.
+  // (state().velocities_rad_s are those of the last step, which is 0 after a step of 0 s.)
+  std::vector<double> velocities_over_rad_s(double window_s) const;
   const std::vector<double>& target_positions_rad() const { return target_rad_; }
   std::int64_t request_id() const { return request_id_; }
   // At rest on the target of the current request (false without one, or when it is unreachable).

@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
       "Simulator options:\n"
       "  --world FILE            world model instead of sim_head.world\n"
       "  --pose X,Y,Z,YAW_DEG    robot pose instead of sim_head.robot_pose: position (m) and\n"
-      "                          heading (degrees, counter-clockwise from world +x)",
+      "                          heading (degrees, counter-clockwise from world +x)\n"
+      "  --realism LEVEL         off, materials or full instead of sim_head.realism.level",
       true};
   vsl::sim_head::SplitCommandLine split;
   try {

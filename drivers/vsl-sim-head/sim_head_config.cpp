@@ -4,7 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <sstream>
 
+#include "realism_config.hpp"
 #include "render_config.hpp"
 #include "vsl/config/eigen.hpp"
 #include "vsl/config/node.hpp"
@@ -47,7 +49,7 @@ SimHeadConfig read_sim_head_config(const Node& root) {
   section.expect_map();
   section.expect_keys({"world", "head", "calibration", "robot_pose", "frame_rate_hz",
                        "control_rate_hz", "gaze_tolerance_rad", "initial_joints_rad", "noise_seed",
-                       "render"});
+                       "render", "realism"});
   SimHeadConfig out;
   out.world_path = path_relative_to_file(section.at("world"));
   out.head_path = path_relative_to_file(section.at("head"));
@@ -70,6 +72,17 @@ SimHeadConfig read_sim_head_config(const Node& root) {
     out.noise_seed = static_cast<std::uint64_t>(seed);
   }
   if (const auto render = section.find("render")) out.render = render_options_from(*render);
+  if (const auto realism = section.find("realism")) {
+    out.render.realism = realism_options_from(*realism);
+    // A camera cannot expose a frame for longer than the time between two frames.
+    if (const auto v = realism->find("exposure_time_s");
+        v && out.render.realism.exposure_time_s > 1.0 / out.frame_rate_hz) {
+      std::ostringstream what;
+      what << "must not exceed the frame period 1 / frame_rate_hz = " << 1.0 / out.frame_rate_hz
+           << " s, got " << out.render.realism.exposure_time_s;
+      v->fail(what.str());
+    }
+  }
   return out;
 }
 
@@ -84,6 +97,7 @@ Eigen::Isometry3d pose_from_xyz_yaw_deg(const std::array<double, 4>& pose) {
 void apply(const SimHeadOverrides& overrides, SimHeadConfig& config) {
   if (overrides.world_path) config.world_path = *overrides.world_path;
   if (overrides.pose) config.world_T_ego = pose_from_xyz_yaw_deg(*overrides.pose);
+  if (overrides.realism_level) config.render.realism.level = *overrides.realism_level;
 }
 
 }  // namespace vsl::sim_head

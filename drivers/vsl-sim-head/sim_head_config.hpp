@@ -31,13 +31,15 @@ struct SimHeadConfig {
   // within this of it (rad).
   double gaze_tolerance_rad = 0.002;
   std::uint64_t noise_seed = 0;  // the frame's sensor noise derives from it and the frame id
-  render::RenderOptions render;
+  render::RenderOptions render;  // `render:`, and `realism:` in render.realism
 };
 
-// Command-line overrides (--world FILE, --pose X,Y,Z,YAW_DEG).
+// Command-line overrides (--world FILE, --pose X,Y,Z,YAW_DEG, --realism LEVEL).
 struct SimHeadOverrides {
   std::optional<std::string> world_path;      // relative to the working directory
   std::optional<std::array<double, 4>> pose;  // x, y, z (m), yaw (deg)
+  // The realism level only; the section's other keys keep their values from the file.
+  std::optional<render::RealismLevel> realism_level;
 };
 
 // Reads the `sim_head:` section of the daemon's config root (which may also hold `runtime:`).

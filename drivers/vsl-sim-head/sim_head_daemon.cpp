@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <variant>
 
+#include "frame_render.hpp"
 #include "gaze_command.hpp"
 #include "messages.hpp"
 #include "vsl/ground_truth_pose_t.hpp"
@@ -50,7 +51,8 @@ SimHeadDaemon::SimHeadDaemon(runtime::Daemon& daemon, SimHeadSetup setup)
   daemon_.log().info("world ", world_name_, " (", setup_.world.objects.size(), " objects, ",
                      renderer_.triangle_count(), " triangles), head ", setup_.head.name(), " (",
                      setup_.head.joints().size(), " joints), robot at (", t.x(), ", ", t.y(), ", ",
-                     t.z(), ") m, ", config.frame_rate_hz, " frames/s");
+                     t.z(), ") m, ", config.frame_rate_hz, " frames/s, realism ",
+                     render::realism_level_name(config.render.realism.level));
 }
 
 void SimHeadDaemon::on_gaze_command(const vsl::gaze_command_t& command) {
@@ -95,16 +97,11 @@ void SimHeadDaemon::control_tick() {
 void SimHeadDaemon::frame_tick() {
   step_to_now();
   const std::int64_t utime = runtime::wall_utime();
-  const head::JointState& state = simulator_.state();
-  Eigen::Isometry3d ego_T_left, ego_T_right;
-  setup_.head.ego_T_cameras(state.positions_rad, ego_T_left, ego_T_right);
   const Eigen::Isometry3d& world_T_ego = setup_.config.world_T_ego;
   // Each image its own noise, reproducible from the seed and the frame id.
   const std::uint64_t seed = setup_.config.noise_seed + 2 * static_cast<std::uint64_t>(frame_id_);
-  const head::StereoCalibration& calibration = setup_.head.calibration();
   const Clock::time_point render_start = Clock::now();
-  renderer_.render(calibration.left, world_T_ego * ego_T_left, seed, left_);
-  renderer_.render(calibration.right, world_T_ego * ego_T_right, seed + 1, right_);
+  render_stereo_frame(renderer_, setup_.head, simulator_, world_T_ego, seed, left_, right_);
   report_slow_rendering(Clock::now() - render_start);
 
   vsl::ground_truth_pose_t truth;
@@ -121,7 +118,7 @@ void SimHeadDaemon::frame_tick() {
   frame.gaze_reached = simulator_.reached();
   frame.left = image_message(left_.image, utime);
   frame.right = image_message(right_.image, utime);
-  frame.head = head_state_message(setup_.head, state, utime);
+  frame.head = head_state_message(setup_.head, simulator_.state(), utime);
   daemon_.publish(daemon_.channels().stereo_frame, frame);
 }
 

@@ -372,6 +372,34 @@ TEST_F(sim_head_process, ShippedConfigStreamsFullSizeKitchenFrames) {
   expect_clean_stop(sim);
 }
 
+// Realism from the command line over the config's section, frames rendered while the neck
+// turns (motion blur at level full).
+TEST_F(sim_head_process, RealismFullStreamsFramesWhileTheHeadTurns) {
+  constexpr int kPort = 17637;
+  Listener listener(kPort);
+  const std::string config =
+      write_config(kPort, 10.0, "  realism: {level: off, exposure_time_s: 0.02}\n");
+  ChildProcess sim({VSL_SIM_HEAD, "--config", config, "--realism", "full"});
+  ASSERT_TRUE(listener.until([&] { return !listener.frames.empty(); }, 30s)) << sim.err();
+  vsl::gaze_command_t turn{};
+  turn.request_id = 7;
+  turn.mode = vsl::gaze_command_t::JOINT_TARGETS;
+  turn.num_joints = 1;
+  turn.joint_names = {"neck_yaw"};
+  turn.joint_targets_rad = {1.0};
+  ASSERT_TRUE(runtime::publish(listener.bus, "GAZE_COMMAND", turn));
+  const auto turning = [&] {
+    for (const vsl::stereo_frame_t& frame : listener.frames) {
+      if (frame.gaze_request_id == 7 && frame.head.joint_velocities_rad_s[0] != 0.0) return true;
+    }
+    return false;
+  };
+  ASSERT_TRUE(listener.until(turning, 30s)) << sim.err();
+  EXPECT_EQ(listener.frame_sizes.back().first, 160u * 120 * 3);
+  expect_clean_stop(sim);
+  EXPECT_NE(sim.err().find("frames/s, realism full"), std::string::npos) << sim.err();
+}
+
 TEST_F(sim_head_process, MalformedGazeCommandsAreCountedLoggedAndIgnored) {
   constexpr int kPort = 17634;
   Listener listener(kPort);
@@ -460,6 +488,14 @@ TEST_F(sim_head_process, BadConfigAndCommandLineExit2WithOneLine) {
                               "numbers), got '1,2,x,0' (try --help)");
   expect_exit_2_with_one_line({VSL_SIM_HEAD, "--config", good, "--world", "/nonexistent/w.yaml"},
                               "/nonexistent/w.yaml: cannot open file");
+  expect_exit_2_with_one_line({VSL_SIM_HEAD, "--config", good, "--realism", "photo"},
+                              "vsl-sim-head: option --realism: expected off, materials or full, "
+                              "got 'photo' (try --help)");
+  const std::string bad_realism =
+      write_config(17635, 10.0, "  realism:\n    level: full\n    jpeg_quality: 120\n");
+  expect_exit_2_with_one_line(
+      {VSL_SIM_HEAD, "--config", bad_realism},
+      bad_realism + ":14: sim_head.realism.jpeg_quality: must be an integer in [0, 100], got 120");
   expect_exit_2_with_one_line({VSL_SIM_HEAD},
                               "vsl-sim-head: option --config FILE is required (try --help)");
 }

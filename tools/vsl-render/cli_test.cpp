@@ -67,6 +67,41 @@ TEST(VslRender, JointsAndLookAtMoveTheView) {
             0.0);
 }
 
+TEST(VslRender, RealismLevels) {
+  const auto dir = scratch_dir("realism");
+  const std::vector<std::string> view{VSL_RENDER_BIN, "--world",      "config/worlds/kitchen.yaml",
+                                      "--pose",       "2.6,2.3,0,90", "--clean"};
+  auto render = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> argv = view;
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    argv.insert(argv.end(), {"-o", (dir / name).string()});
+    return run_command(argv);
+  };
+  // off is the renderer as it always was.
+  ASSERT_EQ(render("default", {}).exit_code, 0);
+  const auto off = render("off", {"--realism", "off"});
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(cv::norm(cv::imread((dir / "default_left.png").string()),
+                     cv::imread((dir / "off_left.png").string()), cv::NORM_INF),
+            0.0);
+  for (const char* level : {"materials", "full"}) {
+    const auto result = render(level, {"--realism", level, "--exposure-ev", "-0.5"});
+    ASSERT_EQ(result.exit_code, 0) << level << ": " << result.err;
+    const cv::Mat left = cv::imread((dir / (std::string(level) + "_left.png")).string());
+    EXPECT_EQ(left.size(), cv::Size(640, 480)) << level;
+  }
+  // --clean leaves nothing random at level full either: another seed, the same image.
+  ASSERT_EQ(
+      render("full_seed5", {"--realism", "full", "--exposure-ev", "-0.5", "--seed", "5"}).exit_code,
+      0);
+  EXPECT_EQ(cv::norm(cv::imread((dir / "full_left.png").string()),
+                     cv::imread((dir / "full_seed5_left.png").string()), cv::NORM_INF),
+            0.0);
+  // --exposure-ev below full changes nothing, and says so.
+  const auto materials = render("materials", {"--realism", "materials", "--exposure-ev", "1"});
+  EXPECT_EQ(materials.err, "vsl-render: warning: --exposure-ev acts only at --realism full\n");
+}
+
 TEST(VslRender, BadInputExitsTwoWithOneLine) {
   const std::string out = (scratch_dir("bad") / "x").string();
   const std::vector<std::vector<std::string>> cases{
@@ -77,6 +112,9 @@ TEST(VslRender, BadInputExitsTwoWithOneLine) {
       {"--world", "config/worlds/kitchen.yaml", "--pose", "1,2,0,0", "--joints", "nose=1", "-o",
        out},
       {"--world", "config/worlds/kitchen.yaml", "--pose", "1,2,0,0", "--bogus", "-o", out},
+      {"--world", "config/worlds/kitchen.yaml", "--pose", "1,2,0,0", "--realism", "on", "-o", out},
+      {"--world", "config/worlds/kitchen.yaml", "--pose", "1,2,0,0", "--exposure-ev", "9", "-o",
+       out},
   };
   for (const auto& arguments : cases) {
     std::vector<std::string> argv{VSL_RENDER_BIN};

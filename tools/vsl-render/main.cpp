@@ -41,7 +41,12 @@ options:
   --depth               also write PREFIX_depth.png: the left camera's depth, 16-bit, millimetres
                         along the optical axis (0 where nothing)
   --seed N              sensor noise seed of the left image (the right one uses N + 1); default 0
-  --clean               no sensor noise and no exposure variation
+  --clean               no sensor noise and no exposure variation (at realism full no shot
+                        or read noise and no white-balance error)
+  --realism LEVEL       off (default: flat colours), materials (textures, lamps, window light,
+                        shadows, highlights) or full (materials and the camera's effects:
+                        auto-exposure, vignetting, defocus, sensor noise, white balance, MJPEG)
+  --exposure-ev EV      exposure compensation in EV, [-8, 8], at realism full; default 0
 exit codes: 0 ok, 1 a file could not be written, 2 bad usage or input file
 )";
 
@@ -92,7 +97,17 @@ struct Options {
   bool depth = false;
   std::uint64_t seed = 0;
   bool clean = false;
+  vsl::render::RealismLevel realism = vsl::render::RealismLevel::off;
+  std::optional<double> exposure_ev;
 };
+
+vsl::render::RealismLevel parse_realism(const std::string& text) {
+  for (const auto level : {vsl::render::RealismLevel::off, vsl::render::RealismLevel::materials,
+                           vsl::render::RealismLevel::full}) {
+    if (text == vsl::render::realism_level_name(level)) return level;
+  }
+  usage_error("--realism wants off, materials or full, got '" + text + "'");
+}
 
 Options parse(int argc, char** argv) {
   Options options;
@@ -133,6 +148,13 @@ Options parse(int argc, char** argv) {
       options.depth = true;
     } else if (arg == "--clean") {
       options.clean = true;
+    } else if (arg == "--realism") {
+      options.realism = parse_realism(value_of(i, arg));
+    } else if (arg == "--exposure-ev") {
+      const double ev = parse_number(value_of(i, arg), arg);
+      if (ev < -8.0 || ev > 8.0)
+        usage_error("--exposure-ev must be in [-8, 8], got " + std::string(argv[i]));
+      options.exposure_ev = ev;
     } else if (arg == "--seed") {
       const std::string text = value_of(i, arg);
       try {
@@ -179,6 +201,25 @@ vsl::head::JointState joint_state(const vsl::head::HeadKinematics& head, const O
     state.positions_rad = gaze.targets.positions_rad;
   }
   return state;
+}
+
+vsl::render::RenderOptions render_options(const Options& options) {
+  vsl::render::RenderOptions out;
+  out.realism.level = options.realism;
+  if (options.exposure_ev) {
+    if (options.realism != vsl::render::RealismLevel::full) {
+      std::cerr << "vsl-render: warning: --exposure-ev acts only at --realism full\n";
+    }
+    out.realism.exposure_compensation_ev = *options.exposure_ev;
+  }
+  if (options.clean) {
+    // Nothing random: the same image for every seed.
+    out.noise_sigma_grey = 0.0;
+    out.exposure_variation = 0.0;
+    out.realism.full_well_electrons = 0.0;  // no shot and no read noise
+    out.realism.white_balance_error = 0.0;
+  }
+  return out;
 }
 
 void write_png(const std::string& path, const cv::Mat& image) {
@@ -236,12 +277,7 @@ int main(int argc, char** argv) {
     Eigen::Isometry3d ego_T_left, ego_T_right;
     head.ego_T_cameras(state.positions_rad, ego_T_left, ego_T_right);
 
-    vsl::render::RenderOptions render_options;
-    if (options.clean) {
-      render_options.noise_sigma_grey = 0.0;
-      render_options.exposure_variation = 0.0;
-    }
-    const vsl::render::Renderer renderer(world, render_options);
+    const vsl::render::Renderer renderer(world, render_options(options));
     const vsl::head::StereoCalibration& calibration = head.calibration();
     const vsl::render::RenderedImage left =
         renderer.render(calibration.left, world_T_ego * ego_T_left, options.seed);

@@ -31,6 +31,17 @@ TEST(SimHeadCommandLine, TakesItsOwnOptionsAndLeavesTheRest) {
   EXPECT_FALSE(split({}).overrides.pose.has_value());
 }
 
+TEST(SimHeadCommandLine, RealismLevel) {
+  EXPECT_FALSE(split({}).overrides.realism_level.has_value());
+  EXPECT_EQ(split({"--realism", "full"}).overrides.realism_level, render::RealismLevel::full);
+  EXPECT_EQ(split({"--realism=materials"}).overrides.realism_level,
+            render::RealismLevel::materials);
+  EXPECT_EQ(split({"--realism", "off"}).overrides.realism_level, render::RealismLevel::off);
+  EXPECT_EQ(error_of({"--realism", "on"}),
+            "option --realism: expected off, materials or full, got 'on'");
+  EXPECT_EQ(error_of({"--realism"}), "option --realism needs a value");
+}
+
 TEST(SimHeadCommandLine, BadPosesAreUsageErrors) {
   const std::string expected = "option --pose: expected X,Y,Z,YAW_DEG (4 finite numbers), got '";
   EXPECT_EQ(error_of({"--pose", "1,2,3"}), expected + "1,2,3'");

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "head_simulator.hpp"
 
@@ -79,6 +80,26 @@ TEST(HeadSimulator, UnreachableRequestsGoToTheLimitsButAreNeverReached) {
   EXPECT_EQ(outcome.target_positions_rad[0], armar3().joints()[0].max_rad);
   run_until_reached(sim, 0.05, 5.0);
   EXPECT_FALSE(sim.reached());
+}
+
+TEST(HeadSimulator, VelocitiesAreThoseItAppliesOverTheWindow) {
+  HeadSimulator sim(armar3(), armar3().rest_state(), 0.002);
+  const std::vector<double> still(armar3().joints().size(), 0.0);
+  EXPECT_EQ(sim.velocities_over_rad_s(0.015), still);  // no request
+  // neck_yaw (1.5 rad/s) far from its target, neck_pitch (1 rad/s) 7.5 mrad from its own: over a
+  // 15 ms exposure the pitch moves for half of it.
+  sim.accept({1, std::nullopt, {{0, -1.0}, {1, 0.0075}}});
+  std::vector<double> velocities = sim.velocities_over_rad_s(0.015);
+  EXPECT_DOUBLE_EQ(velocities[0], -1.5);
+  EXPECT_NEAR(velocities[1], 0.5, 1e-12);
+  EXPECT_EQ(velocities[2], 0.0);
+  // The last step's velocities are not these: a step of 0 s shows every joint still.
+  sim.advance(0.0);
+  EXPECT_EQ(sim.state().velocities_rad_s, still);
+  EXPECT_DOUBLE_EQ(sim.velocities_over_rad_s(0.015)[0], -1.5);
+  run_until_reached(sim, 0.02);
+  EXPECT_EQ(sim.velocities_over_rad_s(0.015), still);
+  EXPECT_THROW(sim.velocities_over_rad_s(0.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // config/sim_head.yaml: the shipped file, overrides, and one-line errors for bad ones.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <regex>
+
 #include "sim_head_setup.hpp"
 #include "vsl/config/node.hpp"
 
@@ -68,6 +71,83 @@ TEST(SimHeadConfig, CommandLineOverridesWorldAndPose) {
   EXPECT_TRUE(setup.config.world_T_ego.linear().col(0).isApprox(-Eigen::Vector3d::UnitX()));
 }
 
+TEST(SimHeadConfig, ShippedConfigKeepsRealismOffButSpellsOutItsKeys) {
+  const SimHeadSetup setup = load_sim_head(config::Node::load_file("config/sim_head.yaml"));
+  EXPECT_EQ(setup.config.render.realism.level, render::RealismLevel::off);
+  // Every other key is there, commented, with the library's default: uncommented, the file
+  // must load and change nothing.
+  std::ifstream in("config/sim_head.yaml");
+  const std::regex commented_key("^    # ([a-z_]+): ");
+  std::string text;
+  int uncommented = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (std::regex_search(line, commented_key)) {
+      line.erase(4, 2);
+      ++uncommented;
+    }
+    text += line + "\n";
+  }
+  EXPECT_EQ(uncommented, 18);  // RealismOptions' fields but the level
+  const render::RealismOptions shipped =
+      read_sim_head_config(config::Node::load_string(text, "config/sim_head.yaml")).render.realism;
+  const render::RealismOptions d;
+  EXPECT_EQ(shipped.light_map_texel_m, d.light_map_texel_m);
+  EXPECT_EQ(shipped.shadow_map_px, d.shadow_map_px);
+  EXPECT_EQ(shipped.indirect_light, d.indirect_light);
+  EXPECT_EQ(shipped.daylight, d.daylight);
+  EXPECT_EQ(shipped.daylight_colour_temperature_k, d.daylight_colour_temperature_k);
+  EXPECT_EQ(shipped.textures, d.textures);
+  EXPECT_EQ(shipped.fallback_light_lux, d.fallback_light_lux);
+  EXPECT_EQ(shipped.auto_exposure, d.auto_exposure);
+  EXPECT_EQ(shipped.exposure_target_grey, d.exposure_target_grey);
+  EXPECT_EQ(shipped.exposure_compensation_ev, d.exposure_compensation_ev);
+  EXPECT_EQ(shipped.exposure_time_s, d.exposure_time_s);
+  EXPECT_EQ(shipped.vignetting, d.vignetting);
+  EXPECT_EQ(shipped.aperture_m, d.aperture_m);
+  EXPECT_EQ(shipped.focus_distance_m, d.focus_distance_m);
+  EXPECT_EQ(shipped.full_well_electrons, d.full_well_electrons);
+  EXPECT_EQ(shipped.read_noise_electrons, d.read_noise_electrons);
+  EXPECT_EQ(shipped.white_balance_error, d.white_balance_error);
+  EXPECT_EQ(shipped.jpeg_quality, d.jpeg_quality);
+}
+
+TEST(SimHeadConfig, ReadsTheRealismSectionAndTheCommandLineOverridesItsLevel) {
+  std::string text = kGood;
+  text += "  realism:\n    level: materials\n    exposure_time_s: 0.02\n    jpeg_quality: 90\n";
+  const config::Node root = config::Node::load_string(text, "config/sim.yaml");
+  SimHeadSetup setup = load_sim_head(root);
+  EXPECT_EQ(setup.config.render.realism.level, render::RealismLevel::materials);
+  EXPECT_EQ(setup.config.render.realism.exposure_time_s, 0.02);
+  EXPECT_EQ(setup.config.render.realism.jpeg_quality, 90);
+  EXPECT_EQ(setup.config.render.noise_sigma_grey, 0.0);  // render: still read beside it
+
+  SimHeadOverrides overrides;
+  overrides.realism_level = render::RealismLevel::full;
+  setup = load_sim_head(root, overrides);
+  EXPECT_EQ(setup.config.render.realism.level, render::RealismLevel::full);
+  EXPECT_EQ(setup.config.render.realism.jpeg_quality, 90);  // only the level changes
+  overrides.realism_level = render::RealismLevel::off;
+  EXPECT_EQ(load_sim_head(config::Node::load_string(kGood, "config/sim.yaml"), overrides)
+                .config.render.realism.level,
+            render::RealismLevel::off);
+}
+
+TEST(SimHeadConfig, TheExposureFitsInTheFramePeriod) {
+  // frame_rate_hz: 5 in kGood: 0.2 s between frames.
+  const std::string realism = "  realism:\n    exposure_time_s: ";
+  std::string text = kGood + realism + "0.2\n";
+  EXPECT_NO_THROW(load_sim_head(config::Node::load_string(text, "config/sim.yaml")));
+  text = kGood + realism + "0.25\n";
+  try {
+    load_sim_head(config::Node::load_string(text, "config/sim.yaml"));
+    ADD_FAILURE() << "no error";
+  } catch (const config::Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "config/sim.yaml:13: sim_head.realism.exposure_time_s: must not exceed the frame "
+                 "period 1 / frame_rate_hz = 0.2 s, got 0.25");
+  }
+}
+
 TEST(SimHeadConfig, BadFilesAreOneLineErrors) {
   EXPECT_EQ(error_of("worlds/kitchen.yaml", "worlds/nowhere.yaml"),
             "config/sim.yaml:2: sim_head.world: config/worlds/nowhere.yaml: cannot open file");
@@ -80,7 +160,7 @@ TEST(SimHeadConfig, BadFilesAreOneLineErrors) {
   EXPECT_EQ(error_of("frame_rate_hz: 5", "frame_rate: 5"),
             "config/sim.yaml:7: sim_head.frame_rate: unknown key (allowed: world, head, "
             "calibration, robot_pose, frame_rate_hz, control_rate_hz, gaze_tolerance_rad, "
-            "initial_joints_rad, noise_seed, render)");
+            "initial_joints_rad, noise_seed, render, realism)");
   EXPECT_EQ(error_of("    yaw_deg: 90", "    yaw_deg: 90\n    yaw_rad: 1.5"),
             "config/sim.yaml:5: sim_head.robot_pose: give exactly one of yaw_deg, yaw_rad, "
             "orientation_wxyz");

@@ -104,7 +104,11 @@ void motion_blur(cv::Mat& radiance, const Eigen::Vector2d& displacement_px) {
     kernel.at<float>(y0 + 1, x0 + 1) += a * b;
   }
   kernel /= cv::sum(kernel)[0];
-  cv::filter2D(radiance, radiance, -1, kernel, cv::Point(-1, -1), 0.0, cv::BORDER_REFLECT);
+  // Only the taps the segment touches: a pan's kernel is one or two rows of the square, and
+  // filter2D's cost grows with the kernel's area (17 x 17: 37 ms; its 15 x 2 rows: 1.2 ms).
+  const cv::Rect taps = cv::boundingRect(kernel != 0.0f);
+  cv::filter2D(radiance, radiance, -1, kernel(taps), cv::Point(half - taps.x, half - taps.y), 0.0,
+               cv::BORDER_REFLECT);
 }
 
 // The exposure gain that puts the mean of the encoded (sRGB, clipped) luminance of `samples` at

@@ -53,7 +53,64 @@ Grid grid_of(const std::array<Eigen::Vector3d, 3>& corner, const Eigen::Vector3d
   return g;
 }
 
+// The lights that can reach any point of triangle t: the triangle's plane faces them, and its
+// bounding sphere meets their cone. Most lamps light a small part of a room (a strip under a
+// cupboard lights the worktop below it), so this leaves a few lights per texel instead of all.
+std::vector<const Light*> lights_reaching(const Scene& scene, std::size_t t,
+                                          const std::vector<Light>& lights) {
+  const auto& tri = scene.triangles[t];
+  const Eigen::Vector3f a = scene.world_vertices_m[tri[0]].cast<float>();
+  const Eigen::Vector3f b = scene.world_vertices_m[tri[1]].cast<float>();
+  const Eigen::Vector3f c = scene.world_vertices_m[tri[2]].cast<float>();
+  const Eigen::Vector3f normal = scene.world_planes[t].head<3>().cast<float>();
+  const Eigen::Vector3f centre = (a + b + c) / 3.0f;
+  const float radius = std::sqrt(std::max({(a - centre).squaredNorm(), (b - centre).squaredNorm(),
+                                           (c - centre).squaredNorm()})) +
+                       0.05f;
+  std::vector<const Light*> out;
+  for (const Light& light : lights) {
+    if (normal.dot(light.world_position_m - a) <= 0.0f) continue;  // behind the plane
+    const Eigen::Vector3f d = centre - light.world_position_m;
+    const float distance = d.norm();
+    if (distance > radius) {
+      const float to_centre =
+          std::acos(std::clamp(light.world_axis.dot(d) / distance, -1.0f, 1.0f));
+      const float sphere = std::asin(std::min(radius / distance, 1.0f));
+      if (to_centre - sphere > std::acos(light.cos_beam_half_angle)) continue;  // outside the cone
+    }
+    out.push_back(&light);
+  }
+  return out;
+}
+
 }  // namespace
+
+void LightMap::soften() {
+  // A [1 2 1] / 4 filter along rows and then columns of each triangle's grid (edges clamped):
+  // the shadow of a chair leg drawn through bilinear 4 cm texels shows stair steps, a penumbra
+  // a texel wide does not (and real lamps, not points, cast soft shadows anyway).
+  std::vector<Eigen::Array4f, Eigen::aligned_allocator<Eigen::Array4f>> line;
+  for (std::size_t t = 0; t < rects_.size(); ++t) {
+    const Rect& r = rects_[t];
+    if (r.width < 3 && r.height < 3) continue;
+    auto at = [&](int x, int y) -> Eigen::Array4f& {
+      return texels_[r.offset + static_cast<std::size_t>(y) * r.width + x];
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+      const int n = pass == 0 ? r.width : r.height, lines = pass == 0 ? r.height : r.width;
+      if (n < 3) continue;
+      line.resize(static_cast<std::size_t>(n));
+      for (int l = 0; l < lines; ++l) {
+        for (int i = 0; i < n; ++i) line[i] = pass == 0 ? at(i, l) : at(l, i);
+        for (int i = 0; i < n; ++i) {
+          const Eigen::Array4f value = 0.25f * line[std::max(i - 1, 0)] + 0.5f * line[i] +
+                                       0.25f * line[std::min(i + 1, n - 1)];
+          (pass == 0 ? at(i, l) : at(l, i)) = value;
+        }
+      }
+    }
+  }
+}
 
 LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
                    const LightMapInputs& inputs) {
@@ -84,7 +141,7 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
     r.offset = total;
     total += static_cast<std::size_t>(g.width) * g.height;
   }
-  texels_.assign(total * 3, 0.0f);
+  texels_.assign(total, Eigen::Array4f::Zero());
 
   // Direct light, through the shadow maps. The shadow test starts 1 cm off the surface so that a
   // surface never shadows itself.
@@ -95,17 +152,24 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
     if (inputs.skip[t]) continue;
     const Grid& g = grids[t];
     const Eigen::Vector3f normal = scene.world_planes[t].head<3>().cast<float>();
+    const std::vector<const Light*> reaching = lights_reaching(scene, t, lights);
     std::array<double, 3> triangle_sum{0, 0, 0};
     for (int j = 0; j < g.height; ++j) {
       for (int i = 0; i < g.width; ++i) {
         const Eigen::Vector3f p =
             (g.origin + i * g.texel_u * g.axis_u + j * g.texel_v * g.axis_v).cast<float>();
         const Eigen::Vector3f lifted = p + 0.01f * normal;
-        float* texel = &texels_[(rects_[t].offset + static_cast<std::size_t>(j) * g.width + i) * 3];
-        for (const Light& light : lights) {
-          const float scale = light.unshadowed_scale(p, normal, nullptr);
+        Eigen::Array4f& texel =
+            texels_[rects_[t].offset + static_cast<std::size_t>(j) * g.width + i];
+        for (const Light* light_pointer : reaching) {
+          const Light& light = *light_pointer;
+          Eigen::Vector3f to_light;
+          const float scale = light.unshadowed_scale(p, normal, &to_light);
           if (scale <= 0.0f) continue;
-          const float lit = light.shadow ? light.shadow->visibility(lifted) * scale : scale;
+          // Moved 2 cm toward the light as well: light grazing a wall meets the shadow map's
+          // coarse texels at a slant, where a normal offset alone leaves shadow acne.
+          const float lit =
+              light.shadow ? light.shadow->visibility(lifted + 0.02f * to_light) * scale : scale;
           if (lit <= 0.0f) continue;
           for (int k = 0; k < 3; ++k) texel[k] += lit * light.intensity_rgb[k];
         }
@@ -128,6 +192,8 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
   }
   if (!(area_sum > 0.0)) return;
 
+  soften();
+
   // Bounced light: the light the room's surfaces reflect, spread evenly. Its colour is the
   // reflected light's, its level indirect_light times the mean direct irradiance.
   std::array<float, 3> indirect{0, 0, 0};
@@ -140,10 +206,11 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
   for (std::size_t t = 0; t < count; ++t) {
     if (inputs.skip[t]) continue;
     const float slot = inputs.slot_factor[t];
-    float* texel = &texels_[rects_[t].offset * 3];
+    const Eigen::Array4f bounce(indirect[0], indirect[1], indirect[2], 0.0f);
     const std::size_t n = static_cast<std::size_t>(rects_[t].width) * rects_[t].height;
     for (std::size_t i = 0; i < n; ++i) {
-      for (int k = 0; k < 3; ++k) texel[3 * i + k] = slot * (texel[3 * i + k] + indirect[k]);
+      Eigen::Array4f& texel = texels_[rects_[t].offset + i];
+      texel = slot * (texel + bounce);
     }
   }
 }

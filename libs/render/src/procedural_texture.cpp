@@ -11,9 +11,10 @@ namespace {
 
 using world::Finish;
 
-// Value noise on a periodic lattice of period_s x period_t cells across the tile: smooth
-// (smoothstep-interpolated) random values in [0, 1] that wrap at the tile's edges, so that the
-// tile repeats without seams. Different periods along s and t stretch it (brushed streaks, wood).
+// Value noise on a periodic lattice of period_s x period_t cells (powers of two) across the tile:
+// smooth (smoothstep-interpolated) random values in [0, 1] that wrap at the tile's edges, so that
+// the tile repeats without seams. Different periods along s and t stretch it (brushed streaks,
+// wood).
 class PeriodicNoise {
  public:
   PeriodicNoise(std::uint64_t seed, int period_s, int period_t)
@@ -32,10 +33,9 @@ class PeriodicNoise {
 
  private:
   static double smooth(double f) { return f * f * (3.0 - 2.0 * f); }
+  // Periods are powers of two: wrapping is a mask (also for negative i, in two's complement).
   float at(int i, int j) const {
-    i = ((i % period_s_) + period_s_) % period_s_;
-    j = ((j % period_t_) + period_t_) % period_t_;
-    return values_[j * period_s_ + i];
+    return values_[(j & (period_t_ - 1)) * period_s_ + (i & (period_s_ - 1))];
   }
   int period_s_, period_t_;
   std::vector<float> values_;
@@ -171,38 +171,37 @@ class Pattern {
 TextureTile::TextureTile(const SurfaceLook& look, std::uint64_t seed)
     : texels_per_m_(static_cast<float>(kSize / look.tile_size_m)) {
   const Pattern pattern(look, seed);
+  flat_ = look.contrast <= 0.0 || look.finish == Finish::matte || look.finish == Finish::glass;
   Level level0;
-  level0.size = kSize;
-  level0.rgb.resize(static_cast<std::size_t>(kSize) * kSize * 3);
-  double sum[3] = {0, 0, 0};
-  for (int y = 0; y < kSize; ++y) {
-    for (int x = 0; x < kSize; ++x) {
+  level0.size = flat_ ? 1 : kSize;
+  level0.rgbx.resize(static_cast<std::size_t>(level0.size) * level0.size);
+  Eigen::Array4d sum = Eigen::Array4d::Zero();
+  for (int y = 0; y < level0.size; ++y) {
+    for (int x = 0; x < level0.size; ++x) {
       const Linear c = pattern.at(x, y);
-      float* texel = &level0.rgb[(static_cast<std::size_t>(y) * kSize + x) * 3];
-      texel[0] = std::clamp(c.r, 0.0f, 1.0f);
-      texel[1] = std::clamp(c.g, 0.0f, 1.0f);
-      texel[2] = std::clamp(c.b, 0.0f, 1.0f);
-      for (int k = 0; k < 3; ++k) sum[k] += texel[k];
+      Eigen::Array4f& texel = level0.rgbx[static_cast<std::size_t>(y) * level0.size + x];
+      texel << std::clamp(c.r, 0.0f, 1.0f), std::clamp(c.g, 0.0f, 1.0f),
+          std::clamp(c.b, 0.0f, 1.0f), 0.0f;
+      sum += texel.cast<double>();
     }
   }
-  for (int k = 0; k < 3; ++k) mean_rgb_[k] = static_cast<float>(sum[k] / (kSize * kSize));
+  sum /= static_cast<double>(level0.rgbx.size());
+  for (int k = 0; k < 3; ++k) mean_rgb_[k] = static_cast<float>(sum[k]);
   levels_.push_back(std::move(level0));
   // Each level the exact 2x2 mean of the one before: wraps with the tile, no seams.
   while (levels_.back().size > 1) {
     const Level& fine = levels_.back();
     Level coarse;
     coarse.size = fine.size / 2;
-    coarse.rgb.resize(static_cast<std::size_t>(coarse.size) * coarse.size * 3);
+    coarse.rgbx.resize(static_cast<std::size_t>(coarse.size) * coarse.size);
     for (int y = 0; y < coarse.size; ++y) {
       for (int x = 0; x < coarse.size; ++x) {
-        for (int k = 0; k < 3; ++k) {
-          auto f = [&](int fx, int fy) {
-            return fine.rgb[(static_cast<std::size_t>(fy) * fine.size + fx) * 3 + k];
-          };
-          coarse.rgb[(static_cast<std::size_t>(y) * coarse.size + x) * 3 + k] =
-              0.25f * (f(2 * x, 2 * y) + f(2 * x + 1, 2 * y) + f(2 * x, 2 * y + 1) +
-                       f(2 * x + 1, 2 * y + 1));
-        }
+        auto f = [&](int fx, int fy) {
+          return fine.rgbx[static_cast<std::size_t>(fy) * fine.size + fx];
+        };
+        coarse.rgbx[static_cast<std::size_t>(y) * coarse.size + x] =
+            0.25f *
+            (f(2 * x, 2 * y) + f(2 * x + 1, 2 * y) + f(2 * x, 2 * y + 1) + f(2 * x + 1, 2 * y + 1));
       }
     }
     levels_.push_back(std::move(coarse));
@@ -210,15 +209,20 @@ TextureTile::TextureTile(const SurfaceLook& look, std::uint64_t seed)
 }
 
 void TextureTile::sample(float s_m, float t_m, float footprint_m, float rgb[3]) const {
-  // The level whose texel is about the pixel's footprint: level L has 2^L texels of level 0 each.
-  const float texels = footprint_m * texels_per_m_;
-  int level = 0;
-  if (texels > 1.0f) {
-    level = std::min(
-        static_cast<int>(levels_.size()) - 1,
-        std::ilogb(texels) + (texels > 1.5f * static_cast<float>(1 << std::ilogb(texels)) ? 1 : 0));
+  if (flat_) {
+    rgb[0] = mean_rgb_[0];
+    rgb[1] = mean_rgb_[1];
+    rgb[2] = mean_rgb_[2];
+    return;
   }
-  const Level& l = levels_[level];
+  // The level whose texel is about the pixel's footprint: level L has 2^L texels of level 0
+  // each; L = round(log2(texels)), read off the float's exponent (log2(1.41) rounds up).
+  const float texels = footprint_m * texels_per_m_ * 0.7071068f;
+  int level = 0;
+  if (texels >= 1.0f) {
+    level = std::min(static_cast<int>(levels_.size()) - 1, std::ilogb(texels) + 1);
+  }
+  const Level& l = levels_[static_cast<std::size_t>(level)];
   const float scale = texels_per_m_ / static_cast<float>(1 << level);
   const float u = s_m * scale - 0.5f, v = t_m * scale - 0.5f;
   const float fu_floor = std::floor(u), fv_floor = std::floor(v);
@@ -226,13 +230,14 @@ void TextureTile::sample(float s_m, float t_m, float footprint_m, float rgb[3]) 
   const int mask = l.size - 1;  // sizes are powers of two
   const int x0 = static_cast<int>(fu_floor) & mask, y0 = static_cast<int>(fv_floor) & mask;
   const int x1 = (x0 + 1) & mask, y1 = (y0 + 1) & mask;
-  const float* a = &l.rgb[(static_cast<std::size_t>(y0) * l.size + x0) * 3];
-  const float* b = &l.rgb[(static_cast<std::size_t>(y0) * l.size + x1) * 3];
-  const float* c = &l.rgb[(static_cast<std::size_t>(y1) * l.size + x0) * 3];
-  const float* d = &l.rgb[(static_cast<std::size_t>(y1) * l.size + x1) * 3];
-  for (int k = 0; k < 3; ++k) {
-    rgb[k] = (a[k] * (1 - fu) + b[k] * fu) * (1 - fv) + (c[k] * (1 - fu) + d[k] * fu) * fv;
-  }
+  const std::size_t row0 = static_cast<std::size_t>(y0) * l.size;
+  const std::size_t row1 = static_cast<std::size_t>(y1) * l.size;
+  const Eigen::Array4f top = l.rgbx[row0 + x0] * (1 - fu) + l.rgbx[row0 + x1] * fu;
+  const Eigen::Array4f bottom = l.rgbx[row1 + x0] * (1 - fu) + l.rgbx[row1 + x1] * fu;
+  const Eigen::Array4f c = top * (1 - fv) + bottom * fv;
+  rgb[0] = c[0];
+  rgb[1] = c[1];
+  rgb[2] = c[2];
 }
 
 }  // namespace vsl::render

@@ -3,6 +3,8 @@
 // footprint so that far surfaces average their pattern instead of aliasing it.
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +23,9 @@ class TextureTile {
   // Linear albedo at (s, t) m, bilinear in the mip level whose texel matches footprint_m (the
   // width of the pixel on the surface, m). Wraps: the tile repeats.
   void sample(float s_m, float t_m, float footprint_m, float rgb[3]) const;
+  // A tile without a pattern (matte, glass, contrast 0): sample() returns the mean, and callers
+  // may skip it.
+  bool flat() const { return flat_; }
 
   // Mean linear albedo over the tile (what the light bake and far surfaces see).
   const float* mean_rgb() const { return mean_rgb_; }
@@ -28,11 +33,14 @@ class TextureTile {
  private:
   struct Level {
     int size = 0;
-    std::vector<float> rgb;  // size * size * 3, row t, column s
+    // size * size texels, row t, column s; linear r, g, b and a pad, so that a texel is one
+    // aligned 4-float load and bilinear filtering is four vector multiply-adds.
+    std::vector<Eigen::Array4f, Eigen::aligned_allocator<Eigen::Array4f>> rgbx;
   };
   std::vector<Level> levels_;
   float texels_per_m_ = 1.0f;
   float mean_rgb_[3] = {0, 0, 0};
+  bool flat_ = false;
 };
 
 }  // namespace vsl::render

@@ -244,7 +244,7 @@ void RealisticScene::shade_sample(const Scene& /*scene*/, std::int32_t triangle,
   const Eigen::Vector3f& n = tl.world_normal;
   const float facing = std::max(std::abs(n.dot(v)), 0.2f);
   float albedo[3];
-  if (textures_) {
+  if (textures_ && !look.texture->flat()) {
     const float s = tl.s_axis.head<3>().dot(p) + tl.s_axis.w();
     const float u = tl.t_axis.head<3>().dot(p) + tl.t_axis.w();
     look.texture->sample(s, u, footprint_m / facing, albedo);
@@ -304,6 +304,10 @@ void RealisticScene::shade(const Scene& scene, const Pinhole& camera, int sample
     const Eigen::Vector3f to_camera = (world_camera - world_point).normalized();
     shade_sample(scene, triangle, world_point, to_camera, z * pixel_angle, rgb);
   };
+  std::array<cv::Vec3f, 16> slot_colour;  // s <= 4: at most 16 samples per pixel
+  auto sum_slot = [&slot_colour](int k) -> cv::Vec3f& {
+    return slot_colour[static_cast<std::size_t>(k)];
+  };
   for (int v = 0; v < camera.height_px; ++v) {
     auto* out = radiance_bgr.ptr<cv::Vec3f>(v);
     for (int u = 0; u < camera.width_px; ++u) {
@@ -323,13 +327,29 @@ void RealisticScene::shade(const Scene& scene, const Pinhole& camera, int sample
         out[u] = cv::Vec3f(rgb[0], rgb[1], rgb[2]);
         continue;
       }
+      // An edge: each triangle among the samples shaded once (at its first sample), weighted by
+      // how many samples it covers. Two triangles meet at most edge pixels: two shadings, not s^2.
+      std::array<std::int32_t, 16> seen_triangle;
+      std::array<int, 16> seen_count{};
+      int distinct = 0;
       cv::Vec3f sum(0, 0, 0);
       for (int j = 0; j < s; ++j) {
+        const std::int32_t* row =
+            fine.triangle + static_cast<std::size_t>(s * v + j) * fine.width_px + s * u;
         for (int i = 0; i < s; ++i) {
-          shade_fine(s * u + i, s * v + j, rgb);
-          sum += cv::Vec3f(rgb[0], rgb[1], rgb[2]);
+          int k = 0;
+          while (k < distinct && seen_triangle[k] != row[i]) ++k;
+          if (k == distinct) {
+            seen_triangle[k] = row[i];
+            ++distinct;
+            shade_fine(s * u + i, s * v + j, rgb);
+            seen_count[k] = 0;
+            sum_slot(k) = cv::Vec3f(rgb[0], rgb[1], rgb[2]);
+          }
+          ++seen_count[k];
         }
       }
+      for (int k = 0; k < distinct; ++k) sum += sum_slot(k) * static_cast<float>(seen_count[k]);
       out[u] = sum * (1.0f / static_cast<float>(s * s));
     }
   }

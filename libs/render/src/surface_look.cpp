@@ -46,6 +46,8 @@ double tile_size_of(Finish finish, double pattern_scale_m) {
       return 2.0 * pattern_scale_m;
     case Finish::brushed_metal:
       return 0.25;
+    case Finish::stone:
+      return 0.25;  // speckles of about 8 mm
     case Finish::painted:
     case Finish::laminate:
       return 0.4;

@@ -394,12 +394,6 @@ std::uint64_t mix(std::uint64_t seed, std::uint64_t index) {
   return rng.next();
 }
 
-std::vector<world::Material> palette() {
-  std::vector<world::Material> out;
-  for (const PaletteEntry& entry : default_palette()) out.push_back({entry.name, entry.colour});
-  return out;
-}
-
 }  // namespace
 
 void validate(const BuildingOptions& o) {
@@ -436,7 +430,7 @@ world::WorldModel generate_building(const BuildingOptions& o, const Progress& pr
   const double pitch = 2 * o.room_depth_m + o.corridor_width_m + o.courtyard_m;
   const double total = o.office + o.kitchenette + o.meeting + o.store;
 
-  WorldBuilder b(o.name, palette());
+  WorldBuilder b(o.name, palette_materials());
   std::size_t reported = 0;
   for (std::size_t r = 0; b.size() < target; ++r) {
     const std::size_t storey = r / rooms_per_storey, in_storey = r % rooms_per_storey;

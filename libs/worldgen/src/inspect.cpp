@@ -80,7 +80,7 @@ std::vector<std::string> check_generated_world(const world::WorldModel& world) {
       problems.push_back(id + ": parent " + front.id + " has no size");
       continue;
     }
-    // The bar's two ends, in the parent's frame.
+    // The grip's two ends along its long axis, in the parent's frame.
     const Eigen::Isometry3d parent_T_handle =
         front.world_T_object().inverse() * object.world_T_object();
     const Eigen::Vector3d half = 0.5 * object.size_m.value_or(Eigen::Vector3d::Zero());
@@ -88,7 +88,8 @@ std::vector<std::string> check_generated_world(const world::WorldModel& world) {
         half.x() >= half.z() ? Eigen::Vector3d(half.x(), 0, 0) : Eigen::Vector3d(0, 0, half.z());
     for (const Eigen::Vector3d& end :
          {Eigen::Vector3d(parent_T_handle * axis), Eigen::Vector3d(parent_T_handle * -axis)}) {
-      if (!(end.y() < 0.0)) problems.push_back(id + ": not in front of " + front.id);
+      // A recessed grip's opening lies on the front face; everything else stands in front of it.
+      if (!(end.y() <= 1e-9)) problems.push_back(id + ": behind the front face of " + front.id);
       if (std::abs(end.x()) > 0.5 * front.size_m->x() + 1e-9 ||
           std::abs(end.z()) > 0.5 * front.size_m->z() + 1e-9) {
         problems.push_back(id + ": beyond the extent of " + front.id);

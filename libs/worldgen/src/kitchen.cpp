@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "door_styles.hpp"
+#include "handles.hpp"
 #include "vsl/worldgen/geometry.hpp"
 #include "vsl/worldgen/world_builder.hpp"
 
@@ -23,17 +25,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kBoard = 0.018;         // carcass panels
 constexpr double kBack = 0.008;          // carcass back panel
 constexpr double kGap = 0.004;           // between neighbouring fronts
-constexpr double kStile = 0.06;          // frame of a shaker door
-constexpr double kRecess = 0.006;        // its panel's set-back
 constexpr double kPlinthSetback = 0.05;  // kick board behind the fronts
 constexpr double kTallSplit = 0.78;      // tall units: height of the lower door's slot
-// Handles (m).
-constexpr double kBarRadius = 0.006;
-constexpr double kProjection = 0.032;  // bar axis in front of the front surface
-constexpr double kStandoff = 0.010;    // square post side, or round post diameter
-constexpr double kStandoffSpacing = 0.128;
-constexpr double kHandleEdge = 0.035;  // bar axis from a door's opening edge
-constexpr double kHandleEnd = 0.05;    // bar end from a door's top or bottom edge
 // Sinks (m).
 constexpr double kSinkMargin = 0.06;  // worktop left at either side of the bowls
 constexpr double kSinkBridge = 0.06;  // worktop between two bowls
@@ -101,8 +94,6 @@ struct Carcass {
   bool top_rails = false;
   std::vector<double> shelves;  // centre heights, carcass frame
 };
-
-enum class HandleAt { top, bottom, middle };
 
 class KitchenBuilder {
  public:
@@ -297,70 +288,45 @@ class KitchenBuilder {
     }
   }
 
-  // A front panel whose front face is the object's y = 0 plane, centred.
-  void panel_primitives(ObjectModel& o, double w, double h, bool shaker) const {
-    const double t = d_.door_thickness_m;
-    if (!shaker) {
-      o.primitives.push_back(box("door", {0, t / 2, 0}, {w, t, h}));
-      return;
-    }
-    for (double side : {-1.0, 1.0}) {
-      o.primitives.push_back(box("door", {side * (w - kStile) / 2, t / 2, 0}, {kStile, t, h}));
-    }
-    for (double side : {-1.0, 1.0}) {
-      o.primitives.push_back(
-          box("door", {0, t / 2, side * (h - kStile) / 2}, {w - 2 * kStile, t, kStile}));
-    }
-    o.primitives.push_back(
-        box("door", {0, (t + kRecess) / 2, 0}, {w - 2 * kStile, t - kRecess, h - 2 * kStile}));
+  const HandleStyle& handles_of(const RunSpec& run) const {
+    return run.handles ? *run.handles : layout_.handle;
   }
 
-  // A handle bar centred at (x, -projection, z) in front of `front` (whose front face is its
-  // y = 0 plane), on two standoffs that reach back to that face.
-  void add_handle(const std::string& id, const std::string& parent, const Isometry3d& front,
-                  double x, double z, bool horizontal, double length) {
-    const Vector3d size = horizontal ? Vector3d(length, kProjection + kBarRadius, 2 * kBarRadius)
-                                     : Vector3d(2 * kBarRadius, kProjection + kBarRadius, length);
-    ObjectModel& h = b_.add(id, "handle", offset(front, {x, -kProjection, z}), size, parent);
-    h.primitives.push_back(
-        cylinder("handle", Vector3d::Zero(), kBarRadius, length, horizontal ? Axis::x : Axis::z));
-    const double spacing = std::min(kStandoffSpacing, length - 0.03);
-    for (double s : {-spacing / 2, spacing / 2}) {
-      const Vector3d centre =
-          horizontal ? Vector3d(s, kProjection / 2, 0) : Vector3d(0, kProjection / 2, s);
-      if (layout_.handle.round_standoffs) {
-        h.primitives.push_back(cylinder("handle", centre, kStandoff / 2, kProjection, Axis::y));
-      } else {
-        h.primitives.push_back(box("handle", centre, {kStandoff, kProjection, kStandoff}));
-      }
-    }
+  // The panel of `front` (whose front face is its object's y = 0 plane) in `style`, leaving free
+  // the strip a recessed grip takes, then the front's handle.
+  void add_panel_and_handle(world::ObjectModel& object, DoorStyle style, const HandleStyle& handles,
+                            const FrontSpec& front) {
+    const GripCut cut = grip_cut(handles, front);
+    add_door_panel(object, style,
+                   {front.width_m, front.height_m - cut.height_m, front.thickness_m,
+                    -cut.edge * cut.height_m / 2});
+    add_front_handle(b_, handles, front);
   }
 
-  // A door of w x h whose front face centre is at (x, front_y - thickness, z) in `unit`, with a
-  // vertical handle near its opening edge.
+  // A door of w x h whose front face centre is at (x, front_y - thickness, z) in `unit`, with its
+  // handle near its opening edge (tall: a fridge's or larder's door).
   void add_door(const std::string& id, const std::string& parent, const Isometry3d& unit,
                 double front_y, double x, double z, double w, double h, bool hinged_right,
-                HandleAt at) {
+                GripAt at, const HandleStyle& handles, DoorStyle style, bool tall = false) {
     const double t = d_.door_thickness_m;
     const Isometry3d front = offset(unit, {x, front_y - t, z});
     ObjectModel& door = b_.add(id, "door", front, Vector3d(w, t, h), parent);
-    panel_primitives(door, w, h, layout_.shaker_doors && w >= 0.25 && h >= 0.25);
-    const double length = std::min(layout_.handle.length_m, h - 2 * kHandleEnd);
-    const double hx = (hinged_right ? -1.0 : 1.0) * (w / 2 - kHandleEdge);
-    const double hz = at == HandleAt::top      ? h / 2 - kHandleEnd - length / 2
-                      : at == HandleAt::bottom ? -h / 2 + kHandleEnd + length / 2
-                                               : 0.0;
-    add_handle(id + ".handle", id, front, hx, hz, false, length);
+    add_panel_and_handle(door, style, handles,
+                         {id, front, w, h, t, hinged_right ? -1.0 : 1.0, at, tall});
   }
 
-  // A drawer: front (w x h, front face centre at (0, front_y - thickness, z) in `unit`), the box
-  // behind it inside a carcass of width unit_w and depth unit_d, a horizontal handle.
+  // A drawer: front (w x h, front face centre at (0, front_y - thickness, z) in `unit`; a slab
+  // in every door style), the box behind it inside a carcass of width unit_w and depth unit_d,
+  // and its handle.
   void add_drawer(const std::string& id, const std::string& parent, const Isometry3d& unit,
-                  double front_y, double z, double w, double h, double unit_w, double unit_d) {
+                  double front_y, double z, double w, double h, double unit_w, double unit_d,
+                  const HandleStyle& handles) {
     const double t = d_.door_thickness_m;
     const Isometry3d front = offset(unit, {0, front_y - t, z});
     ObjectModel& drawer = b_.add(id, "drawer_front", front, Vector3d(w, t, h), parent);
-    drawer.primitives.push_back(box("door", {0, t / 2, 0}, {w, t, h}));
+    const FrontSpec spec{id, front, w, h, t, 0.0, GripAt::middle, false};
+    const GripCut cut = grip_cut(handles, spec);
+    add_door_panel(drawer, DoorStyle::slab, {w, h - cut.height_m, t, -cut.edge * cut.height_m / 2});
     const double iw = unit_w - 2 * kBoard - 0.026;  // runner clearance
     const double dd = unit_d - kBack - 0.03;
     const double hb = std::max(0.05, h - 0.07);
@@ -373,8 +339,7 @@ class KitchenBuilder {
         box("carcass", {0, t + dd - 0.006, z0 + hb / 2}, {iw - 0.024, 0.012, hb}));
     drawer.primitives.push_back(
         box("carcass", {0, t + dd / 2 - 0.006, z0 + 0.004}, {iw - 0.024, dd - 0.012, 0.008}));
-    add_handle(id + ".handle", id, front, 0.0, 0.0, true,
-               std::min(layout_.handle.length_m, w - 0.1));
+    add_front_handle(b_, handles, spec);
   }
 
   // ---- structure: floor, ceiling, walls, windows, room door ----------------------------------
@@ -397,6 +362,7 @@ class KitchenBuilder {
       for (int j = 0; j < grid.y(); ++j) {
         const Vector3d at((i + 0.5) * x / grid.x() - x / 2, (j + 0.5) * y / grid.y() - y / 2,
                           -0.005);
+        // Along z, so that its -z (the way a light material shines) is world down.
         ceiling.primitives.push_back(cylinder("lamp", at, 0.045, 0.01, Axis::z));
       }
     }
@@ -514,18 +480,8 @@ class KitchenBuilder {
     ObjectModel& leaf =
         b_.add("room_door", "room_door", front, Vector3d(leaf_w, leaf_t, leaf_h), wall_id);
     leaf.primitives.push_back(box("room_door", {0, leaf_t / 2, 0}, {leaf_w, leaf_t, leaf_h}));
-    // A lever handle on the room side: rosette and neck at the pivot, the lever towards the hinges.
-    const double side = layout_.room_door_hinge_right ? -1.0 : 1.0;
-    const double pivot_x = side * (leaf_w / 2 - 0.065), z = 1.05 - (0.01 + leaf_h / 2);
-    constexpr double proj = 0.06, lever = 0.13;
-    const double bar_x = pivot_x - side * (lever / 2 - 0.01);
-    ObjectModel& handle = b_.add("room_door.handle", "handle", offset(front, {bar_x, -proj, z}),
-                                 Vector3d(lever, proj + 0.01, 0.052), "room_door");
-    const double px = side * (lever / 2 - 0.01);
-    handle.primitives.push_back(cylinder("handle", Vector3d::Zero(), 0.01, lever, Axis::x));
-    handle.primitives.push_back(
-        cylinder("handle", {px, (proj - 0.008) / 2, 0}, 0.009, proj - 0.008, Axis::y));
-    handle.primitives.push_back(cylinder("handle", {px, proj - 0.004, 0}, 0.026, 0.008, Axis::y));
+    add_room_door_handle(b_, layout_.handle.kind, front, leaf_w, 1.05 - (0.01 + leaf_h / 2),
+                         layout_.room_door_hinge_right);
   }
 
   // ---- runs ---------------------------------------------------------------------------------
@@ -568,46 +524,12 @@ class KitchenBuilder {
     const Vector3d size(w, d, h);
     const double fy = -d / 2, dw = w - kGap;
     const bool right = hinge_right(kind);
+    const HandleStyle& handles = handles_of(*p.run);
+    const DoorStyle style = layout_.door_style;
     Carcass carcass{w, d, h, plinth, false, true, {}};
 
-    if (kind == "dishwasher") {
-      ObjectModel& dw_obj = b_.add(p.id, "dishwasher", unit, size);
-      dw_obj.primitives.push_back(box_between("steel", {-w / 2 + 0.005, -d / 2, -h / 2},
-                                              {w / 2 - 0.005, d / 2 - 0.02, h / 2 - 0.005}));
-      dw_obj.primitives.push_back(box_between("plinth",
-                                              {-w / 2, -d / 2 + kPlinthSetback, -h / 2 - plinth},
-                                              {w / 2, d / 2 - 0.02, -h / 2}));
-      const std::string door = p.id + ".door";
-      const double dh = h - kGap, t = d_.door_thickness_m;
-      const Isometry3d front = offset(unit, {0, fy - t, 0});
-      ObjectModel& door_obj = b_.add(door, "door", front, Vector3d(dw, t, dh), p.id);
-      panel_primitives(door_obj, dw, dh, layout_.shaker_doors);
-      add_handle(door + ".handle", door, front, 0.0, dh / 2 - 0.06, true,
-                 std::min(layout_.handle.length_m, dw - 0.1));
-      return;
-    }
-    if (kind == "fridge" || kind == "fridge_r" || kind == "tall_2door" || kind == "tall_2door_r") {
-      const bool fridge = kind.rfind("fridge", 0) == 0;
-      carcass.top_panel = true;
-      carcass.top_rails = false;
-      if (!fridge) {
-        for (int i = 1; i <= 5; ++i) carcass.shelves.push_back(-h / 2 + i * h / 6);
-      }
-      ObjectModel& body = b_.add(p.id, fridge ? "fridge" : "cupboard", unit, size);
-      carcass_primitives(body, carcass);
-      if (fridge) {
-        body.primitives.push_back(box_between(
-            "appliance", {-w / 2 + kBoard + 0.002, -d / 2 + 0.002, -h / 2 + kBoard + 0.002},
-            {w / 2 - kBoard - 0.002, d / 2 - kBack - 0.018, h / 2 - kBoard - 0.002}));
-      }
-      const double split = std::min(kTallSplit, h / 2);
-      const double lower_h = split - kGap, upper_h = h - split - kGap;
-      add_door(p.id + ".door1", p.id, unit, fy, 0, -h / 2 + split / 2, dw, lower_h, right,
-               HandleAt::top);
-      add_door(p.id + ".door2", p.id, unit, fy, 0, -h / 2 + split + (h - split) / 2, dw, upper_h,
-               right, HandleAt::bottom);
-      return;
-    }
+    if (kind == "dishwasher") return emit_dishwasher(p, unit);
+    if (tall) return emit_tall_unit(p, unit);
 
     ObjectModel* cupboard = nullptr;
     auto make_cupboard = [&] {
@@ -623,7 +545,7 @@ class KitchenBuilder {
     } else if (kind == "base_1door" || kind == "base_1door_r") {
       carcass.shelves = {0.0};
       make_cupboard();
-      add_door(p.id + ".door1", p.id, unit, fy, 0, 0, dw, dh, right, HandleAt::top);
+      add_door(p.id + ".door1", p.id, unit, fy, 0, 0, dw, dh, right, GripAt::top, handles, style);
     } else if (kind == "base_2door" || kind == "sink_2door") {
       if (kind == "sink_2door") {
         carcass.top_rails = false;
@@ -631,8 +553,10 @@ class KitchenBuilder {
         carcass.shelves = {0.0};
       }
       make_cupboard();
-      add_door(p.id + ".door1", p.id, unit, fy, -w / 4, 0, w / 2 - kGap, dh, false, HandleAt::top);
-      add_door(p.id + ".door2", p.id, unit, fy, w / 4, 0, w / 2 - kGap, dh, true, HandleAt::top);
+      add_door(p.id + ".door1", p.id, unit, fy, -w / 4, 0, w / 2 - kGap, dh, false, GripAt::top,
+               handles, style);
+      add_door(p.id + ".door2", p.id, unit, fy, w / 4, 0, w / 2 - kGap, dh, true, GripAt::top,
+               handles, style);
     } else if (kind == "drawers_3" || kind == "drawers_4") {
       make_cupboard();
       const std::vector<double> shares = kind == "drawers_3"
@@ -642,7 +566,7 @@ class KitchenBuilder {
       for (std::size_t i = 0; i < shares.size(); ++i) {
         const double slot = shares[i] * h;
         add_drawer(p.id + ".drawer" + std::to_string(i + 1), p.id, unit, fy, top - slot / 2, dw,
-                   slot - kGap, w, d);
+                   slot - kGap, w, d, handles);
         top -= slot;
       }
     } else if (kind == "oven") {
@@ -655,8 +579,56 @@ class KitchenBuilder {
       emit_oven(p, unit, fy, oven_z, oven_h);
       const double drawer_top = oven_z - oven_h / 2 - kGap, drawer_bottom = -h / 2 + kGap / 2;
       add_drawer(p.id + ".drawer1", p.id, unit, fy, (drawer_top + drawer_bottom) / 2, dw,
-                 drawer_top - drawer_bottom, w, d);
+                 drawer_top - drawer_bottom, w, d, handles);
     }
+  }
+
+  void emit_dishwasher(const Placed& p, const Isometry3d& unit) {
+    const double w = p.spec->width_m, d = d_.base_depth_m, h = d_.base_height_m;
+    const double plinth = d_.plinth_height_m;
+    ObjectModel& dw_obj = b_.add(p.id, "dishwasher", unit, Vector3d(w, d, h));
+    dw_obj.primitives.push_back(box_between("steel", {-w / 2 + 0.005, -d / 2, -h / 2},
+                                            {w / 2 - 0.005, d / 2 - 0.02, h / 2 - 0.005}));
+    dw_obj.primitives.push_back(box_between("plinth",
+                                            {-w / 2, -d / 2 + kPlinthSetback, -h / 2 - plinth},
+                                            {w / 2, d / 2 - 0.02, -h / 2}));
+    const std::string door = p.id + ".door";
+    const double dw = w - kGap, dh = h - kGap, t = d_.door_thickness_m;
+    const Isometry3d front = offset(unit, {0, -d / 2 - t, 0});
+    ObjectModel& door_obj = b_.add(door, "door", front, Vector3d(dw, t, dh), p.id);
+    add_panel_and_handle(door_obj, solid_style(), handles_of(*p.run),
+                         {door, front, dw, dh, t, 0.0, GripAt::top, false});
+  }
+
+  // Fridges and dishwashers: their doors hide an appliance, so glass doors become shaker ones.
+  DoorStyle solid_style() const {
+    return layout_.door_style == DoorStyle::glass ? DoorStyle::shaker : layout_.door_style;
+  }
+
+  void emit_tall_unit(const Placed& p, const Isometry3d& unit) {
+    const std::string& kind = p.spec->kind;
+    const double w = p.spec->width_m, d = d_.base_depth_m, h = tall_height();
+    const bool fridge = kind.rfind("fridge", 0) == 0;
+    Carcass carcass{w, d, h, d_.plinth_height_m, true, false, {}};
+    if (!fridge) {
+      for (int i = 1; i <= 5; ++i) carcass.shelves.push_back(-h / 2 + i * h / 6);
+    }
+    ObjectModel& body = b_.add(p.id, fridge ? "fridge" : "cupboard", unit, Vector3d(w, d, h));
+    carcass_primitives(body, carcass);
+    if (fridge) {
+      body.primitives.push_back(box_between(
+          "appliance", {-w / 2 + kBoard + 0.002, -d / 2 + 0.002, -h / 2 + kBoard + 0.002},
+          {w / 2 - kBoard - 0.002, d / 2 - kBack - 0.018, h / 2 - kBoard - 0.002}));
+    }
+    const double split = std::min(kTallSplit, h / 2), dw = w - kGap;
+    const double lower_h = split - kGap, upper_h = h - split - kGap;
+    const bool right = hinge_right(kind);
+    const HandleStyle& handles = handles_of(*p.run);
+    const DoorStyle style = fridge ? solid_style() : layout_.door_style;
+    add_door(p.id + ".door1", p.id, unit, -d / 2, 0, -h / 2 + split / 2, dw, lower_h, right,
+             GripAt::top, handles, style, true);
+    add_door(p.id + ".door2", p.id, unit, -d / 2, 0, -h / 2 + split + (h - split) / 2, dw, upper_h,
+             right, GripAt::bottom, handles, style, true);
   }
 
   void emit_oven(const Placed& p, const Isometry3d& unit, double fy, double z, double oven_h) {
@@ -681,8 +653,11 @@ class KitchenBuilder {
     oven.primitives.push_back(
         box_between("black_glass", {-w / 2 + kBoard + 0.002, t, -oven_h / 2 + 0.005},
                     {w / 2 - kBoard - 0.002, t + d - 0.06, oven_h / 2 - 0.005}));
-    add_handle(id + ".handle", id, front, 0.0, door_z + door_h / 2 - 0.045, true,
-               std::max(layout_.handle.length_m, fw - 0.16));
+    // Ovens keep a bar whatever the handle kind: a knob or recess cannot pull a heavy flap.
+    const HandleStyle& handles = handles_of(*p.run);
+    const double bar = handles.kind == HandleKind::bar ? handles.length_m.value_or(0.16) : 0.16;
+    add_bar_handle(b_, handles, id + ".handle", id, front, 0.0, door_z + door_h / 2 - 0.045, true,
+                   std::max(bar, fw - 0.16));
   }
 
   void emit_worktop(const RunSpec& run, const std::vector<const Placed*>& units) {
@@ -786,17 +761,21 @@ class KitchenBuilder {
     ObjectModel& cupboard = b_.add(p.id, "cupboard", unit, Vector3d(w, d, h));
     carcass_primitives(cupboard, carcass);
     if (layout_.under_cupboard_lights) {
+      // Along z, so that its -z (the way a light material shines) is world down.
       cupboard.primitives.push_back(
-          cylinder("lamp", {0, -d / 4, -h / 2 - 0.004}, 0.03, 0.008, Axis::z));
+          cylinder("strip_light", {0, -d / 4, -h / 2 - 0.004}, 0.03, 0.008, Axis::z));
     }
     const double fy = -d / 2, dh = h - kGap;
+    const HandleStyle& handles = handles_of(*p.run);
+    const DoorStyle style = layout_.door_style;
     if (kind == "wall_1door" || kind == "wall_1door_r") {
       add_door(p.id + ".door1", p.id, unit, fy, 0, 0, w - kGap, dh, hinge_right(kind),
-               HandleAt::bottom);
+               GripAt::bottom, handles, style);
     } else if (kind == "wall_2door") {
-      add_door(p.id + ".door1", p.id, unit, fy, -w / 4, 0, w / 2 - kGap, dh, false,
-               HandleAt::bottom);
-      add_door(p.id + ".door2", p.id, unit, fy, w / 4, 0, w / 2 - kGap, dh, true, HandleAt::bottom);
+      add_door(p.id + ".door1", p.id, unit, fy, -w / 4, 0, w / 2 - kGap, dh, false, GripAt::bottom,
+               handles, style);
+      add_door(p.id + ".door2", p.id, unit, fy, w / 4, 0, w / 2 - kGap, dh, true, GripAt::bottom,
+               handles, style);
     }
   }
 
@@ -886,10 +865,12 @@ class KitchenBuilder {
       lamp.primitives.push_back(
           polyhedron("lamp", {0, 0, -shade_h / 2},
                      frustum(regular_polygon(8, 0.2), regular_polygon(8, 0.07), shade_h)));
+      // Only the shade gives light (one lamp per primitive of a light material); cord and
+      // ceiling rose are its fitting.
       lamp.primitives.push_back(
-          cylinder("lamp", {0, 0, shade_h / 2 + cord / 2}, 0.004, cord, Axis::z));
+          cylinder("lamp_fitting", {0, 0, shade_h / 2 + cord / 2}, 0.004, cord, Axis::z));
       lamp.primitives.push_back(
-          cylinder("lamp", {0, 0, room_.z() - z - 0.01}, 0.05, 0.02, Axis::z));
+          cylinder("lamp_fitting", {0, 0, room_.z() - z - 0.01}, 0.05, 0.02, Axis::z));
     }
   }
 
@@ -923,19 +904,10 @@ class KitchenBuilder {
   std::map<WallSide, int> worktops_;
 };
 
-std::vector<world::Material> materials_for(const std::map<std::string, world::Colour>& overrides) {
-  std::vector<world::Material> out;
-  for (const PaletteEntry& entry : default_palette()) {
-    const auto found = overrides.find(entry.name);
-    out.push_back({entry.name, found == overrides.end() ? entry.colour : found->second});
-  }
-  return out;
-}
-
 }  // namespace
 
 world::WorldModel generate_kitchen(const KitchenLayout& layout) {
-  WorldBuilder builder(layout.name, materials_for(layout.colours));
+  WorldBuilder builder(layout.name, kitchen_materials(layout));
   KitchenBuilder(layout, builder).build();
   return builder.finish();
 }

@@ -2,8 +2,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "layout_appearance.hpp"
 #include "vsl/worldgen/kitchen.hpp"
-#include "vsl/worldgen/world_builder.hpp"
 
 namespace vsl::worldgen {
 
@@ -147,8 +147,8 @@ OpeningSpec opening(const Node& node, bool door) {
 
 KitchenLayout parse_kitchen_layout(const Node& root) {
   root.expect_map();
-  root.expect_keys({"name", "room", "dimensions", "handles", "doors", "colours", "room_door",
-                    "windows", "runs", "table", "lights"});
+  root.expect_keys({"name", "room", "dimensions", "handles", "doors", "colours", "materials",
+                    "room_door", "windows", "runs", "table", "lights"});
   KitchenLayout layout;
   layout.origin = Origin::of(root);
   layout.name = root.get("name", "kitchen");
@@ -184,41 +184,10 @@ KitchenLayout parse_kitchen_layout(const Node& root) {
     }
   }
 
-  if (const auto handles = root.find("handles")) {
-    handles->expect_keys({"length", "standoffs"});
-    if (const auto length = handles->find("length"))
-      layout.handle.length_m = length->as_double_in(0.06, 0.6);
-    if (const auto standoffs = handles->find("standoffs")) {
-      const std::string style = standoffs->as_string();
-      if (style != "round" && style != "square") standoffs->fail("expected round or square");
-      layout.handle.round_standoffs = style == "round";
-    }
-  }
-  if (const auto doors = root.find("doors")) {
-    doors->expect_keys({"style"});
-    if (const auto style = doors->find("style")) {
-      const std::string s = style->as_string();
-      if (s != "shaker" && s != "slab") style->fail("expected shaker or slab");
-      layout.shaker_doors = s == "shaker";
-    }
-  }
-  if (const auto colours = root.find("colours")) {
-    for (const std::string& name : colours->keys()) {
-      const Node value = colours->at(name);
-      bool known = false;
-      for (const PaletteEntry& entry : default_palette()) known = known || name == entry.name;
-      if (!known) {
-        std::string list;
-        for (const PaletteEntry& entry : default_palette()) {
-          list += (list.empty() ? "" : ", ") + std::string(entry.name);
-        }
-        value.fail("unknown material (known: " + list + ")");
-      }
-      const auto colour = parse_colour(value.as_string());
-      if (!colour) value.fail("expected a colour \"#rrggbb\", got '" + value.as_string() + "'");
-      layout.colours[name] = *colour;
-    }
-  }
+  if (const auto handles = root.find("handles")) layout.handle = parse_handles(*handles);
+  if (const auto doors = root.find("doors")) layout.door_style = parse_doors(*doors);
+  if (const auto colours = root.find("colours")) parse_colours(*colours, layout);
+  if (const auto materials = root.find("materials")) parse_materials(*materials, layout);
   if (const auto door = root.find("room_door")) {
     layout.room_door = opening(*door, true);
     if (const auto hinge = door->find("hinge")) {
@@ -234,7 +203,7 @@ KitchenLayout parse_kitchen_layout(const Node& root) {
   const Node runs = root.at("runs");
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const Node node = runs[i];
-    node.expect_keys({"wall", "at", "base", "upper_at", "upper"});
+    node.expect_keys({"wall", "at", "base", "upper_at", "upper", "handles"});
     RunSpec run;
     run.origin = Origin::of(node);
     run.wall = wall_side(node.at("wall"));
@@ -243,6 +212,7 @@ KitchenLayout parse_kitchen_layout(const Node& root) {
     if (const auto base = node.find("base")) run.base = unit_list(*base, false);
     if (const auto upper = node.find("upper")) run.upper = unit_list(*upper, true);
     if (run.base.empty() && run.upper.empty()) node.fail("a run needs base or upper units");
+    if (const auto handles = node.find("handles")) run.handles = parse_handles(*handles);
     layout.runs.push_back(std::move(run));
   }
   if (const auto table = root.find("table")) {

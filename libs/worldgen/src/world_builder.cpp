@@ -6,35 +6,87 @@
 
 namespace vsl::worldgen {
 
+namespace {
+
+using world::Finish;
+using world::Material;
+using world::MaterialLight;
+
+Material plain(const char* name, world::Colour colour, Finish finish) {
+  Material m;
+  m.name = name;
+  m.colour = colour;
+  m.finish = finish;
+  return m;
+}
+
+// A finish with a pattern of its own colour and feature size (grout, grain, speckle).
+Material patterned(const char* name, world::Colour colour, Finish finish, world::Colour pattern,
+                   double pattern_scale_m) {
+  Material m = plain(name, colour, finish);
+  m.pattern_colour = pattern;
+  m.pattern_scale_m = pattern_scale_m;
+  return m;
+}
+
+Material emitting(const char* name, world::Colour colour, MaterialLight light) {
+  Material m = plain(name, colour, Finish::matte);
+  m.light = light;
+  return m;
+}
+
+}  // namespace
+
 const std::vector<PaletteEntry>& default_palette() {
+  // Lights: a ceiling downlight (or the pendant's shade) gives about 600 lm of warm white in a
+  // wide cone; an under-cupboard strip about 250 lm, a little cooler, in a wider cone, so that a
+  // renderer (and a reader of the world file) can tell the two apart.
   static const std::vector<PaletteEntry> palette = {
-      {"wall", {236, 232, 220}, "painted walls"},
-      {"ceiling", {245, 245, 242}, "ceiling"},
-      {"floor", {140, 134, 128}, "floor tiles"},
-      {"skirting", {240, 238, 232}, "skirting boards, door linings"},
-      {"carcass", {220, 220, 214}, "cupboard bodies (melamine)"},
-      {"plinth", {50, 50, 52}, "kick boards under the cupboards"},
-      {"door", {47, 95, 143}, "cupboard door panels and drawer fronts"},
-      {"handle", {194, 154, 58}, "handle bars and standoffs (brushed brass)"},
-      {"countertop", {60, 61, 64}, "worktops (anthracite)"},
-      {"steel", {180, 183, 187}, "stainless steel: sink, range hood"},
-      {"chrome", {210, 212, 216}, "tap"},
-      {"black_glass", {24, 25, 27}, "oven front, hob"},
-      {"glass", {188, 208, 216}, "window panes, oven window"},
-      {"window_frame", {247, 247, 245}, "window frames and sills"},
-      {"room_door", {200, 196, 188}, "room door leaves"},
-      {"appliance", {242, 242, 242}, "white appliance bodies"},
-      {"table", {92, 64, 48}, "tables and desks (walnut)"},
-      {"chair", {43, 43, 45}, "chairs"},
-      {"lamp", {240, 240, 234}, "lamps and light fittings"},
+      {plain("wall", {236, 232, 220}, Finish::painted), "painted walls"},
+      {plain("ceiling", {245, 245, 242}, Finish::painted), "ceiling"},
+      {patterned("floor", {140, 134, 128}, Finish::tiles, {184, 180, 172}, 0.3),
+       "floor tiles (light grout, 0.3 m tiles)"},
+      {plain("skirting", {240, 238, 232}, Finish::painted), "skirting boards, door linings"},
+      {plain("carcass", {220, 220, 214}, Finish::laminate), "cupboard bodies (melamine)"},
+      {plain("plinth", {50, 50, 52}, Finish::matte), "kick boards under the cupboards"},
+      {plain("door", {47, 95, 143}, Finish::painted), "cupboard door panels and drawer fronts"},
+      {plain("handle", {194, 154, 58}, Finish::brushed_metal), "handles (brushed brass)"},
+      {patterned("countertop", {60, 61, 64}, Finish::stone, {112, 114, 118}, 0.004),
+       "worktops (anthracite granite)"},
+      {plain("steel", {180, 183, 187}, Finish::brushed_metal), "stainless steel: sink, range hood"},
+      {plain("chrome", {210, 212, 216}, Finish::polished_metal), "tap"},
+      {plain("black_glass", {24, 25, 27}, Finish::glass), "oven front, hob"},
+      {plain("glass", {188, 208, 216}, Finish::glass), "window panes, oven window, glass doors"},
+      {plain("window_frame", {247, 247, 245}, Finish::painted), "window frames and sills"},
+      {plain("room_door", {200, 196, 188}, Finish::painted), "room door leaves"},
+      {plain("appliance", {242, 242, 242}, Finish::laminate), "white appliance bodies"},
+      {patterned("table", {92, 64, 48}, Finish::wood, {62, 40, 28}, 0.006),
+       "tables and desks (walnut)"},
+      {plain("chair", {43, 43, 45}, Finish::matte), "chairs"},
+      {emitting("lamp", {240, 240, 234}, {600.0, 3000.0, 1.0}),
+       "ceiling downlights and the pendant's shade (lights)"},
+      {emitting("strip_light", {240, 240, 234}, {250.0, 3500.0, 1.2}),
+       "under-cupboard lights (lights)"},
+      {plain("lamp_fitting", {240, 240, 234}, Finish::matte), "a pendant's cord and ceiling rose"},
   };
   return palette;
 }
 
-world::Colour default_colour(const std::string& name) {
+std::vector<world::Material> palette_materials() {
+  std::vector<world::Material> out;
+  for (const PaletteEntry& entry : default_palette()) out.push_back(entry.material);
+  return out;
+}
+
+const PaletteEntry* find_palette_entry(const std::string& name) {
   for (const PaletteEntry& entry : default_palette()) {
-    if (name == entry.name) return entry.colour;
+    if (name == entry.material.name) return &entry;
   }
+  return nullptr;
+}
+
+world::Colour default_colour(const std::string& name) {
+  if (const PaletteEntry* entry = find_palette_entry(name)) return entry->material.colour;
   throw std::out_of_range("worldgen: no palette colour '" + name + "'");
 }
 

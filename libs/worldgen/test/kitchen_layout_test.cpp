@@ -167,6 +167,90 @@ TEST(KitchenLayout, MissingFileAndMissingKey) {
       << error_of("room: {size: [4.0, 3.0, 2.5]}\n");
 }
 
+TEST(KitchenLayout, DoorStylesAndHandleKindsAreChecked) {
+  auto starts = [](const std::string& text, const std::string& prefix) {
+    const std::string what = error_of(text);
+    EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  };
+  starts(kMinimal + "doors: {style: louvred}\n",
+         "test.yaml:7: doors.style: unknown door style 'louvred' (one of slab, shaker, glass, "
+         "framed)");
+  starts(kMinimal + "handles: {kind: lever}\n",
+         "test.yaml:7: handles.kind: unknown handle kind 'lever' (one of bar, knob, cup_pull, "
+         "recessed, rail)");
+  starts(kMinimal + "handles: {kind: rail, length: 0.5}\n",
+         "test.yaml:7: handles.length: a rail handle spans its front and takes no length");
+  starts(kMinimal + "handles: {kind: recessed, length: 0.5}\n",
+         "test.yaml:7: handles.length: a recessed handle spans its front");
+  starts(kMinimal + "handles: {kind: knob, standoffs: round}\n",
+         "test.yaml:7: handles.standoffs: only bar and rail handles have standoffs, not knob");
+  starts(kMinimal + "handles: {kind: knob, length: 0.16}\n", "test.yaml:7: handles.length: ");
+  starts(kMinimal + "handles: {kind: cup_pull, length: 0.3}\n", "test.yaml:7: handles.length: ");
+  std::string text = kMinimal;
+  text.replace(text.find("at: 0.2"), 7, "at: 0.2\n    handles: {kind: knob, size: 1}");
+  starts(text, "test.yaml:5: runs[0].handles.size: unknown key");
+  // What is accepted: kinds with and without lengths, per-run handles, bar standoffs.
+  const KitchenLayout layout =
+      parse(kMinimal + "handles: {kind: rail, standoffs: round}\ndoors: {style: framed}\n");
+  EXPECT_EQ(layout.handle.kind, HandleKind::rail);
+  EXPECT_TRUE(layout.handle.round_standoffs);
+  EXPECT_FALSE(layout.handle.length_m);
+  EXPECT_EQ(layout.door_style, DoorStyle::framed);
+  EXPECT_EQ(parse(kMinimal).handle.kind, HandleKind::bar);
+  EXPECT_EQ(parse(kMinimal).door_style, DoorStyle::shaker);
+  text = kMinimal;
+  text.replace(text.find("at: 0.2"), 7, "at: 0.2\n    handles: {kind: cup_pull, length: 0.1}");
+  const KitchenLayout per_run = parse(text);
+  ASSERT_TRUE(per_run.runs[0].handles);
+  EXPECT_EQ(per_run.runs[0].handles->kind, HandleKind::cup_pull);
+  EXPECT_DOUBLE_EQ(per_run.runs[0].handles->length_m.value(), 0.1);
+}
+
+TEST(KitchenLayout, MaterialsSetFinishesAndAreChecked) {
+  auto starts = [](const std::string& text, const std::string& prefix) {
+    const std::string what = error_of(text);
+    EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
+  };
+  starts(kMinimal + "materials: {oak: {colour: \"#aa8855\"}}\n",
+         "test.yaml:7: materials.oak: unknown material (known: wall, ");
+  starts(kMinimal + "materials: {door: {finish: velvet}}\n",
+         "test.yaml:7: materials.door.finish: unknown finish 'velvet' (one of matte, painted, ");
+  starts(kMinimal + "materials: {door: {shine: 1}}\n",
+         "test.yaml:7: materials.door.shine: unknown key");
+  starts(kMinimal + "materials: {door: {contrast: 2}}\n", "test.yaml:7: materials.door.contrast: ");
+  starts(kMinimal + "materials: {door: {pattern_colour: brown}}\n",
+         "test.yaml:7: materials.door.pattern_colour: expected a colour");
+  starts(kMinimal + "colours: {door: \"#aa8855\"}\nmaterials: {door: {colour: \"#aa8855\"}}\n",
+         "test.yaml:8: materials.door.colour: colour of 'door' is in colours: too");
+
+  const KitchenLayout layout =
+      parse(kMinimal +
+            "colours: {handle: \"#202020\"}\n"
+            "materials:\n"
+            "  door: {colour: \"#b08850\", finish: wood, pattern_colour: \"#806030\", "
+            "pattern_scale: 0.005, contrast: 0.5, specular: 0.2, roughness: 0.6}\n"
+            "  handle: {finish: matte}\n"
+            "  floor: {finish: wood}\n");
+  const world::WorldModel world = generate_kitchen(layout);
+  const world::Material& door = *world.find_material("door");
+  EXPECT_EQ(door.colour, (world::Colour{0xb0, 0x88, 0x50}));
+  EXPECT_EQ(door.finish, world::Finish::wood);
+  EXPECT_EQ(door.pattern_colour, (world::Colour{0x80, 0x60, 0x30}));
+  EXPECT_EQ(door.pattern_scale_m, 0.005);
+  EXPECT_EQ(door.contrast, 0.5);
+  EXPECT_EQ(door.specular, 0.2);
+  EXPECT_EQ(door.roughness, 0.6);
+  // colours: and materials: combine; another finish drops the palette's pattern (the tiles'
+  // grout is no wood grain); materials not named keep the palette's look.
+  EXPECT_EQ(world.find_material("handle")->colour, (world::Colour{0x20, 0x20, 0x20}));
+  EXPECT_EQ(world.find_material("handle")->finish, world::Finish::matte);
+  EXPECT_EQ(world.find_material("floor")->finish, world::Finish::wood);
+  EXPECT_FALSE(world.find_material("floor")->pattern_colour);
+  EXPECT_EQ(world.find_material("countertop")->finish, world::Finish::stone);
+  EXPECT_TRUE(world.find_material("lamp")->light);
+}
+
 TEST(KitchenLayout, UnitCatalogueIsConsistent) {
   for (const UnitKind& kind : kitchen_unit_kinds()) {
     if (std::string(kind.name) == "gap") continue;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -11,6 +12,7 @@
 #include "vsl/world/world_io.hpp"
 #include "vsl/worldgen/inspect.hpp"
 #include "vsl/worldgen/kitchen.hpp"
+#include "vsl/worldgen/world_builder.hpp"
 
 namespace vsl::worldgen {
 namespace {
@@ -151,6 +153,45 @@ TEST(Kitchen, DoorAndHandleColoursAreSeparable) {
   }
 }
 
+// The finishes of the generators' materials, and the two kinds of lights.
+TEST(Kitchen, PaletteHasFinishesAndLights) {
+  using world::Finish;
+  const std::map<std::string, Finish> finishes = {{"wall", Finish::painted},
+                                                  {"ceiling", Finish::painted},
+                                                  {"floor", Finish::tiles},
+                                                  {"skirting", Finish::painted},
+                                                  {"carcass", Finish::laminate},
+                                                  {"plinth", Finish::matte},
+                                                  {"door", Finish::painted},
+                                                  {"handle", Finish::brushed_metal},
+                                                  {"countertop", Finish::stone},
+                                                  {"steel", Finish::brushed_metal},
+                                                  {"chrome", Finish::polished_metal},
+                                                  {"black_glass", Finish::glass},
+                                                  {"glass", Finish::glass},
+                                                  {"window_frame", Finish::painted},
+                                                  {"room_door", Finish::painted},
+                                                  {"appliance", Finish::laminate},
+                                                  {"table", Finish::wood},
+                                                  {"chair", Finish::matte}};
+  for (const auto& [name, finish] : finishes) {
+    const PaletteEntry* entry = find_palette_entry(name);
+    ASSERT_NE(entry, nullptr) << name;
+    EXPECT_EQ(entry->material.finish, finish) << name;
+    EXPECT_FALSE(entry->material.light) << name;
+  }
+  EXPECT_TRUE(find_palette_entry("floor")->material.pattern_colour);  // the grout
+  const auto lamp = find_palette_entry("lamp")->material.light;
+  const auto strip = find_palette_entry("strip_light")->material.light;
+  ASSERT_TRUE(lamp && strip);
+  EXPECT_EQ(*lamp, (world::MaterialLight{600.0, 3000.0, 1.0}));
+  EXPECT_EQ(*strip, (world::MaterialLight{250.0, 3500.0, 1.2}));
+  EXPECT_FALSE(find_palette_entry("lamp_fitting")->material.light);
+  // The shipped kitchen keeps its colours: only finishes were added.
+  EXPECT_EQ(kitchen().find_material("door")->colour, (world::Colour{47, 95, 143}));
+  EXPECT_EQ(kitchen().find_material("door")->finish, Finish::painted);
+}
+
 TEST(Kitchen, ShippedWorldIsExactlyWhatTheGeneratorMakes) {
   std::ifstream in(kWorld, std::ios::binary);
   ASSERT_TRUE(in) << kWorld << " is missing";
@@ -190,11 +231,12 @@ TEST(Kitchen, ShippedWorldIsExactlyWhatTheGeneratorMakes) {
 }
 
 // The evaluation layouts of recognition (docs/recognition.md): the galley, the L-shaped check
-// layout and the two tuning layouts are shipped as generated worlds too, and must stay what their
-// layouts make.
+// layout, the two tuning layouts and the two kitchens of unseen looks are shipped as generated
+// worlds too, and must stay what their layouts make.
 TEST(Kitchen, ShippedEvaluationWorldsAreWhatTheirLayoutsMake) {
   for (const std::string name :
-       {"kitchen_galley", "kitchen_l", "kitchen_tuning_corner", "kitchen_tuning_parallel"}) {
+       {"kitchen_galley", "kitchen_l", "kitchen_tuning_corner", "kitchen_tuning_parallel",
+        "kitchen_white_rails", "kitchen_oak_knobs"}) {
     const std::string layout = "config/layouts/" + name + ".yaml";
     const std::string world = "config/worlds/" + name + ".yaml";
     std::ifstream in(world, std::ios::binary);
@@ -209,6 +251,94 @@ TEST(Kitchen, ShippedEvaluationWorldsAreWhatTheirLayoutsMake) {
         << world << " is stale or was edited by hand; regenerate it from the repository root "
         << "with\n  vsl-worldgen kitchen " << layout << " -o " << world;
   }
+}
+
+// The wall an object stands against: its y axis points back into it.
+std::string wall_of(const world::ObjectModel& o) {
+  const Eigen::Vector3d back = o.world_orientation * Eigen::Vector3d::UnitY();
+  if (back.y() > 0.9) return "north";
+  if (back.x() > 0.9) return "east";
+  if (back.y() < -0.9) return "south";
+  if (back.x() < -0.9) return "west";
+  return "?";
+}
+
+// Primitives of a light-giving material, by material name.
+std::map<std::string, int> lights_of(const world::WorldModel& world) {
+  std::map<std::string, int> out;
+  for (const auto& o : world.objects) {
+    for (const auto& p : o.primitives) {
+      const world::Material* m = world.find_material(p.material);
+      if (m != nullptr && m->light) ++out[p.material];
+    }
+  }
+  return out;
+}
+
+// The kitchens of unseen looks must be as good for localization as the others: doors and handles
+// on three walls, a room door, windows, ceiling and under-cupboard lights.
+TEST(Kitchen, UnseenLooksAreGoodLocalizationWorlds) {
+  struct Expected {
+    const char* name;
+    world::Finish door_finish;
+    HandleKind handles;
+  };
+  for (const Expected& e :
+       {Expected{"kitchen_white_rails", world::Finish::laminate, HandleKind::rail},
+        Expected{"kitchen_oak_knobs", world::Finish::wood, HandleKind::knob}}) {
+    const KitchenLayout layout =
+        load_kitchen_layout("config/layouts/" + std::string(e.name) + ".yaml");
+    EXPECT_EQ(layout.handle.kind, e.handles) << e.name;
+    const world::WorldModel world = generate_kitchen(layout);
+    for (const std::string& problem : check_generated_world(world)) ADD_FAILURE() << problem;
+    EXPECT_EQ(world.find_material("door")->finish, e.door_finish) << e.name;
+    std::set<std::string> door_walls, handle_walls;
+    for (const auto& o : world.objects) {
+      if (o.type == "door" || o.type == "drawer_front") door_walls.insert(wall_of(o));
+      if (o.type == "handle") handle_walls.insert(wall_of(o));
+    }
+    EXPECT_GE(door_walls.size(), 3u) << e.name;
+    EXPECT_GE(handle_walls.size(), 4u) << e.name;  // the room door's too
+    const WorldCounts c = count_world(world);
+    EXPECT_GE(c.of_type("door"), 25u) << e.name;
+    EXPECT_GE(c.of_type("handle"), 35u) << e.name;
+    EXPECT_EQ(c.of_type("room_door"), 1u) << e.name;
+    EXPECT_GE(c.of_type("window"), 2u) << e.name;
+    const std::map<std::string, int> lights = lights_of(world);
+    EXPECT_GE(lights.count("lamp") ? lights.at("lamp") : 0, 5) << e.name;
+    EXPECT_GE(lights.count("strip_light") ? lights.at("strip_light") : 0, 5) << e.name;
+    // Their door and handle colours are none of the other shipped kitchens'.
+    const world::Colour door = world.find_material("door")->colour;
+    const world::Colour handle = world.find_material("handle")->colour;
+    EXPECT_GT(distance(door, kitchen().find_material("door")->colour), 80.0) << e.name;
+    EXPECT_GT(distance(handle, kitchen().find_material("handle")->colour), 80.0) << e.name;
+  }
+}
+
+// A lamp shines along its primitive's -z: every light of every shipped kitchen shines down.
+TEST(Kitchen, ShippedLightsShineDown) {
+  for (const std::string name :
+       {"kitchen", "kitchen_galley", "kitchen_l", "kitchen_tuning_corner",
+        "kitchen_tuning_parallel", "kitchen_white_rails", "kitchen_oak_knobs"}) {
+    const world::WorldModel world = world::load_world("config/worlds/" + name + ".yaml");
+    int lights = 0;
+    for (const auto& o : world.objects) {
+      for (const auto& p : o.primitives) {
+        const world::Material* m = world.find_material(p.material);
+        if (m == nullptr || !m->light) continue;
+        ++lights;
+        const Eigen::Vector3d beam =
+            o.world_orientation * p.object_orientation * Eigen::Vector3d(0, 0, -1);
+        EXPECT_NEAR(beam.z(), -1.0, 1e-9) << name << " " << o.id;
+      }
+    }
+    EXPECT_GE(lights, 3) << name;
+  }
+  // The shipped kitchen: a 3 x 2 grid of downlights and the pendant's shade; one strip under each
+  // of its 13 wall cupboards (the 14th upper unit is the hood).
+  const std::map<std::string, int> lights = lights_of(kitchen());
+  EXPECT_EQ(lights.at("lamp"), 7);
+  EXPECT_EQ(lights.at("strip_light"), 13);
 }
 
 TEST(Kitchen, ShippedWorldLoads) {

@@ -35,7 +35,7 @@ struct RealismOptions {
   // --- materials and light (level materials and full) ---
   // Diffuse light with shadows is baked once per Renderer into light maps of this texel size, m:
   // the scene is static, only the head moves, so it is view-independent.
-  double light_map_texel_m = 0.03;
+  double light_map_texel_m = 0.04;
   int shadow_map_px = 512;      // side of each lamp's shadow map, pixels
   double indirect_light = 0.8;  // light that bounces around the room, as a fraction of the mean
                                 // direct light on the room's surfaces (no shadows, no direction)
@@ -54,8 +54,9 @@ struct RealismOptions {
   double vignetting = 0.35;               // fraction of light lost in the image corners
   double aperture_m = 0.0015;             // lens aperture diameter: defocus blur; 0: pinhole
   double focus_distance_m = 0.0;          // 0: focus on the image centre's median depth
-  double full_well_electrons = 6000.0;    // shot noise: a white pixel collects this many electrons
-  double read_noise_electrons = 6.0;      // read noise, electrons (Gaussian)
+  // Shot noise: a white pixel collects this many electrons (0: no sensor noise at all).
+  double full_well_electrons = 6000.0;
+  double read_noise_electrons = 6.0;  // read noise, electrons (Gaussian)
   double white_balance_error = 0.04;  // each image's red and blue gains off by up to this fraction
   int jpeg_quality = 80;              // MJPEG as a UVC camera delivers it (4:2:0); 0: none
 };

@@ -32,9 +32,9 @@ WorldCounts count_world(const world::WorldModel& world);
 std::string describe(const WorldCounts& counts);
 
 // Consistency of a generated world, one line per problem (empty when all is well): unique ids,
-// parents that exist, closed outward polyhedra, finite numbers, and every handle in front of
-// the front face of its parent (a parent's front face is its y = 0 plane, facing -y) and within
-// the parent's width and height.
+// parents that exist, closed outward polyhedra, finite numbers, and every handle's grip on or in
+// front of the front face of its parent (a parent's front face is its y = 0 plane, facing -y) and
+// within the parent's width and height.
 std::vector<std::string> check_generated_world(const world::WorldModel& world);
 
 }  // namespace vsl::worldgen

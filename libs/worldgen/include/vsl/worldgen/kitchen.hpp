@@ -8,8 +8,9 @@
 // generated object is turned about z only, and its frame has x to the right as seen from the
 // room, y pointing back (away from a viewer facing it, into the wall) and z up: its front is its
 // -y face. Positions are what a stereo camera would triangulate: the centre of the front face for
-// flat things (door, drawer_front, window, oven, room_door, wall), the centre of the bar for a
-// handle, the middle of the top for tables, hobs and sinks, the centre of the body otherwise.
+// flat things (door, drawer_front, window, oven, room_door, wall), the centre of the visible grip
+// for a handle (a bar's centre, a knob's front, a cup pull's opening, a recessed grip's opening),
+// the middle of the top for tables, hobs and sinks, the centre of the body otherwise.
 #pragma once
 
 #include <Eigen/Core>
@@ -37,6 +38,46 @@ struct Origin {
 
 enum class WallSide { north, east, south, west };
 
+// How cupboard doors are made (docs/worldgen.md, door styles). Drawer fronts are always slabs.
+enum class DoorStyle {
+  slab,    // one board
+  shaker,  // narrow frame around a flat recessed panel
+  glass,   // narrow frame around a glass pane (fridge and dishwasher doors: shaker)
+  framed,  // wide flat frame around a bevelled raised panel
+};
+const char* door_style_name(DoorStyle style);
+
+// What the handles of doors and drawer fronts are (docs/worldgen.md, handle kinds).
+enum class HandleKind {
+  bar,       // a bar on two standoffs: vertical on doors, horizontal on drawers
+  knob,      // a round knob on a short stem
+  cup_pull,  // a half-cup shell, open at the bottom, on a mounting plate
+  recessed,  // a channel along the front's grip edge instead of a handle in front of it
+  rail,      // a long bar along most of the front's top (bottom, or opening) edge
+};
+const char* handle_kind_name(HandleKind kind);
+
+struct HandleStyle {
+  HandleKind kind = HandleKind::bar;
+  // Bar length, knob diameter or cup length (m); unset: the kind's default. Recessed grips and
+  // rails span the front, so they take no length.
+  std::optional<double> length_m;
+  bool round_standoffs = false;  // bars and rails: cylinders instead of square posts
+};
+// The length a handle of this style has when the layout gives none (m).
+double default_handle_length_m(HandleKind kind);
+
+// A layout's change to one palette material; unset fields keep the palette's.
+struct MaterialSpec {
+  std::optional<world::Colour> colour;
+  std::optional<world::Finish> finish;
+  std::optional<world::Colour> pattern_colour;
+  std::optional<double> pattern_scale_m;
+  std::optional<double> contrast;
+  std::optional<double> specular;
+  std::optional<double> roughness;
+};
+
 struct UnitSpec {
   std::string kind;  // a name from kitchen_unit_kinds()
   double width_m = 0.6;
@@ -49,7 +90,8 @@ struct RunSpec {
   double at_m = 0.0;
   std::vector<UnitSpec> base;  // on the floor: base and tall units
   double upper_at_m = 0.0;
-  std::vector<UnitSpec> upper;  // hung on the wall above the worktop
+  std::vector<UnitSpec> upper;         // hung on the wall above the worktop
+  std::optional<HandleStyle> handles;  // set: replaces the layout's handles on this run's units
   Origin origin;
 };
 
@@ -84,18 +126,14 @@ struct KitchenDimensions {
   double wall_thickness_m = 0.12;
 };
 
-struct HandleStyle {
-  double length_m = 0.16;        // bar length (the oven's bar is longer)
-  bool round_standoffs = false;  // cylinders instead of square posts
-};
-
 struct KitchenLayout {
   std::string name = "kitchen";
   Eigen::Vector3d room_size_m{5.4, 4.2, 2.6};
   KitchenDimensions dimensions;
-  HandleStyle handle;
-  bool shaker_doors = true;  // frame-and-panel doors (5 boxes) rather than slabs
-  std::map<std::string, world::Colour> colours;  // overrides of the default palette
+  HandleStyle handle;  // every run's, unless the run gives its own
+  DoorStyle door_style = DoorStyle::shaker;
+  std::map<std::string, world::Colour> colours;   // `colours:`, overrides of the palette
+  std::map<std::string, MaterialSpec> materials;  // `materials:`, overrides of the palette
   std::optional<OpeningSpec> room_door;
   bool room_door_hinge_right = false;
   std::vector<OpeningSpec> windows;
@@ -119,6 +157,9 @@ const std::vector<UnitKind>& kitchen_unit_kinds();
 // keys or unit kinds, bad numbers, a missing required key.
 KitchenLayout parse_kitchen_layout(const config::Node& root);
 KitchenLayout load_kitchen_layout(const std::string& path);
+
+// The world's materials: the default palette with the layout's `colours:` and `materials:`.
+std::vector<world::Material> kitchen_materials(const KitchenLayout& layout);
 
 // Builds the kitchen. Throws config::Error, located at the offending entry of the layout, for
 // geometric conflicts: a unit beyond its wall, units or runs overlapping, a wall cupboard over a

@@ -15,15 +15,19 @@ namespace vsl::worldgen {
 
 // A material of the generators' palette, with what it is for.
 struct PaletteEntry {
-  const char* name;
-  world::Colour colour;
+  world::Material material;  // name, colour, finish and, for lamps, the light they give
   const char* what;
 };
 
-// The generators' materials (names used by every generated primitive) and their default colours.
-// Chosen to be separable by colour segmentation: door panels a saturated blue, handles brushed
-// brass, neither near the off-white walls and carcasses, the grey floor or the dark countertop.
+// The generators' materials (names used by every generated primitive), their default colours and
+// finishes. Colours are chosen to be separable by colour segmentation: door panels a saturated
+// blue, handles brushed brass, neither near the off-white walls and carcasses, the grey floor or
+// the dark countertop. Finishes only show when the renderer's realism is on.
 const std::vector<PaletteEntry>& default_palette();
+// The palette as world materials, in palette order.
+std::vector<world::Material> palette_materials();
+// The palette entry called `name`, or nullptr.
+const PaletteEntry* find_palette_entry(const std::string& name);
 // The default palette's colour for `name`; throws std::out_of_range for a name not in it.
 world::Colour default_colour(const std::string& name);
 
