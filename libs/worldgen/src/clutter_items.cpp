@@ -1,6 +1,7 @@
 // Kitchen clutter (clutter_items.hpp). Sizes are those of common products, in metres.
 #include "clutter_items.hpp"
 
+#include <array>
 #include <functional>
 #include <utility>
 
@@ -45,10 +46,25 @@ class Item {
   ClutterItem item_;
 };
 
-ClutterItem packet(Rng& rng) {
-  Item item("packet", rng);
-  const Vector3d size(item.uniform(0.14, 0.3), item.uniform(0.05, 0.09), item.uniform(0.18, 0.33));
-  return item.part("body", ClutterLook::printed).box_on("body", 0, 0, 0, size).done();
+// An item of one box, its extents drawn uniformly in [lo, hi] along x, y, z (m).
+struct BoxKind {
+  const char* kind;
+  ClutterLook look;
+  std::array<double, 3> lo, hi;
+};
+constexpr BoxKind kPacket{"packet", ClutterLook::printed, {0.14, 0.05, 0.18}, {0.3, 0.09, 0.33}};
+constexpr BoxKind kFoldedTowel{"towel", ClutterLook::fabric, {0.2, 0.15, 0.02}, {0.3, 0.25, 0.05}};
+constexpr BoxKind kCuttingBoard{
+    "cutting_board", ClutterLook::wood, {0.3, 0.2, 0.015}, {0.45, 0.3, 0.025}};
+constexpr BoxKind kCardboardBox{"box", ClutterLook::cardboard, {0.3, 0.25, 0.2}, {0.6, 0.5, 0.5}};
+constexpr BoxKind kCrate{"crate", ClutterLook::plastic, {0.3, 0.25, 0.25}, {0.4, 0.3, 0.3}};
+
+template <const BoxKind& kind>
+ClutterItem box_item(Rng& rng) {
+  Item item(kind.kind, rng);
+  const Vector3d size(item.uniform(kind.lo[0], kind.hi[0]), item.uniform(kind.lo[1], kind.hi[1]),
+                      item.uniform(kind.lo[2], kind.hi[2]));
+  return item.part("body", kind.look).box_on("body", 0, 0, 0, size).done();
 }
 
 ClutterItem bottle(Rng& rng) {
@@ -108,12 +124,6 @@ ClutterItem coffee_machine(Rng& rng) {
   return item.cylinder_on("jug", 0, -size.y() / 2, 0.01, 0.065, 0.13).done(true);
 }
 
-ClutterItem folded_towel(Rng& rng) {
-  Item item("towel", rng);
-  const Vector3d size(item.uniform(0.2, 0.3), item.uniform(0.15, 0.25), item.uniform(0.02, 0.05));
-  return item.part("cloth", ClutterLook::fabric).box_on("cloth", 0, 0, 0, size).done();
-}
-
 ClutterItem fruit_bowl(Rng& rng) {
   Item item("fruit_bowl", rng);
   const double r = item.uniform(0.1, 0.14), h = item.uniform(0.06, 0.09);
@@ -124,18 +134,6 @@ ClutterItem fruit_bowl(Rng& rng) {
     item.cylinder_on("fruit", 0.045 * std::cos(angle), 0.045 * std::sin(angle), h, 0.035, 0.06);
   }
   return item.done();
-}
-
-ClutterItem cutting_board(Rng& rng) {
-  Item item("cutting_board", rng);
-  const Vector3d size(item.uniform(0.3, 0.45), item.uniform(0.2, 0.3), item.uniform(0.015, 0.025));
-  return item.part("board", ClutterLook::wood).box_on("board", 0, 0, 0, size).done();
-}
-
-ClutterItem cardboard_box(Rng& rng) {
-  Item item("box", rng);
-  const Vector3d size(item.uniform(0.3, 0.6), item.uniform(0.25, 0.5), item.uniform(0.2, 0.5));
-  return item.part("body", ClutterLook::cardboard).box_on("body", 0, 0, 0, size).done();
 }
 
 ClutterItem bin(Rng& rng) {
@@ -153,12 +151,6 @@ ClutterItem bag(Rng& rng) {
   const Vector3d size(item.uniform(0.3, 0.45), item.uniform(0.12, 0.2), item.uniform(0.3, 0.45));
   item.part("body", rng.chance(0.5) ? ClutterLook::fabric : ClutterLook::printed);
   return item.box_on("body", 0, 0, 0, size).done();
-}
-
-ClutterItem crate(Rng& rng) {
-  Item item("crate", rng);
-  const Vector3d size(item.uniform(0.3, 0.4), item.uniform(0.25, 0.3), item.uniform(0.25, 0.3));
-  return item.part("body", ClutterLook::plastic).box_on("body", 0, 0, 0, size).done();
 }
 
 ClutterItem bucket(Rng& rng) {
@@ -183,17 +175,23 @@ ClutterItem pick(const std::vector<std::pair<Maker, double>>& makers, Rng& rng) 
 }  // namespace
 
 ClutterItem worktop_item(Rng& rng) {
-  static const std::vector<std::pair<Maker, double>> makers{
-      {packet, 1.2},         {bottle, 1.5},       {jar, 1.0},
-      {kettle, 1.0},         {toaster, 0.8},      {microwave, 0.6},
-      {coffee_machine, 0.6}, {folded_towel, 0.6}, {fruit_bowl, 0.6},
-      {cutting_board, 0.6}};
+  static const std::vector<std::pair<Maker, double>> makers{{box_item<kPacket>, 1.2},
+                                                            {bottle, 1.5},
+                                                            {jar, 1.0},
+                                                            {kettle, 1.0},
+                                                            {toaster, 0.8},
+                                                            {microwave, 0.6},
+                                                            {coffee_machine, 0.6},
+                                                            {box_item<kFoldedTowel>, 0.6},
+                                                            {fruit_bowl, 0.6},
+                                                            {box_item<kCuttingBoard>, 0.6}};
   return pick(makers, rng);
 }
 
 ClutterItem floor_item(Rng& rng) {
   static const std::vector<std::pair<Maker, double>> makers{
-      {cardboard_box, 1.5}, {bin, 1.0}, {bag, 1.0}, {crate, 0.7}, {bucket, 0.5}, {bottle, 0.5}};
+      {box_item<kCardboardBox>, 1.5}, {bin, 1.0},    {bag, 1.0},
+      {box_item<kCrate>, 0.7},        {bucket, 0.5}, {bottle, 0.5}};
   return pick(makers, rng);
 }
 
