@@ -2,6 +2,7 @@
 // (docs/dataset.md).
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return 2;
   } catch (const IoError& e) {
+    std::cerr << "vsl-make-dataset: " << e.what() << "\n";
+    return 1;
+  } catch (const std::invalid_argument& e) {  // the renderer's: an unusable head calibration
+    std::cerr << "vsl-make-dataset: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
     std::cerr << "vsl-make-dataset: " << e.what() << "\n";
     return 1;
   }
