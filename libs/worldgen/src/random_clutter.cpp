@@ -141,11 +141,11 @@ void Placer::floor(std::size_t index) {
   const int count = rng_.between(0, options_.max_floor_items);
   for (int k = 0; k < count; ++k) {
     const ClutterItem item = floor_item(rng_);
+    const double radius = turned_footprint(item, 0.0).sizes().norm() / 2.0;  // any way turned
     for (int attempt = 0; attempt < 2 * kAttemptsPerItem; ++attempt) {
       const double yaw = rng_.uniform(0.0, 2.0 * std::numbers::pi);
       const Eigen::Vector2d xy(rng_.uniform(floor_box.min().x(), floor_box.max().x()),
                                rng_.uniform(floor_box.min().y(), floor_box.max().y()));
-      const double radius = turned_footprint(item, 0.0).sizes().norm() / 2.0;
       const bool in_the_way = std::any_of(
           options_.keep_clear.begin(), options_.keep_clear.end(), [&](const KeepClearDisc& disc) {
             return (xy - disc.world_centre_m).norm() < disc.radius_m + radius;
