@@ -184,7 +184,8 @@ TEST(RandomizeLooks, KeepsFloorClutterOutOfTheKeepClearDiscs) {
   options.max_floor_items = 6;
   options.keep_clear.push_back({Eigen::Vector2d(2.7, 2.1), 10.0});  // the whole kitchen
   for (std::uint64_t seed = 0; seed < 10; ++seed) {
-    for (const auto& [item, support] : clutter_of(randomize_looks(kitchen(), seed, options))) {
+    const world::WorldModel looks = randomize_looks(kitchen(), seed, options);
+    for (const auto& [item, support] : clutter_of(looks)) {
       EXPECT_NE(support->type, "floor") << item->id;
     }
   }
