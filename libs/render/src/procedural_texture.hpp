@@ -14,7 +14,8 @@ namespace vsl::render {
 
 class TextureTile {
  public:
-  static constexpr int kSize = 256;  // texels along each side of level 0
+  // Texels along each side of the pattern's definition (level 0 has this many or half as many).
+  static constexpr int kSize = 256;
 
   // The tile of `look`: the pattern in texture coordinates (s along the surface's long axis,
   // t across it), covering look.tile_size_m square. `seed` picks the pattern's randomness.
