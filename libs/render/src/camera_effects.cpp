@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "colour_science.hpp"
@@ -18,18 +17,9 @@ namespace {
 class NormalTable {
  public:
   NormalTable() {
-    double x = -4.0;
-    for (int i = 0; i < kSize; ++i) {
-      const double p = (i + 0.5) / kSize;
-      for (int step = 0; step < 50; ++step) {
-        const double cdf = 0.5 * std::erfc(-x / std::numbers::sqrt2);
-        const double pdf = std::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi);
-        const double dx = (cdf - p) / pdf;
-        x -= dx;
-        if (std::abs(dx) < 1e-12) break;
-      }
-      values_[i] = static_cast<float>(x);
-    }
+    const std::vector<double> quantiles = standard_normal_quantiles(kSize);
+    for (int i = 0; i < kSize; ++i)
+      values_[i] = static_cast<float>(quantiles[static_cast<std::size_t>(i)]);
   }
   float operator[](std::uint64_t bits) const { return values_[bits & (kSize - 1)]; }
 

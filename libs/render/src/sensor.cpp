@@ -11,15 +11,13 @@ double draw_exposure_gain(SensorRandom& random, double variation) {
   return random.uniform(1.0 - variation, 1.0 + variation);
 }
 
-NoiseTable::NoiseTable(double sigma_grey) {
-  if (!(sigma_grey > 0.0)) return;
-  constexpr int kSize = 1 << kIndexBits;
-  quantiles_.resize(kSize);
-  // The standard normal quantile of p = (i + 0.5) / kSize by Newton's method on the CDF, warm-
-  // started from the previous (smaller) quantile: two or three steps each.
+std::vector<double> standard_normal_quantiles(int count) {
+  std::vector<double> out(static_cast<std::size_t>(count));
+  // The quantile of p = (i + 0.5) / count by Newton's method on the CDF, warm-started from the
+  // previous (smaller) quantile: two or three steps each.
   double x = -4.0;
-  for (int i = 0; i < kSize; ++i) {
-    const double p = (i + 0.5) / kSize;
+  for (int i = 0; i < count; ++i) {
+    const double p = (i + 0.5) / count;
     for (int step = 0; step < 50; ++step) {
       const double cdf = 0.5 * std::erfc(-x / std::numbers::sqrt2);
       const double pdf = std::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi);
@@ -27,7 +25,18 @@ NoiseTable::NoiseTable(double sigma_grey) {
       x -= dx;
       if (std::abs(dx) < 1e-12) break;
     }
-    const double grey = std::round(sigma_grey * x);
+    out[static_cast<std::size_t>(i)] = x;
+  }
+  return out;
+}
+
+NoiseTable::NoiseTable(double sigma_grey) {
+  if (!(sigma_grey > 0.0)) return;
+  constexpr int kSize = 1 << kIndexBits;
+  quantiles_.resize(kSize);
+  const std::vector<double> quantiles = standard_normal_quantiles(kSize);
+  for (int i = 0; i < kSize; ++i) {
+    const double grey = std::round(sigma_grey * quantiles[static_cast<std::size_t>(i)]);
     quantiles_[i] = static_cast<std::int16_t>(std::clamp(grey, -255.0, 255.0));
   }
 }

@@ -30,6 +30,9 @@ class SensorRandom {
   std::uint64_t state_;
 };
 
+// The standard normal's quantiles of `count` equally likely values: of p = (i + 0.5) / count.
+std::vector<double> standard_normal_quantiles(int count);
+
 // One image's exposure gain, uniform in [1 - variation, 1 + variation] (1 when variation <= 0).
 double draw_exposure_gain(SensorRandom& random, double variation);
 
