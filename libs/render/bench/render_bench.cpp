@@ -146,6 +146,14 @@ void BM_KitchenStereoPairRealismFullOverview(benchmark::State& state) {
 }
 BENCHMARK(BM_KitchenStereoPairRealismFullOverview)->Unit(benchmark::kMillisecond);
 
+// Full realism point-sampled (samples 1): what 2x2 area sampling costs at this level.
+void BM_KitchenStereoPairRealismFullPointSampled(benchmark::State& state) {
+  vsl::render::RenderOptions options = realistic(vsl::render::RealismLevel::full);
+  options.samples = 1;
+  render_pairs(state, options, typical_view(), {}, true);
+}
+BENCHMARK(BM_KitchenStereoPairRealismFullPointSampled)->Unit(benchmark::kMillisecond);
+
 // Building the realistic scene: textures, shadow maps and the light-map bake (once per
 // Renderer; once per view for randomized datasets).
 void BM_KitchenRealisticSceneConstruction(benchmark::State& state) {

@@ -178,6 +178,15 @@ void expose(const cv::Mat& radiance, const head::CameraIntrinsics& intrinsics,
   const float well = static_cast<float>(realism.full_well_electrons);
   const float read2 =
       static_cast<float>(realism.read_noise_electrons * realism.read_noise_electrons);
+  // Noise sigma (in the 0-1 signal) per quantized signal level: sqrt(electrons + read^2) / well
+  // by table, not a square root per sample.
+  std::vector<float> sigma(kLinearToSrgbSteps + 1, 0.0f);
+  if (noisy) {
+    for (int i = 0; i <= kLinearToSrgbSteps; ++i) {
+      const float electrons = static_cast<float>(i) / kLinearToSrgbSteps * well;
+      sigma[static_cast<std::size_t>(i)] = std::sqrt(electrons + read2) / well;
+    }
+  }
   SensorRandom local = random;
   for (int v = 0; v < radiance.rows; ++v) {
     const auto* in = radiance.ptr<cv::Vec3f>(v);
@@ -192,8 +201,8 @@ void expose(const cv::Mat& radiance, const head::CameraIntrinsics& intrinsics,
         float x = in[u][k] * gains[k] * lens;
         if (noisy) {
           // Shot noise (Poisson, as Gaussian: variance = electrons) and read noise, in electrons.
-          const float electrons = std::clamp(x, 0.0f, 1.0f) * well;
-          x += normal[bits >> (12 * k)] * std::sqrt(electrons + read2) / well;
+          const int level = static_cast<int>(std::clamp(x, 0.0f, 1.0f) * kLinearToSrgbSteps);
+          x += normal[bits >> (12 * k)] * sigma[static_cast<std::size_t>(level)];
         }
         const float clamped = std::clamp(x, 0.0f, 1.0f);
         out[u][k] = tone[static_cast<int>(clamped * kLinearToSrgbSteps + 0.5f)];

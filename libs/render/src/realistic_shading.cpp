@@ -104,6 +104,7 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
           look.surface, hash_text(primitive.material) ^ colour_key);
       look.specular = static_cast<float>(look.surface.specular);
       look.exponent = static_cast<float>(phong_exponent(look.surface.roughness));
+      look.min_highlight_cosine = std::pow(1e-3f, 1.0f / look.exponent);
       look.reflectance = static_cast<float>(look.surface.reflectance);
       look.fresnel_base = look.surface.finish == world::Finish::glass ? 0.04f : look.reflectance;
       look.emissive = look.surface.emits_light;
@@ -161,7 +162,7 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     room_above_rgb_[k] = 0.75f * mean_e[k] * kInversePi;
   }
 
-  // The lights whose highlights each shiny triangle shows: the two that light it most (at its
+  // The light whose highlights each shiny triangle shows: the one that lights it most (at its
   // centre and near its corners, through the shadow maps).
   for (std::size_t t = 0; t < count; ++t) {
     TriangleLook& tl = triangles_[t];
@@ -174,7 +175,7 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     const Eigen::Vector3f centre = (a + b + c) / 3.0f;
     const std::array<Eigen::Vector3f, 4> probes{centre, 0.8f * a + 0.2f * centre,
                                                 0.8f * b + 0.2f * centre, 0.8f * c + 0.2f * centre};
-    std::array<std::pair<float, int>, 2> best{{{0.0f, -1}, {0.0f, -1}}};
+    std::pair<float, int> best{0.0f, -1};
     for (std::size_t l = 0; l < lights_.lights.size(); ++l) {
       const Light& light = lights_.lights[l];
       float score = 0.0f;
@@ -184,15 +185,9 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
         score = std::max(score, s * luminance(light.intensity_rgb[0], light.intensity_rgb[1],
                                               light.intensity_rgb[2]));
       }
-      if (score > best[0].first) {
-        best[1] = best[0];
-        best[0] = {score, static_cast<int>(l)};
-      } else if (score > best[1].first) {
-        best[1] = {score, static_cast<int>(l)};
-      }
+      if (score > best.first) best = {score, static_cast<int>(l)};
     }
-    tl.highlight_lights = {static_cast<std::int16_t>(best[0].second),
-                           static_cast<std::int16_t>(best[1].second)};
+    tl.highlight_light = static_cast<std::int16_t>(best.second);
   }
 }
 
@@ -201,26 +196,24 @@ void RealisticScene::add_highlights(const Look& look, const TriangleLook& t,
                                     const Eigen::Vector3f& v, float rgb[3]) const {
   // Normalized Blinn-Phong: (e + 8) / (8 pi) (n . h)^e, times the light's irradiance (n . l
   // included), so that a rough surface's broad highlight and a polished one's sharp highlight
-  // reflect the same energy.
+  // reflect the same energy. Only the light that lights the triangle most: a second one cost a
+  // tenth of the frame and showed on few pixels.
   const float normalization =
       look.specular * (look.exponent + 8.0f) / (8.0f * static_cast<float>(M_PI));
-  for (const std::int16_t index : t.highlight_lights) {
-    if (index < 0) continue;
-    const Light& light = lights_.lights[static_cast<std::size_t>(index)];
-    Eigen::Vector3f l;
-    float scale = light.unshadowed_scale(p, n, &l);
-    if (scale <= 0.0f) continue;
-    const Eigen::Vector3f h = (l + v).normalized();
-    const float nh = n.dot(h);
-    if (nh <= 0.0f) continue;
-    const float lobe = std::exp2(look.exponent * std::log2(nh));
-    if (lobe < 1e-3f) continue;
-    if (light.shadow) scale *= light.shadow->visibility(p + 0.01f * n);
-    const float f = normalization * lobe * scale;
-    rgb[0] += f * light.intensity_rgb[2];  // BGR
-    rgb[1] += f * light.intensity_rgb[1];
-    rgb[2] += f * light.intensity_rgb[0];
-  }
+  if (t.highlight_light < 0) return;
+  const Light& light = lights_.lights[static_cast<std::size_t>(t.highlight_light)];
+  Eigen::Vector3f l;
+  float scale = light.unshadowed_scale(p, n, &l);
+  if (scale <= 0.0f) return;
+  const Eigen::Vector3f h = (l + v).normalized();
+  const float nh = n.dot(h);
+  if (nh <= look.min_highlight_cosine) return;  // (n . h)^e < 1e-3: no visible highlight
+  const float lobe = std::exp2(look.exponent * std::log2(nh));
+  if (light.shadow) scale *= light.shadow->visibility(p + 0.01f * n);
+  const float f = normalization * lobe * scale;
+  rgb[0] += f * light.intensity_rgb[2];  // BGR
+  rgb[1] += f * light.intensity_rgb[1];
+  rgb[2] += f * light.intensity_rgb[0];
 }
 
 void RealisticScene::shade_sample(const Scene& /*scene*/, std::int32_t triangle,
@@ -291,6 +284,7 @@ void RealisticScene::shade(const Scene& scene, const Pinhole& camera, int sample
   const float cx = static_cast<float>(s * (camera.cx_px + 0.5) - 0.5);
   const float cy = static_cast<float>(s * (camera.cy_px + 0.5) - 0.5);
   const float pixel_angle = static_cast<float>(1.0 / camera.fx_px);
+  const float inverse_fx = 1.0f / fx, inverse_fy = 1.0f / fy;
   auto shade_fine = [&](int fu, int fv, float rgb[3]) {
     const std::size_t index = static_cast<std::size_t>(fv) * fine.width_px + fu;
     const std::int32_t triangle = fine.triangle[index];
@@ -299,7 +293,7 @@ void RealisticScene::shade(const Scene& scene, const Pinhole& camera, int sample
       return;
     }
     const float z = 1.0f / fine.inverse_depth[index];
-    const Eigen::Vector3f camera_point((fu - cx) / fx * z, (fv - cy) / fy * z, z);
+    const Eigen::Vector3f camera_point((fu - cx) * inverse_fx * z, (fv - cy) * inverse_fy * z, z);
     const Eigen::Vector3f world_point = world_R_camera * camera_point + world_camera;
     const Eigen::Vector3f to_camera = (world_camera - world_point).normalized();
     shade_sample(scene, triangle, world_point, to_camera, z * pixel_angle, rgb);

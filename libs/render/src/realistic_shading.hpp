@@ -42,14 +42,15 @@ class RealisticScene {
     SurfaceLook surface;
     std::shared_ptr<const TextureTile> texture;
     float specular = 0.0f, exponent = 1.0f, reflectance = 0.0f, fresnel_base = 0.0f;
+    float min_highlight_cosine = 1.0f;  // n . h below which (n . h)^exponent < 1e-3
     bool emissive = false;
     std::array<float, 3> emitted_rgb{0, 0, 0};  // radiance of a lamp or a window's sky
   };
   struct TriangleLook {
     std::uint16_t look = 0;
-    std::array<std::int16_t, 2> highlight_lights{-1, -1};  // the strongest lights, or -1
-    Eigen::Vector4f s_axis, t_axis;  // texture coordinates (m) = axis . (world point, 1)
-    Eigen::Vector3f world_normal;    // unit, outward
+    std::int16_t highlight_light = -1;  // the light that lights the triangle most, or -1
+    Eigen::Vector4f s_axis, t_axis;     // texture coordinates (m) = axis . (world point, 1)
+    Eigen::Vector3f world_normal;       // unit, outward
   };
 
   void shade_sample(const Scene& scene, std::int32_t triangle, const Eigen::Vector3f& world_point,
