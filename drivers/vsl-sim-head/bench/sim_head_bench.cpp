@@ -27,9 +27,10 @@ const vsl::sim_head::SimHeadSetup& shipped() {
 }
 
 // The shipped render options at realism level `level` (the section's other keys as shipped).
-vsl::render::RenderOptions options_at(std::int64_t level) {
+vsl::render::RenderOptions options_at(std::int64_t level, std::int64_t samples = 0) {
   vsl::render::RenderOptions options = shipped().config.render;
   options.realism.level = static_cast<RealismLevel>(level);
+  if (samples > 0) options.samples = static_cast<int>(samples);  // 0: as shipped (2)
   return options;
 }
 
@@ -37,10 +38,11 @@ void set_label(benchmark::State& state) {
   state.SetLabel(vsl::render::realism_level_name(static_cast<RealismLevel>(state.range(0))));
 }
 
-// Args: realism level (0 off, 1 materials, 2 full), head turning (0 or 1).
+// Args: realism level (0 off, 1 materials, 2 full), head turning (0 or 1), area samples per
+// pixel side (2 as shipped; 1 point-sampled, render.samples: 1).
 void BM_SimHeadFrame(benchmark::State& state) {
   const vsl::sim_head::SimHeadSetup& setup = shipped();
-  const vsl::render::Renderer renderer(setup.world, options_at(state.range(0)));
+  const vsl::render::Renderer renderer(setup.world, options_at(state.range(0), state.range(2)));
   vsl::sim_head::HeadSimulator simulator(setup.head, setup.initial_state,
                                          setup.config.gaze_tolerance_rad);
   if (state.range(1) != 0) {
@@ -61,8 +63,8 @@ void BM_SimHeadFrame(benchmark::State& state) {
   set_label(state);
 }
 BENCHMARK(BM_SimHeadFrame)
-    ->ArgNames({"realism", "turning"})
-    ->ArgsProduct({{0, 1, 2}, {0, 1}})
+    ->ArgNames({"realism", "turning", "samples"})
+    ->ArgsProduct({{0, 1, 2}, {0, 1}, {2, 1}})
     ->Unit(benchmark::kMillisecond);
 
 // The daemon's start-up: triangulation, and at materials and full the light maps.
