@@ -220,12 +220,12 @@ world::WorldModel shadow_casters(const world::WorldModel& world) {
   return out;
 }
 
-WorldLights collect_lights(const world::WorldModel& world, const Scene& occluders,
-                           const RenderOptions& options) {
-  WorldLights out;
-  add_lamps(world, occluders, options, out.lights);
-  add_windows(world, occluders, options, out.lights);
-  if (out.lights.empty()) add_fallback(occluders, options, out.lights);
+std::vector<Light> collect_lights(const world::WorldModel& world, const Scene& occluders,
+                                  const RenderOptions& options) {
+  std::vector<Light> out;
+  add_lamps(world, occluders, options, out);
+  add_windows(world, occluders, options, out);
+  if (out.empty()) add_fallback(occluders, options, out);
   return out;
 }
 

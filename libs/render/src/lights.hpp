@@ -56,15 +56,10 @@ struct Light {
                          Eigen::Vector3f* to_light) const;
 };
 
-// What emits light in `world` and how it looks to the camera.
-struct WorldLights {
-  std::vector<Light> lights;
-};
-
 // Collects the lights of `world` (see the file comment) with their shadow maps, rasterized from
 // `occluders` (the world without lamps and glass, which must not shadow their own light).
-WorldLights collect_lights(const world::WorldModel& world, const Scene& occluders,
-                           const RenderOptions& options);
+std::vector<Light> collect_lights(const world::WorldModel& world, const Scene& occluders,
+                                  const RenderOptions& options);
 
 // The world without the primitives that must not cast shadows: light-emitting ones (a lamp's
 // housing would shadow its own light) and glass (daylight passes a window pane).

@@ -125,7 +125,7 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     is_sky[t] = object.type == "window" && look.surface.finish == world::Finish::glass;
     inputs.skip[t] = look.emissive || is_sky[t];
   }
-  light_map_ = std::make_unique<const LightMap>(scene, lights_.lights, inputs);
+  light_map_ = std::make_unique<const LightMap>(scene, lights_, inputs);
   const std::array<float, 3>& mean_e = light_map_->mean_irradiance_rgb();
 
   // What a lamp or a window looks like: far brighter than what they light (they saturate).
@@ -176,8 +176,8 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     const std::array<Eigen::Vector3f, 4> probes{centre, 0.8f * a + 0.2f * centre,
                                                 0.8f * b + 0.2f * centre, 0.8f * c + 0.2f * centre};
     std::pair<float, int> best{0.0f, -1};
-    for (std::size_t l = 0; l < lights_.lights.size(); ++l) {
-      const Light& light = lights_.lights[l];
+    for (std::size_t l = 0; l < lights_.size(); ++l) {
+      const Light& light = lights_[l];
       float score = 0.0f;
       for (const Eigen::Vector3f& p : probes) {
         float s = light.unshadowed_scale(p, normal, nullptr);
@@ -201,7 +201,7 @@ void RealisticScene::add_highlights(const Look& look, const TriangleLook& t,
   const float normalization =
       look.specular * (look.exponent + 8.0f) / (8.0f * static_cast<float>(M_PI));
   if (t.highlight_light < 0) return;
-  const Light& light = lights_.lights[static_cast<std::size_t>(t.highlight_light)];
+  const Light& light = lights_[static_cast<std::size_t>(t.highlight_light)];
   Eigen::Vector3f l;
   float scale = light.unshadowed_scale(p, n, &l);
   if (scale <= 0.0f) return;
@@ -216,9 +216,8 @@ void RealisticScene::add_highlights(const Look& look, const TriangleLook& t,
   rgb[2] += f * light.intensity_rgb[0];
 }
 
-void RealisticScene::shade_sample(const Scene& /*scene*/, std::int32_t triangle,
-                                  const Eigen::Vector3f& p, const Eigen::Vector3f& v,
-                                  float footprint_m, float rgb[3]) const {
+void RealisticScene::shade_sample(std::int32_t triangle, const Eigen::Vector3f& p,
+                                  const Eigen::Vector3f& v, float footprint_m, float rgb[3]) const {
   if (triangle < 0) {
     rgb[0] = background_rgb_[0];
     rgb[1] = background_rgb_[1];
@@ -272,7 +271,7 @@ void RealisticScene::shade_sample(const Scene& /*scene*/, std::int32_t triangle,
   if (look.specular >= kMinHighlight) add_highlights(look, tl, p, n, v, rgb);
 }
 
-void RealisticScene::shade(const Scene& scene, const Pinhole& camera, int samples,
+void RealisticScene::shade(const Pinhole& camera, int samples,
                            const Eigen::Isometry3d& world_T_camera, const RasterTarget& fine,
                            cv::Mat& radiance_bgr) const {
   radiance_bgr.create(camera.height_px, camera.width_px, CV_32FC3);
@@ -289,14 +288,14 @@ void RealisticScene::shade(const Scene& scene, const Pinhole& camera, int sample
     const std::size_t index = static_cast<std::size_t>(fv) * fine.width_px + fu;
     const std::int32_t triangle = fine.triangle[index];
     if (triangle < 0) {
-      shade_sample(scene, -1, Eigen::Vector3f::Zero(), Eigen::Vector3f::UnitZ(), 0.0f, rgb);
+      shade_sample(-1, Eigen::Vector3f::Zero(), Eigen::Vector3f::UnitZ(), 0.0f, rgb);
       return;
     }
     const float z = 1.0f / fine.inverse_depth[index];
     const Eigen::Vector3f camera_point((fu - cx) * inverse_fx * z, (fv - cy) * inverse_fy * z, z);
     const Eigen::Vector3f world_point = world_R_camera * camera_point + world_camera;
     const Eigen::Vector3f to_camera = (world_camera - world_point).normalized();
-    shade_sample(scene, triangle, world_point, to_camera, z * pixel_angle, rgb);
+    shade_sample(triangle, world_point, to_camera, z * pixel_angle, rgb);
   };
   std::array<cv::Vec3f, 16> slot_colour;  // s <= 4: at most 16 samples per pixel
   auto sum_slot = [&slot_colour](int k) -> cv::Vec3f& {

@@ -30,11 +30,10 @@ class RealisticScene {
   // (Pinhole of `fine` = finer(camera, samples)). A pixel whose samples all show one triangle is
   // shaded once, at its centre sample; a pixel on an edge is the mean of its shaded samples, so
   // edges are anti-aliased at the cost of shading only the pixels on them several times.
-  void shade(const Scene& scene, const Pinhole& camera, int samples,
-             const Eigen::Isometry3d& world_T_camera, const RasterTarget& fine,
-             cv::Mat& radiance_bgr) const;
+  void shade(const Pinhole& camera, int samples, const Eigen::Isometry3d& world_T_camera,
+             const RasterTarget& fine, cv::Mat& radiance_bgr) const;
 
-  std::size_t light_count() const { return lights_.lights.size(); }
+  std::size_t light_count() const { return lights_.size(); }
   std::size_t light_map_texels() const { return light_map_ ? light_map_->texel_count() : 0; }
 
  private:
@@ -53,13 +52,13 @@ class RealisticScene {
     Eigen::Vector3f world_normal;       // unit, outward
   };
 
-  void shade_sample(const Scene& scene, std::int32_t triangle, const Eigen::Vector3f& world_point,
+  void shade_sample(std::int32_t triangle, const Eigen::Vector3f& world_point,
                     const Eigen::Vector3f& to_camera, float footprint_m, float rgb[3]) const;
   void add_highlights(const Look& look, const TriangleLook& t, const Eigen::Vector3f& p,
                       const Eigen::Vector3f& n, const Eigen::Vector3f& v, float rgb[3]) const;
 
   bool textures_ = true;
-  WorldLights lights_;
+  std::vector<Light> lights_;
   std::unique_ptr<const LightMap> light_map_;
   std::vector<Look> looks_;
   std::vector<TriangleLook> triangles_;

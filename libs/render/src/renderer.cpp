@@ -132,7 +132,7 @@ void rasterize_realistic(const Scene& scene, const RealisticScene& realistic, co
   if (s == 1) {
     const RasterTarget target = target_of(inverse_depth, triangle);
     rasterize(scene, camera, world_T_camera, options.near_clip_m, options.far_clip_m, target);
-    realistic.shade(scene, camera, 1, world_T_camera, target, radiance);
+    realistic.shade(camera, 1, world_T_camera, target, radiance);
     return;
   }
   const Pinhole fine = finer(camera, s);
@@ -140,7 +140,7 @@ void rasterize_realistic(const Scene& scene, const RealisticScene& realistic, co
   cv::Mat fine_triangle(fine.height_px, fine.width_px, CV_32S);
   const RasterTarget fine_target = target_of(fine_inverse_depth, fine_triangle);
   rasterize(scene, fine, world_T_camera, options.near_clip_m, options.far_clip_m, fine_target);
-  realistic.shade(scene, camera, s, world_T_camera, fine_target, radiance);
+  realistic.shade(camera, s, world_T_camera, fine_target, radiance);
   take_centre_samples(fine_inverse_depth, fine_triangle, s, inverse_depth, triangle);
 }
 
