@@ -26,9 +26,9 @@ add_library(vsl_yaml_external INTERFACE)
 target_link_libraries(vsl_yaml_external INTERFACE ${YAML_LIBRARY})
 target_include_directories(vsl_yaml_external SYSTEM INTERFACE ${YAML_INCLUDE_DIR})
 
-# OpenCV 4.6 (libopencv-dev): images, the renderer, recognition, calibration. Its headers warn
-# under C++20 (-Wdeprecated-enum-enum-conversion), hence SYSTEM.
-find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs calib3d)
+# OpenCV 4.6 (libopencv-dev): images, the renderer, recognition (dnn runs the learned detector),
+# calibration. Its headers warn under C++20 (-Wdeprecated-enum-enum-conversion), hence SYSTEM.
+find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs calib3d dnn)
 add_library(vsl_opencv_external INTERFACE)
 target_link_libraries(vsl_opencv_external INTERFACE ${OpenCV_LIBS})
 target_include_directories(vsl_opencv_external SYSTEM INTERFACE ${OpenCV_INCLUDE_DIRS})

@@ -82,6 +82,16 @@ cv::Mat draw_debug_image(const cv::Mat& left_bgr, const FrameResult& result, std
                     colour, 1);
       label(image, detection.type + format(" %.2f", detection.confidence),
             cv::Point(blob.u_min, std::max(blob.v_min - 3, 10)), colour);
+    } else if (detection.blob_index < 0 && detection.corners_px.size() == 4) {
+      // A box of the learned detector: its outline, corners clockwise from the top left.
+      std::vector<cv::Point> outline;
+      for (const Eigen::Vector2d& corner : detection.corners_px) {
+        outline.emplace_back(static_cast<int>(std::lround(corner.x())),
+                             static_cast<int>(std::lround(corner.y())));
+      }
+      cv::polylines(image, outline, true, colour, 1);
+      label(image, detection.type + format(" %.2f", detection.confidence),
+            cv::Point(outline[0].x, std::max(outline[0].y - 3, 10)), colour);
     }
   }
   const Eigen::Vector3d camera_m = result.ego_T_left_camera.translation();

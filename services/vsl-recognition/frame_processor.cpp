@@ -36,7 +36,7 @@ bool decode(runtime::Bytes bytes, vsl::stereo_frame_t& frame) {
 
 }  // namespace
 
-FrameProcessor::FrameProcessor(const recognition::FrameRecognizer& recognizer,
+FrameProcessor::FrameProcessor(const recognition::StereoRecognizer& recognizer,
                                bool draw_debug_image)
     : recognizer_(recognizer), draw_debug_image_(draw_debug_image) {}
 

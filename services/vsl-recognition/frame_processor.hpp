@@ -1,5 +1,5 @@
 // One STEREO_FRAME, as bytes off the bus, to what the daemon publishes: decode, validate and
-// convert (frame_input.hpp), recognize (vsl::recognition::FrameRecognizer), build the PERCEPTS
+// convert (frame_input.hpp), recognize (vsl::recognition::StereoRecognizer), build the PERCEPTS
 // message and, when configured, the debug image. Runs on the worker thread; touches no bus and no
 // shared state, so everything the loop thread must do (publish, log, count) is in the outcome.
 #pragma once
@@ -10,7 +10,7 @@
 
 #include "vsl/image_t.hpp"
 #include "vsl/percept_list_t.hpp"
-#include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/stereo_recognizer.hpp"
 #include "vsl/runtime/bus.hpp"
 
 namespace vsl::recognition_daemon {
@@ -39,13 +39,13 @@ struct FrameOutcome {
 class FrameProcessor {
  public:
   // `recognizer` must outlive the processor.
-  FrameProcessor(const recognition::FrameRecognizer& recognizer, bool draw_debug_image);
+  FrameProcessor(const recognition::StereoRecognizer& recognizer, bool draw_debug_image);
 
   // Never throws for bad input: every failure is an outcome. Const and thread-safe.
   FrameOutcome process(runtime::Bytes bytes) const;
 
  private:
-  const recognition::FrameRecognizer& recognizer_;
+  const recognition::StereoRecognizer& recognizer_;
   bool draw_debug_image_;
 };
 

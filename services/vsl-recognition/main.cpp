@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
       "capture time. Works on the newest frame only: frames that arrive while one is being\n"
       "recognized replace each other and are counted as dropped. Optionally publishes a debug\n"
       "image (recognition.debug_image) with the blobs, detections and percepts drawn.\n"
-      "Config: config/recognition.yaml (head, class models, segmentation:, stereo:).",
+      "Config: config/recognition.yaml (head, class models, segmentation:, stereo:);\n"
+      "config/recognition_learned.yaml runs the learned detector (detector:, box_stereo:).",
       true};
   return vsl::runtime::daemon_main(
       argc, argv, program, [](vsl::runtime::Daemon& daemon, const vsl::config::Node& config) {

@@ -35,21 +35,45 @@ RecognitionConfig read_recognition_config(const Node& root, const runtime::Chann
   root.expect_keys({"runtime", "recognition"});
   const Node section = root.at("recognition");
   section.expect_map();
-  section.expect_keys({"head", "calibration", "models", "segmentation", "stereo", "debug_image",
-                       "status_period_s"});
+  section.expect_keys({"head", "calibration", "recognizer", "detector", "box_stereo", "models",
+                       "segmentation", "stereo", "debug_image", "status_period_s"});
   RecognitionConfig out;
   out.head_path = path_relative_to_file(section.at("head"));
   if (const auto calibration = section.find("calibration")) {
     out.calibration_path = path_relative_to_file(*calibration);
   }
-  const Node models = section.at("models");
-  if (!models.is_sequence() || models.size() == 0) {
-    models.fail("expected a list of class model files (at least one)");
+  if (const auto recognizer = section.find("recognizer")) {
+    out.recognizer = recognizer->as_string();
+    if (out.recognizer != "learned" && out.recognizer != "paper") {
+      recognizer->fail("expected learned or paper, got '" + out.recognizer + "'");
+    }
   }
-  for (std::size_t i = 0; i < models.size(); ++i) {
-    out.model_paths.push_back(path_relative_to_file(models[i]));
+  // Each recognizer's keys, and only its own: a key the chosen one ignores is a mistake.
+  const bool learned = out.recognizer == "learned";
+  for (const char* key : {"detector", "box_stereo", "models", "segmentation", "stereo"}) {
+    const bool learned_key =
+        std::string_view(key) == "detector" || std::string_view(key) == "box_stereo";
+    if (learned != learned_key && section.has(key)) {
+      section.at(key).fail(std::string("not used by the ") + out.recognizer +
+                           " recognizer (recognizer: " + (learned ? "paper" : "learned") +
+                           " uses it)");
+    }
   }
-  out.options = recognition::frame_recognizer_options_from(section);  // segmentation:, stereo:
+  if (learned) {
+    out.detector_path = path_relative_to_file(section.at("detector"));
+    if (const auto box_stereo = section.find("box_stereo")) {
+      out.box_stereo = recognition::box_stereo_options_from(*box_stereo);
+    }
+  } else {
+    const Node models = section.at("models");
+    if (!models.is_sequence() || models.size() == 0) {
+      models.fail("expected a list of class model files (at least one)");
+    }
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      out.model_paths.push_back(path_relative_to_file(models[i]));
+    }
+    out.options = recognition::frame_recognizer_options_from(section);  // segmentation:, stereo:
+  }
   if (const auto debug = section.find("debug_image")) {
     debug->expect_map();
     debug->expect_keys({"enabled", "channel"});

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
 #include "vsl/runtime/config.hpp"
 
 namespace vsl::config {
@@ -23,8 +24,15 @@ struct RecognitionConfig {
   // Paths as given in the file, resolved against the config file's directory.
   std::string head_path;
   std::optional<std::string> calibration_path;  // replaces the head file's own when given
-  std::vector<std::string> model_paths;         // one class model per file (at least one)
-  recognition::FrameRecognizerOptions options;  // segmentation: and stereo:
+  // Which recognizer runs: "learned" (the convolutional detector, learned_stereo_recognizer.hpp)
+  // or "paper" (colour segmentation and Gaussian class models, frame_recognizer.hpp).
+  std::string recognizer = "paper";
+  // learned: the detector's description file and the box stereo's options (box_stereo:).
+  std::string detector_path;
+  recognition::BoxStereoOptions box_stereo;
+  // paper: one class model per file (at least one), and the segmentation: and stereo: options.
+  std::vector<std::string> model_paths;
+  recognition::FrameRecognizerOptions options;
   // An image_t on debug_channel per processed frame: the left image with the blobs outlined and
   // the detections and percepts drawn and labelled. Off by default: it costs a copy, the drawing
   // and 0.9 MB on the bus per frame.

@@ -26,8 +26,11 @@ RecognitionDaemon::RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup s
   const head::HeadKinematics& head = setup_.recognizer->head();
   std::string models;
   for (const std::string& path : config.model_paths) models += (models.empty() ? "" : ", ") + path;
+  const std::string recognizer = config.recognizer == "learned"
+                                     ? "learned detector " + config.detector_path
+                                     : "paper's recognizer, models " + models;
   daemon_.log().info("head ", head.name(), " (", head.calibration().left.width_px, "x",
-                     head.calibration().left.height_px, "), models ", models, "; ",
+                     head.calibration().left.height_px, "), ", recognizer, "; ",
                      daemon_.channels().stereo_frame, " -> ", daemon_.channels().percepts,
                      config.debug_image ? ", debug image on " + config.debug_channel : "");
 }

@@ -5,6 +5,7 @@
 #include "vsl/config/node.hpp"
 #include "vsl/head/head_kinematics.hpp"
 #include "vsl/head/stereo_calibration.hpp"
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
 #include "vsl/recognition/recognizer_factory.hpp"
 
 namespace vsl::recognition_daemon {
@@ -37,6 +38,14 @@ RecognitionSetup load_recognition(const config::Node& root, const runtime::Chann
       section.at("head"), config.head_path, [&](const std::string& path) {
         return head::HeadKinematics::from_config(config::Node::load_file(path), calibration);
       });
+  if (config.recognizer == "learned") {
+    auto detector = std::make_shared<const recognition::LearnedDetector>(
+        load_named<recognition::LearnedDetectorOptions>(
+            section.at("detector"), config.detector_path, recognition::read_learned_detector_file));
+    auto recognizer = std::make_unique<recognition::LearnedStereoRecognizer>(
+        std::move(detector), config.box_stereo, std::move(head));
+    return RecognitionSetup{std::move(config), std::move(recognizer)};
+  }
   std::vector<std::unique_ptr<recognition::ClassRecognizer>> recognizers;
   const config::Node models = section.at("models");
   for (std::size_t i = 0; i < config.model_paths.size(); ++i) {

@@ -1,7 +1,7 @@
 // Everything vsl-recognition loads before it runs: its config, the head (kinematics and
-// calibration) and the class models, assembled into a FrameRecognizer. A bad file or value throws
-// vsl::config::Error (one line, file:line: key: what), so the daemon exits 2 and the
-// shipped-config test finds the same errors.
+// calibration) and the learned detector or the class models, assembled into a recognizer. A bad
+// file or value throws vsl::config::Error (one line, file:line: key: what), so the daemon exits 2
+// and the shipped-config test finds the same errors.
 #pragma once
 
 #include <memory>
@@ -13,7 +13,7 @@ namespace vsl::recognition_daemon {
 
 struct RecognitionSetup {
   RecognitionConfig config;
-  std::unique_ptr<recognition::FrameRecognizer> recognizer;  // never null
+  std::unique_ptr<recognition::StereoRecognizer> recognizer;  // never null
 };
 
 RecognitionSetup load_recognition(const config::Node& root, const runtime::Channels& channels = {});

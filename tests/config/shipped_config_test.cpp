@@ -9,15 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "localizer_config.hpp"
-#include "fusion_setup.hpp"
 #include "driver_setup.hpp"
+#include "fusion_setup.hpp"
+#include "localizer_config.hpp"
 #include "recognition_setup.hpp"
 #include "sim_head_setup.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/head/head_kinematics.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/localization/localizer.hpp"
+#include "vsl/recognition/learned_detector.hpp"
 #include "vsl/recognition/recognizer_factory.hpp"
 #include "vsl/world/world_graph.hpp"
 #include "vsl/world/world_io.hpp"
@@ -55,10 +56,21 @@ void load_sim_head_config(const std::string& path) {
   EXPECT_FALSE(setup.world.objects.empty()) << path;
 }
 
-// Everything vsl-recognition loads before it runs: head, calibration, every class model.
+// Everything vsl-recognition loads before it runs: head, calibration, the learned detector's
+// network or every class model.
 void load_recognition_config(const std::string& path) {
   const auto setup = vsl::recognition_daemon::load_recognition(vsl::config::Node::load_file(path));
-  EXPECT_FALSE(setup.config.model_paths.empty()) << path;
+  EXPECT_TRUE(setup.recognizer != nullptr) << path;
+  EXPECT_TRUE(setup.config.recognizer == "learned" ? !setup.config.detector_path.empty()
+                                                   : !setup.config.model_paths.empty())
+      << path;
+}
+
+// A learned detector's description, with the network it names loaded and checked.
+void load_learned_detector_file(const std::string& path) {
+  const vsl::recognition::LearnedDetector detector(
+      vsl::recognition::read_learned_detector_file(path));
+  EXPECT_FALSE(detector.options().classes.empty()) << path;
 }
 
 // Everything vsl-localizer loads before it runs: its config, the world, the localizer options.
@@ -104,7 +116,9 @@ const std::vector<Loader>& loaders() {
       {"config/heads/", load_head_file},
       {"config/sim_head.yaml", load_sim_head_config},
       {"config/recognition.yaml", load_recognition_config},
+      {"config/recognition_learned.yaml", load_recognition_config},
       {"config/recognition/", load_recognizer_file},
+      {"config/recognition/detector/", load_learned_detector_file},
       {"config/v4l2_stereo.yaml",
        [](const std::string& p) { load_stereo_driver_config(p, "v4l2_stereo"); }},
       {"config/libcamera_stereo.yaml",

@@ -6,6 +6,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -23,12 +24,14 @@
 #include "frame_dump.hpp"
 #include "frame_text.hpp"
 #include "funnel.hpp"
+#include "image_evaluation.hpp"
 #include "json_writer.hpp"
 #include "recognition_config.hpp"
 #include "recognition_views.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/head/head_kinematics.hpp"
 #include "vsl/recognition/frame_recognizer.hpp"
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
 #include "vsl/recognition/recognizer_factory.hpp"
 #include "vsl/render/renderer.hpp"
 #include "vsl/world/world_io.hpp"
@@ -39,6 +42,7 @@ using namespace vsl;
 
 constexpr const char* kUsage =
     R"(usage: vsl-eval-recognition --world FILE [options]
+       vsl-eval-recognition --images DIR --yolo-labels DIR [options]   (see --images --help)
 
 Evaluates recognition (docs/recognition.md): renders noisy stereo frames from seeded robot poses in
 the world (the head looking at the cupboards), runs the recognition pipeline with the settings of
@@ -53,8 +57,11 @@ options:
   --views N             robot poses (default 100)
   --seed S              seed of the poses and the sensor noise (default 2; training uses 1)
   --config FILE         recognition config: head, model files, segmentation and stereo options
-                        (default config/recognition.yaml)
-  --models LIST         comma-separated model files instead of the config's
+                        (default config/recognition.yaml; config/recognition_learned.yaml
+                        runs the learned detector)
+  --models LIST         comma-separated model files instead of the config's (paper's recognizer)
+  --realism LEVEL       the rendered frames' realism: off (default), materials or full
+                        (docs/rendering.md)
   --max-distance M      ground truth: objects within M metres of the left camera (default 4)
   --match-distance M    a percept within M metres of its object is a true positive (default 0.1)
   --dump DIR            write DIR/frame_NNNN.png per frame: the left image with the blobs
@@ -106,6 +113,7 @@ struct Options {
   double match_distance_m = 0.10;
   std::string json_file;
   std::string dump_dir;
+  render::RealismLevel realism = render::RealismLevel::off;
   bool quiet = false;
 };
 
@@ -136,6 +144,17 @@ Options parse(int argc, char** argv) {
         options.model_files.push_back(file);
       }
       if (options.model_files.empty()) usage_error("--models wants a comma-separated list");
+    } else if (arg == "--realism") {
+      const std::string level = value_of(i, arg);
+      if (level == "off") {
+        options.realism = render::RealismLevel::off;
+      } else if (level == "materials") {
+        options.realism = render::RealismLevel::materials;
+      } else if (level == "full") {
+        options.realism = render::RealismLevel::full;
+      } else {
+        usage_error("--realism wants off, materials or full, got '" + level + "'");
+      }
     } else if (arg == "--max-distance") {
       options.max_distance_m = parse_positive(value_of(i, arg), arg);
     } else if (arg == "--match-distance") {
@@ -311,16 +330,24 @@ void write_json(std::ostream& out, const Options& options, const tools::Evaluati
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--images") return tools::run_image_evaluation(argc, argv);
+  }
   try {
     const Options options = parse(argc, argv);
     const tools::RecognitionConfig config = tools::read_recognition_config(options.config_file);
+    const bool learned = config.recognizer == "learned";
+    if (learned && !options.model_files.empty()) {
+      usage_error("--models needs the paper's recognizer; " + options.config_file +
+                  " runs the learned detector");
+    }
     const std::vector<std::string> model_files =
         options.model_files.empty() ? config.model_files : options.model_files;
     const world::WorldModel world = world::load_world(options.world_file);
     const head::HeadKinematics head =
         head::HeadKinematics::load(config.head_file, config.calibration_file);
-    std::vector<std::unique_ptr<recognition::ClassRecognizer>> recognizers =
-        recognition::load_recognizers(model_files);
+    std::vector<std::unique_ptr<recognition::ClassRecognizer>> recognizers;
+    if (!learned) recognizers = recognition::load_recognizers(model_files);
     std::vector<recognition::RecognizerFile> model_contents;  // for the --dump funnel
     for (const std::string& file : model_files) {
       model_contents.push_back(recognition::read_recognizer_file(file));
@@ -328,12 +355,25 @@ int main(int argc, char** argv) {
     tools::EvaluationTally tally;
     tools::FunnelTally funnel;  // with --dump
     std::vector<std::string> types;
-    for (const auto& recognizer : recognizers) {
-      types.push_back(recognizer->type());
-      tally.classes.emplace_back().type = recognizer->type();
+    std::unique_ptr<recognition::StereoRecognizer> recognizer;
+    if (learned) {
+      auto detector = std::make_shared<const recognition::LearnedDetector>(
+          recognition::read_learned_detector_file(config.detector_file));
+      types = detector->options().classes;
+      for (const auto& rule : config.box_stereo.retype_by_height_m) {
+        if (std::find(types.begin(), types.end(), rule.to) == types.end()) types.push_back(rule.to);
+      }
+      recognizer = std::make_unique<recognition::LearnedStereoRecognizer>(std::move(detector),
+                                                                          config.box_stereo, head);
+    } else {
+      for (const auto& r : recognizers) types.push_back(r->type());
+      recognizer = std::make_unique<recognition::FrameRecognizer>(config.options, head,
+                                                                  std::move(recognizers));
     }
-    const recognition::FrameRecognizer recognizer(config.options, head, std::move(recognizers));
-    const render::Renderer renderer(world, tools::simulated_camera_options());
+    for (const std::string& type : types) tally.classes.emplace_back().type = type;
+    render::RenderOptions camera = tools::simulated_camera_options();
+    camera.realism.level = options.realism;
+    const render::Renderer renderer(world, camera);
     const tools::ViewSampler sampler(world, head);
     const tools::GroundTruthRenderer truth_renderer(world, head, types);
     recognition::GroundTruthOptions truth_options;
@@ -348,7 +388,7 @@ int main(int argc, char** argv) {
       recognition::mark_ground_truth_visible(truth, truth_options);
       const auto start = std::chrono::steady_clock::now();
       const recognition::FrameResult result =
-          recognizer.recognize(frame.left.image, frame.right.image, view.joints);
+          recognizer->recognize(frame.left.image, frame.right.image, view.joints);
       const double frame_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count();
@@ -375,17 +415,17 @@ int main(int argc, char** argv) {
           return 1;
         }
         const std::string text_path = path.substr(0, path.size() - 4) + ".txt";
-        if (!tools::write_frame_text(text_path,
-                                     {.world = world,
-                                      .frame = frame,
-                                      .joints = view.joints,
-                                      .head = head,
-                                      .stereo_options = config.options.stereo,
-                                      .result = result,
-                                      .ground_truth = truth,
-                                      .matches = matches,
-                                      .model_contents = model_contents},
-                                     funnel)) {
+        if (!learned && !tools::write_frame_text(text_path,
+                                                 {.world = world,
+                                                  .frame = frame,
+                                                  .joints = view.joints,
+                                                  .head = head,
+                                                  .stereo_options = config.options.stereo,
+                                                  .result = result,
+                                                  .ground_truth = truth,
+                                                  .matches = matches,
+                                                  .model_contents = model_contents},
+                                                 funnel)) {
           std::cerr << "vsl-eval-recognition: cannot write " << text_path << "\n";
           return 1;
         }

@@ -1,4 +1,5 @@
-// Reads the parts of config/recognition.yaml the recognition tools need (recognition_config.hpp).
+// Reads the parts of config/recognition.yaml the recognition tools need
+// (recognition_config.hpp).
 #include "recognition_config.hpp"
 
 #include <filesystem>
@@ -24,6 +25,14 @@ RecognitionConfig read_recognition_config(const std::string& path) {
   out.head_file = resolve(section.at("head"));
   if (const auto calibration = section.find("calibration")) {
     out.calibration_file = resolve(*calibration);
+  }
+  if (const auto recognizer = section.find("recognizer")) out.recognizer = recognizer->as_string();
+  if (out.recognizer == "learned") {
+    out.detector_file = resolve(section.at("detector"));
+    if (const auto box_stereo = section.find("box_stereo")) {
+      out.box_stereo = recognition::box_stereo_options_from(*box_stereo);
+    }
+    return out;
   }
   const config::Node models = section.at("models");
   if (!models.is_sequence() || models.size() == 0) models.fail("expected a list of model files");

@@ -1,4 +1,5 @@
 #include "frame_processor.hpp"
+#include "vsl/recognition/frame_recognizer.hpp"
 
 #include <gtest/gtest.h>
 

@@ -82,5 +82,42 @@ TEST(RecognitionConfigFile, BadValuesAreOneLineWithFileLineAndKey) {
             std::string::npos);
 }
 
+TEST(RecognitionConfigFile, TheLearnedRecognizerTakesItsDetectorAndBoxStereo) {
+  const RecognitionConfig config = read(
+      "recognition:\n  head: h.yaml\n  recognizer: learned\n  detector: d/door_handle.yaml\n"
+      "  box_stereo: {min_correlation: 0.7, height_range_m: {door: [0.4, 2.2]}}\n");
+  EXPECT_EQ(config.recognizer, "learned");
+  EXPECT_EQ(config.detector_path, "dir/d/door_handle.yaml");
+  EXPECT_EQ(config.box_stereo.min_correlation, 0.7);
+  ASSERT_EQ(config.box_stereo.height_range_m.size(), 1u);
+  EXPECT_EQ(config.box_stereo.height_range_m[0].min_m, 0.4);
+  EXPECT_TRUE(config.model_paths.empty());
+  EXPECT_EQ(read("recognition: {head: h.yaml, models: [m.yaml]}\n").recognizer, "paper");
+}
+
+TEST(RecognitionConfigFile, EachRecognizersKeysOnly) {
+  EXPECT_EQ(error_of("recognition:\n  head: h.yaml\n  recognizer: neural\n"),
+            "dir/recognition.yaml:3: recognition.recognizer: expected learned or paper, got "
+            "'neural'");
+  EXPECT_EQ(error_of("recognition:\n  head: h.yaml\n  recognizer: learned\n  detector: d.yaml\n"
+                     "  models: [m.yaml]\n"),
+            "dir/recognition.yaml:5: recognition.models: not used by the learned recognizer "
+            "(recognizer: paper uses it)");
+  EXPECT_EQ(error_of("recognition:\n  head: h.yaml\n  models: [m.yaml]\n  detector: d.yaml\n"),
+            "dir/recognition.yaml:4: recognition.detector: not used by the paper recognizer "
+            "(recognizer: learned uses it)");
+  EXPECT_NE(error_of("recognition:\n  head: h.yaml\n  recognizer: learned\n")
+                .find("recognition.detector"),
+            std::string::npos);
+  EXPECT_EQ(error_of("recognition:\n  head: h.yaml\n  recognizer: learned\n  detector: d.yaml\n"
+                     "  box_stereo: {min_depth_m: 3, max_depth_m: 2}\n"),
+            "dir/recognition.yaml:5: recognition.box_stereo.max_depth_m: min_depth_m must be below "
+            "max_depth_m");
+  EXPECT_NE(error_of("recognition:\n  head: h.yaml\n  recognizer: learned\n  detector: d.yaml\n"
+                     "  box_stereo: {snap: 1}\n")
+                .find("dir/recognition.yaml:5: recognition.box_stereo.snap: unknown key"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace vsl::recognition_daemon

@@ -19,40 +19,13 @@
 #include "vsl/recognition/detection.hpp"
 #include "vsl/recognition/segmentation.hpp"
 #include "vsl/recognition/stereo_match.hpp"
+#include "vsl/recognition/stereo_recognizer.hpp"
 
 namespace vsl::config {
 class Node;
 }
 
 namespace vsl::recognition {
-
-// One recognized object of one stereo frame.
-struct FramePercept {
-  std::string type;
-  Eigen::Vector3d ego_position_m = Eigen::Vector3d::Zero();  // reference point, ego frame
-  Eigen::Matrix3d ego_covariance_m2 = Eigen::Matrix3d::Zero();
-  Eigen::Vector2d left_px = Eigen::Vector2d::Zero();   // reference point, raw left image
-  Eigen::Vector2d right_px = Eigen::Vector2d::Zero();  // reference point, raw right image
-  // 0 .. 1: sqrt(c_left c_right) of the two detections (stereo_match.hpp says why); for a
-  // single-view door, its detection's confidence times its lower side score.
-  float confidence = 0.0f;
-  // Indices into FrameResult::left_detections / right_detections; -1 in the image a single-view
-  // door has no detection in (StereoMatchOptions::min_single_view_correlation).
-  int left_detection = -1;
-  int right_detection = -1;
-};
-
-struct FrameResult {
-  Eigen::Isometry3d ego_T_left_camera = Eigen::Isometry3d::Identity();  // at capture
-  std::vector<FramePercept> percepts;
-  // Intermediate results, for the debug image, evaluation and training.
-  std::vector<Blob> left_blobs, right_blobs;
-  std::vector<Detection> left_detections, right_detections;
-  // Wall time of each stage, milliseconds (both images together).
-  double segmentation_ms = 0.0;
-  double classification_ms = 0.0;
-  double stereo_ms = 0.0;
-};
 
 struct FrameRecognizerOptions {
   SegmentationOptions segmentation;
@@ -65,7 +38,7 @@ struct FrameRecognizerOptions {
 // settings) belong to its reader, which checks them with expect_keys.
 FrameRecognizerOptions frame_recognizer_options_from(const config::Node& recognition_section);
 
-class FrameRecognizer {
+class FrameRecognizer final : public StereoRecognizer {
  public:
   // `head` carries the stereo calibration (intrinsics of both cameras) and the kinematics;
   // `recognizers` one per class (at least one). Throws std::invalid_argument when empty.
@@ -75,9 +48,9 @@ class FrameRecognizer {
   // Recognizes one frame: raw images (CV_8UC3 BGR, the calibration's size; throws
   // std::invalid_argument otherwise) and the joint state at capture time. Const, thread-safe.
   FrameResult recognize(const cv::Mat& left_bgr, const cv::Mat& right_bgr,
-                        const head::JointState& joints_at_capture) const;
+                        const head::JointState& joints_at_capture) const override;
 
-  const head::HeadKinematics& head() const { return head_; }
+  const head::HeadKinematics& head() const override { return head_; }
   const FrameRecognizerOptions& options() const { return options_; }
 
  private:

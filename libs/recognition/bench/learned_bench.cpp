@@ -1,0 +1,61 @@
+// BM_LearnedDetector: the shipped door and handle detector (config/recognition/detector) on one
+// 640x480 image of the kitchen, on one core (OpenCV's threads set to 1); the figure to reach is
+// 15 ms. BM_LearnedStereoRecognizer: the whole learned recognizer per stereo pair (both images
+// detected, boxes paired, disparities correlated, triangulated, registered), one core.
+// Counters: the stages' mean wall times and the percepts found.
+//   taskset -c 0 build/libs/recognition/vsl_recognition_bench --benchmark_filter=BM_Learned
+#include <benchmark/benchmark.h>
+#include <opencv2/core/utility.hpp>
+
+#include <memory>
+#include <string>
+
+#include "support/stereo_views.hpp"
+#include "vsl/recognition/learned_detector.hpp"
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+const std::string kSource = VSL_SOURCE_DIR;
+const std::string kDetector = kSource + "/config/recognition/detector/door_handle.yaml";
+
+void BM_LearnedDetector(benchmark::State& state) {
+  cv::setNumThreads(1);
+  const test::StereoView view = test::StereoViews::kitchen().fixed_view(0, 1);
+  const LearnedDetector detector(read_learned_detector_file(kDetector));
+  std::size_t boxes = 0;
+  for (auto _ : state) {
+    const auto found = detector.detect(view.left.image);
+    boxes = found.size();
+    benchmark::DoNotOptimize(found.data());
+  }
+  state.counters["boxes"] = static_cast<double>(boxes);
+}
+BENCHMARK(BM_LearnedDetector)->Unit(benchmark::kMillisecond);
+
+void BM_LearnedStereoRecognizer(benchmark::State& state) {
+  cv::setNumThreads(1);
+  const test::StereoViews& views = test::StereoViews::kitchen();
+  const test::StereoView view = views.fixed_view(static_cast<int>(state.range(0)), 1);
+  const LearnedStereoRecognizer recognizer(
+      std::make_shared<const LearnedDetector>(read_learned_detector_file(kDetector)),
+      BoxStereoOptions{}, views.head());
+  double detection_ms = 0.0, stereo_ms = 0.0;
+  std::size_t percepts = 0;
+  for (auto _ : state) {
+    const FrameResult result = recognizer.recognize(view.left.image, view.right.image, view.joints);
+    detection_ms += result.classification_ms;
+    stereo_ms += result.stereo_ms;
+    percepts = result.percepts.size();
+    benchmark::DoNotOptimize(result.percepts.data());
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["detection_ms"] = detection_ms / n;
+  state.counters["stereo_ms"] = stereo_ms / n;
+  state.counters["percepts"] = static_cast<double>(percepts);
+}
+BENCHMARK(BM_LearnedStereoRecognizer)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace vsl::recognition

@@ -1,0 +1,90 @@
+// The learned door and handle detector: a compact convolutional network (trained offline by
+// tools/vsl-train-detector with PyTorch, exported to ONNX) run through OpenCV's dnn module. It
+// finds boxes of doors (room, cabinet and fridge doors, drawer fronts) and handles in one raw
+// camera image, where the paper's colour segmentation finds nothing on real photographs.
+//
+// The model's description file (config/recognition/detector/door_handle.yaml):
+//
+//   detector:
+//     model: door_handle.onnx       # relative to this file
+//     input_width: 384              # the network input; an image is scaled to fit, aspect kept,
+//     input_height: 288             #   and padded right and below
+//     stride: 4                     # input pixels per output cell
+//     classes: [door, handle]       # output channels, in order; the world-model types
+//     min_confidence: {door: 0.3, handle: 0.3}
+//   provenance: {...}               # free: how the model was made (data, seed, command, figures)
+//
+// Errors in the file are config::Error, one line "file:line: key: what".
+#pragma once
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cv {
+class Mat;
+}
+namespace vsl::config {
+class Node;
+}
+
+namespace vsl::recognition {
+
+struct LearnedDetectorOptions {
+  std::string model_path;  // the ONNX file, resolved
+  int input_width = 384;
+  int input_height = 288;
+  int stride = 4;
+  std::vector<std::string> classes;    // the network's output classes, in order
+  std::vector<double> min_confidence;  // per class, 0 .. 1: detections below are dropped
+  double nms_iou = 0.6;                // same-class boxes overlapping more are one object
+  int max_detections_per_class = 100;
+};
+
+LearnedDetectorOptions learned_detector_options_from(const config::Node& root);
+LearnedDetectorOptions read_learned_detector_file(const std::string& path);
+
+// One detected object in a raw image. Box corners in continuous image coordinates, pixels:
+// pixel (u, v) covers [u, u + 1) x [v, v + 1), so a box of a whole W x H image is (0, 0)-(W, H).
+struct BoxDetection {
+  std::string type;  // world-model type: the class's name
+  int class_index = 0;
+  float confidence = 0.0f;  // 0 .. 1, the network's centre-ness at the box's peak
+  Eigen::Vector2d min_px = Eigen::Vector2d::Zero();
+  Eigen::Vector2d max_px = Eigen::Vector2d::Zero();
+
+  Eigen::Vector2d centre_px() const { return 0.5 * (min_px + max_px); }
+  double width_px() const { return max_px.x() - min_px.x(); }
+  double height_px() const { return max_px.y() - min_px.y(); }
+};
+
+// Intersection over union of two boxes (0 when either is empty).
+double box_iou(const BoxDetection& a, const BoxDetection& b);
+
+class LearnedDetector {
+ public:
+  // Loads the network; throws config::Error "<model>: what" when OpenCV cannot read it or its
+  // output does not have classes + 4 channels at the stated stride.
+  explicit LearnedDetector(LearnedDetectorOptions options);
+  ~LearnedDetector();
+  LearnedDetector(const LearnedDetector&) = delete;
+  LearnedDetector& operator=(const LearnedDetector&) = delete;
+
+  // The objects in one image (CV_8UC3 BGR, any size; throws std::invalid_argument otherwise)
+  // whose confidence reaches their class's min_confidence, strongest first within a class.
+  // Thread-safe: calls are serialized (the network keeps its buffers between calls).
+  std::vector<BoxDetection> detect(const cv::Mat& bgr) const;
+  // The same with one threshold for every class (evaluation sweeps the whole curve).
+  std::vector<BoxDetection> detect(const cv::Mat& bgr, double min_confidence) const;
+
+  const LearnedDetectorOptions& options() const { return options_; }
+
+ private:
+  struct Network;
+  LearnedDetectorOptions options_;
+  std::unique_ptr<Network> network_;
+};
+
+}  // namespace vsl::recognition

@@ -1,0 +1,97 @@
+// The learned recognizer's stereo frame (StereoRecognizer): the convolutional detector
+// (learned_detector.hpp) finds boxes of doors and handles in both raw images; boxes of one class
+// are paired across the images by the epipolar constraint, the disparity range and their sizes;
+// each pair's disparity is then measured on the pixels, not on the boxes (a box's side is only
+// good to a few pixels, a disparity must be good to a fraction of one): the left box's contents
+// are found again in the right image by normalized cross-correlation along the epipolar line. A
+// door's reference point, the centre of its front face, comes from its outline: each vertical
+// side of the box is correlated on its own, the four corners are triangulated at their sides'
+// disparities and the centre is their mean (a door seen at an angle is nearer on one side, and
+// the box's centre is not its face's). A handle's is its bar's middle. Then, as for the paper's
+// recognizer, a 3x3 covariance from the pixel noise and registration into the ego frame through
+// the head kinematics at capture time (paper §2.1.1).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vsl/recognition/learned_detector.hpp"
+#include "vsl/recognition/stereo_recognizer.hpp"
+
+namespace vsl::config {
+class Node;
+}
+
+namespace vsl::recognition {
+
+struct BoxStereoOptions {
+  // A right box's centre may lie this far from the left box centre's epipolar line, pixels,
+  // plus this fraction of the box's height (a box's centre is only as good as its sides).
+  double max_epipolar_distance_px = 4.0;
+  double epipolar_box_fraction = 0.1;
+  double min_depth_m = 0.3;  // disparity range, as depths along the left optical axis
+  double max_depth_m = 6.0;
+  // Larger over smaller of the two boxes' widths, and of their heights.
+  double max_size_ratio = 1.6;
+  // Boxes nearer than this to the image border are cut by it: their centre is not the object's,
+  // and they are not used.
+  double border_margin_px = 8.0;
+  // Each box side moves onto the strongest image edge within +-max(snap_min_band_px,
+  // snap_band_fraction * the box's size) of it, when that edge is distinct (box_stereo.hpp);
+  // 0 and 0: boxes as detected.
+  double snap_band_fraction = 0.08;
+  double snap_min_band_px = 2.0;
+  // The correlation (normalized, -1 .. 1) the left box's pixels must reach in the right image.
+  double min_correlation = 0.5;
+  // Templates larger than this many pixels are correlated at a reduced scale.
+  double max_template_px = 3000.0;
+  double pixel_sigma_px = 1.0;  // noise of a reference pixel, each image coordinate
+  // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
+  std::vector<std::string> rectangle_types{"door"};
+  // Each class's reference point lies this far behind the visible surface along the viewing
+  // ray, metres (a handle's is its bar's axis). Classes not listed: 0.
+  std::vector<std::pair<std::string, double>> reference_depth_offset_m{{"handle", 0.006}};
+  // Optional per class: the physical range of a rectangle's height and width (doors: a drawer
+  // front is lower than any door), or of a box's longer side (handles), metres.
+  struct Range {
+    std::string type;
+    double min_m = 0.0;
+    double max_m = 0.0;
+  };
+  std::vector<Range> height_range_m{{"door", 0.5, 2.5}};
+  // A rectangle whose height lies in [min_m, max_m] is reported as another type: the detector's
+  // one door class holds drawer fronts, which the world model types on their own and which are
+  // lower than any door (a room's door 2 m, a wall cupboard's 0.5 m, a drawer front 0.1-0.45 m).
+  struct Retype {
+    std::string from;
+    std::string to;
+    double min_m = 0.0;
+    double max_m = 0.0;
+  };
+  std::vector<Retype> retype_by_height_m;  // none by default
+  std::vector<Range> width_range_m{{"door", 0.2, 1.4}};
+  std::vector<Range> length_range_m{{"handle", 0.02, 0.6}};
+};
+
+// Reads a `box_stereo:` section; every key optional and validated (config::Error).
+BoxStereoOptions box_stereo_options_from(const config::Node& section);
+
+class LearnedStereoRecognizer final : public StereoRecognizer {
+ public:
+  LearnedStereoRecognizer(std::shared_ptr<const LearnedDetector> detector, BoxStereoOptions options,
+                          head::HeadKinematics head);
+
+  FrameResult recognize(const cv::Mat& left_bgr, const cv::Mat& right_bgr,
+                        const head::JointState& joints_at_capture) const override;
+  const head::HeadKinematics& head() const override { return head_; }
+  const BoxStereoOptions& options() const { return options_; }
+
+ private:
+  std::shared_ptr<const LearnedDetector> detector_;
+  BoxStereoOptions options_;
+  head::HeadKinematics head_;
+};
+
+}  // namespace vsl::recognition

@@ -1,0 +1,69 @@
+// The learned recognizer's stereo steps (learned_stereo_recognizer.hpp): pairing boxes across the
+// images, and finding a region of the left image again in the right one. Internal to
+// vsl_recognition.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <vector>
+
+#include "epipolar.hpp"
+#include "triangulation.hpp"
+#include "vsl/recognition/learned_detector.hpp"
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
+
+namespace cv {
+class Mat;
+}
+
+namespace vsl::recognition::detail {
+
+struct BoxPair {
+  int left = -1;
+  int right = -1;
+};
+
+// Pairs boxes of one class across the images, one to one: a right box is admissible for a left
+// box when its centre lies within max_epipolar_distance_px + epipolar_box_fraction * height of
+// the left centre's epipolar line, the centres triangulate to a depth in the disparity range, and
+// the widths and heights differ by at most max_size_ratio. Admissible pairs are taken greedily,
+// the lowest cost first: epipolar distance over box height plus the two log size ratios. Boxes
+// within border_margin_px of the border take no part.
+std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
+                                const std::vector<BoxDetection>& right,
+                                const head::CameraIntrinsics& left_intrinsics,
+                                const head::CameraIntrinsics& right_intrinsics,
+                                const EpipolarGeometry& epipolar, const Triangulator& triangulator,
+                                const BoxStereoOptions& options);
+
+// Whether a box is at least `margin_px` from every border of a width x height image.
+bool inside_image(const BoxDetection& box, int width, int height, double margin_px);
+
+// Where the left image's region (continuous pixel coordinates, min and max corners) is found in
+// the right image: the shift (right minus left, pixels) maximizing the normalized
+// cross-correlation, searched within +-search_half_px of predicted_shift_px, to a tenth of a pixel
+// by a parabola through the peak and its neighbours. Regions larger than max_template_px pixels
+// are correlated at a reduced scale (a whole factor). nullopt when the region or the search window
+// leaves an image or the region has no texture.
+struct RegionMatch {
+  Eigen::Vector2d shift_px = Eigen::Vector2d::Zero();
+  double correlation = 0.0;
+};
+std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const cv::Mat& right_grey,
+                                               const Eigen::Vector2d& min_px,
+                                               const Eigen::Vector2d& max_px,
+                                               const Eigen::Vector2d& predicted_shift_px,
+                                               const Eigen::Vector2d& search_half_px,
+                                               double max_template_px);
+
+// The box's sides moved onto the image's outline of the object: each side to the strongest edge
+// across it (mean absolute Sobel gradient along the side's middle 60 %) within
+// +-max(min_band_px, band_fraction * the box's size across the side), to a tenth of a pixel by a
+// parabola; a side stays where it is when that edge is not distinct (below 1.3 times the band's
+// median). A detector's boxes are good to a few pixels, the outline to a fraction of one.
+// `grey`: the image the box was found in (CV_8UC1).
+BoxDetection snap_to_outline(const cv::Mat& grey, const BoxDetection& box, double band_fraction,
+                             double min_band_px);
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,82 @@
+// The `box_stereo:` section of a recognition config (learned_stereo_recognizer.hpp).
+#include <string>
+
+#include "vsl/config/node.hpp"
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+// {type: [min_m, max_m], ...} replacing the defaults.
+std::vector<BoxStereoOptions::Range> ranges_from(const config::Node& ranges) {
+  ranges.expect_map();
+  std::vector<BoxStereoOptions::Range> out;
+  for (const std::string& type : ranges.keys()) {
+    const config::Node range = ranges.at(type);
+    const auto bounds = range.as_array<2>();
+    if (!(bounds[0] >= 0.0 && bounds[0] < bounds[1] && bounds[1] <= 1000.0)) {
+      range.fail("expected [min_m, max_m] with 0 <= min_m < max_m <= 1000");
+    }
+    out.push_back({type, bounds[0], bounds[1]});
+  }
+  return out;
+}
+
+}  // namespace
+
+BoxStereoOptions box_stereo_options_from(const config::Node& section) {
+  section.expect_keys({"max_epipolar_distance_px", "epipolar_box_fraction", "min_depth_m",
+                       "max_depth_m", "max_size_ratio", "border_margin_px", "snap_band_fraction",
+                       "snap_min_band_px", "min_correlation", "max_template_px", "pixel_sigma_px",
+                       "rectangle_types", "reference_depth_offset_m", "height_range_m",
+                       "retype_by_height_m", "width_range_m", "length_range_m"});
+  BoxStereoOptions out;
+  const auto number = [&](const char* key, double& value, double min, double max) {
+    if (const auto v = section.find(key)) value = v->as_double_in(min, max);
+  };
+  number("max_epipolar_distance_px", out.max_epipolar_distance_px, 0.0, 1000.0);
+  number("epipolar_box_fraction", out.epipolar_box_fraction, 0.0, 1.0);
+  number("min_depth_m", out.min_depth_m, 0.01, 1000.0);
+  number("max_depth_m", out.max_depth_m, 0.01, 1000.0);
+  if (out.min_depth_m >= out.max_depth_m) {
+    section.at(section.has("max_depth_m") ? "max_depth_m" : "min_depth_m")
+        .fail("min_depth_m must be below max_depth_m");
+  }
+  number("max_size_ratio", out.max_size_ratio, 1.0, 100.0);
+  number("border_margin_px", out.border_margin_px, 0.0, 1000.0);
+  number("snap_band_fraction", out.snap_band_fraction, 0.0, 0.5);
+  number("snap_min_band_px", out.snap_min_band_px, 0.0, 100.0);
+  number("min_correlation", out.min_correlation, -1.0, 1.0);
+  number("max_template_px", out.max_template_px, 16.0, 1e7);
+  number("pixel_sigma_px", out.pixel_sigma_px, 1e-3, 100.0);
+  if (const auto types = section.find("rectangle_types")) {
+    if (!types->is_sequence()) types->fail("expected a list of object types, e.g. [door]");
+    out.rectangle_types.clear();
+    for (std::size_t i = 0; i < types->size(); ++i) {
+      out.rectangle_types.push_back((*types)[i].as_string());
+    }
+  }
+  if (const auto offsets = section.find("reference_depth_offset_m")) {
+    offsets->expect_map();
+    out.reference_depth_offset_m.clear();
+    for (const std::string& type : offsets->keys()) {
+      out.reference_depth_offset_m.emplace_back(type, offsets->at(type).as_double_in(-1.0, 1.0));
+    }
+  }
+  if (const auto r = section.find("height_range_m")) out.height_range_m = ranges_from(*r);
+  if (const auto r = section.find("width_range_m")) out.width_range_m = ranges_from(*r);
+  // {door: {drawer_front: [0.1, 0.45]}}: from type -> {to type: [min_m, max_m]}.
+  if (const auto retype = section.find("retype_by_height_m")) {
+    retype->expect_map();
+    out.retype_by_height_m.clear();
+    for (const std::string& from : retype->keys()) {
+      for (const auto& range : ranges_from(retype->at(from))) {
+        out.retype_by_height_m.push_back({from, range.type, range.min_m, range.max_m});
+      }
+    }
+  }
+  if (const auto r = section.find("length_range_m")) out.length_range_m = ranges_from(*r);
+  return out;
+}
+
+}  // namespace vsl::recognition

@@ -1,0 +1,308 @@
+#include "vsl/recognition/learned_stereo_recognizer.hpp"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "box_stereo.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsed_ms(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double, std::milli>(to - from).count();
+}
+
+void check_image(const cv::Mat& image, const head::CameraIntrinsics& intrinsics,
+                 const char* which) {
+  if (image.type() != CV_8UC3 || image.cols != intrinsics.width_px ||
+      image.rows != intrinsics.height_px) {
+    throw std::invalid_argument(std::string("LearnedStereoRecognizer::recognize: the ") + which +
+                                " image must be CV_8UC3 of " + std::to_string(intrinsics.width_px) +
+                                "x" + std::to_string(intrinsics.height_px) +
+                                " (the calibration's size)");
+  }
+}
+
+// A box as the pipeline's Detection (raw pixel-centre coordinates: pixel (u, v)'s centre at
+// (u, v), so a box's continuous corners move by half a pixel).
+Detection as_detection(const BoxDetection& box) {
+  const Eigen::Vector2d half(0.5, 0.5);
+  const Eigen::Vector2d lo = box.min_px - half;
+  const Eigen::Vector2d hi = box.max_px - half;
+  Detection d;
+  d.type = box.type;
+  d.reference_px = box.centre_px() - half;
+  d.area_px = box.width_px() * box.height_px();
+  const bool tall = box.height_px() >= box.width_px();
+  d.major_axis_angle_rad = tall ? 0.5 * std::numbers::pi : 0.0;
+  d.major_extent_px = std::max(box.width_px(), box.height_px());
+  d.minor_extent_px = std::min(box.width_px(), box.height_px());
+  d.height_px = box.height_px();
+  d.corners_px = {lo, Eigen::Vector2d(hi.x(), lo.y()), hi, Eigen::Vector2d(lo.x(), hi.y())};
+  d.confidence = box.confidence;
+  return d;
+}
+
+template <class List>
+const BoxStereoOptions::Range* range_of(const List& ranges, const std::string& type) {
+  for (const auto& range : ranges) {
+    if (range.type == type) return &range;
+  }
+  return nullptr;
+}
+
+bool in_range(const std::vector<BoxStereoOptions::Range>& ranges, const std::string& type,
+              double value) {
+  const BoxStereoOptions::Range* range = range_of(ranges, type);
+  return range == nullptr || (value >= range->min_m && value <= range->max_m);
+}
+
+double depth_offset_of(const BoxStereoOptions& options, const std::string& type) {
+  for (const auto& [name, offset] : options.reference_depth_offset_m) {
+    if (name == type) return offset;
+  }
+  return 0.0;
+}
+
+// One matched pair of boxes placed in the left camera frame.
+struct Placed {
+  std::string type;  // the detection's, or what its size retypes it to
+  detail::Triangulation triangulation;
+  Eigen::Vector2d left_px = Eigen::Vector2d::Zero();
+  Eigen::Vector2d right_px = Eigen::Vector2d::Zero();
+};
+
+class PairPlacer {
+ public:
+  PairPlacer(const head::StereoCalibration& calibration, const Eigen::Isometry3d& left_T_right,
+             const cv::Mat& left_grey, const cv::Mat& right_grey, const BoxStereoOptions& options)
+      : calibration_(calibration),
+        triangulator_(calibration.left, calibration.right, left_T_right),
+        left_grey_(left_grey),
+        right_grey_(right_grey),
+        options_(options) {}
+
+  const detail::Triangulator& triangulator() const { return triangulator_; }
+
+  // `left_boxes`: every box of the left image (a door's side strips leave out its handle's).
+  std::optional<Placed> place(const BoxDetection& left, const BoxDetection& right,
+                              const std::vector<BoxDetection>& left_boxes) const {
+    const Eigen::Vector2d margin(2.0, 2.0);
+    const Eigen::Vector2d predicted = right.centre_px() - left.centre_px();
+    const double width = std::max(left.width_px(), right.width_px());
+    const Eigen::Vector2d search(0.2 * width + 4.0, 0.1 * left.height_px() + 3.0);
+    const auto whole = detail::find_in_right_image(left_grey_, right_grey_, left.min_px - margin,
+                                                   left.max_px + margin, predicted, search,
+                                                   options_.max_template_px);
+    if (!whole || whole->correlation < options_.min_correlation) return std::nullopt;
+    const bool rectangle =
+        std::find(options_.rectangle_types.begin(), options_.rectangle_types.end(), left.type) !=
+        options_.rectangle_types.end();
+    return rectangle ? place_rectangle(left, whole->shift_px, left_boxes)
+                     : place_point(left, whole->shift_px);
+  }
+
+ private:
+  // Raw pixel-centre coordinates of a continuous image point.
+  static Eigen::Vector2d raw(const Eigen::Vector2d& continuous_px) {
+    return continuous_px - Eigen::Vector2d(0.5, 0.5);
+  }
+
+  std::optional<detail::Triangulation> triangulate(const Eigen::Vector2d& left_raw,
+                                                   const Eigen::Vector2d& right_raw,
+                                                   double offset_m) const {
+    return triangulator_.triangulate(detail::undistort({left_raw}, calibration_.left).front(),
+                                     detail::undistort({right_raw}, calibration_.right).front(),
+                                     options_.pixel_sigma_px, offset_m);
+  }
+
+  std::optional<Placed> place_point(const BoxDetection& box, const Eigen::Vector2d& shift) const {
+    Placed placed;
+    placed.type = box.type;
+    placed.left_px = raw(box.centre_px());
+    placed.right_px = placed.left_px + shift;
+    const auto t =
+        triangulate(placed.left_px, placed.right_px, depth_offset_of(options_, box.type));
+    if (!t) return std::nullopt;
+    const double depth = t->left_camera_position_m.z();
+    if (depth < options_.min_depth_m || depth > options_.max_depth_m) return std::nullopt;
+    const double length_m =
+        std::max(box.width_px(), box.height_px()) * depth / calibration_.left.fx_px;
+    if (!in_range(options_.length_range_m, box.type, length_m)) return std::nullopt;
+    placed.triangulation = *t;
+    return placed;
+  }
+
+  // A door's front face: each vertical side's strip of the box correlated on its own (near the
+  // whole box's shift), the four corners triangulated at their side's shift, the centre the
+  // corners' mean (for a rectangle, exactly its centre), height and width the sides' mean length
+  // and the distance between the sides' middles.
+  // A handle stands off the door by a few centimetres: inside a side's strip its texture, at
+  // its own disparity, would pull the side's. The strip keeps the longest run of rows clear of
+  // the other classes' boxes across it (at least 30 % of the strip, else the whole box's shift).
+  std::optional<Placed> place_rectangle(const BoxDetection& box, const Eigen::Vector2d& whole_shift,
+                                        const std::vector<BoxDetection>& left_boxes) const {
+    const double strip = std::max(8.0, 0.15 * box.width_px());
+    const double top = box.min_px.y() + 0.1 * box.height_px();
+    const double bottom = box.max_px.y() - 0.1 * box.height_px();
+    const Eigen::Vector2d search(2.0 + 0.03 * box.width_px(), 1.5);
+    const auto side_shift = [&](double from_u, double to_u) {
+      std::vector<std::pair<double, double>> clear{{top, bottom}};
+      for (const BoxDetection& other : left_boxes) {
+        if (other.type == box.type || other.max_px.x() < from_u || other.min_px.x() > to_u)
+          continue;
+        std::vector<std::pair<double, double>> next;
+        for (const auto& [a, b] : clear) {
+          const double cut_from = other.min_px.y() - 3.0;
+          const double cut_to = other.max_px.y() + 3.0;
+          if (cut_to <= a || cut_from >= b) {
+            next.emplace_back(a, b);
+            continue;
+          }
+          if (cut_from > a) next.emplace_back(a, cut_from);
+          if (cut_to < b) next.emplace_back(cut_to, b);
+        }
+        clear = std::move(next);
+      }
+      const auto longest = std::max_element(
+          clear.begin(), clear.end(),
+          [](const auto& x, const auto& y) { return x.second - x.first < y.second - y.first; });
+      if (longest == clear.end() || longest->second - longest->first < 0.3 * (bottom - top)) {
+        return whole_shift;
+      }
+      const auto m = detail::find_in_right_image(
+          left_grey_, right_grey_, Eigen::Vector2d(from_u, longest->first),
+          Eigen::Vector2d(to_u, longest->second), whole_shift, search, options_.max_template_px);
+      return m && m->correlation >= options_.min_correlation ? m->shift_px : whole_shift;
+    };
+    const std::array<Eigen::Vector2d, 2> shifts{
+        side_shift(box.min_px.x() - 4.0, box.min_px.x() + strip),
+        side_shift(box.max_px.x() - strip, box.max_px.x() + 4.0)};
+    // Corners: top left, bottom left (left side), top right, bottom right (right side).
+    const std::array<Eigen::Vector2d, 4> corners{
+        raw(box.min_px), raw(Eigen::Vector2d(box.min_px.x(), box.max_px.y())),
+        raw(Eigen::Vector2d(box.max_px.x(), box.min_px.y())), raw(box.max_px)};
+    std::array<Eigen::Vector3d, 4> ends;
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d& shift = shifts[static_cast<std::size_t>(k / 2)];
+      const auto left_ideal =
+          detail::undistort({corners[static_cast<std::size_t>(k)]}, calibration_.left);
+      const auto right_ideal =
+          detail::undistort({corners[static_cast<std::size_t>(k)] + shift}, calibration_.right);
+      const auto point =
+          triangulator_.point(left_ideal.front().ideal_px, right_ideal.front().ideal_px);
+      if (!point) return std::nullopt;
+      ends[static_cast<std::size_t>(k)] = *point;
+    }
+    const Eigen::Vector3d centre = 0.25 * (ends[0] + ends[1] + ends[2] + ends[3]);
+    const double height = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
+    const double width = (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
+    std::string type = box.type;
+    for (const BoxStereoOptions::Retype& rule : options_.retype_by_height_m) {
+      if (rule.from == box.type && height >= rule.min_m && height <= rule.max_m) type = rule.to;
+    }
+    if (centre.z() < options_.min_depth_m || centre.z() > options_.max_depth_m ||
+        (type == box.type && !in_range(options_.height_range_m, box.type, height)) ||
+        !in_range(options_.width_range_m, box.type, width)) {
+      return std::nullopt;
+    }
+    Placed placed;
+    placed.type = type;
+    placed.left_px = raw(box.centre_px());
+    placed.right_px = placed.left_px + 0.5 * (shifts[0] + shifts[1]);
+    // The covariance of the centre as the triangulation of one reference pixel pair; the
+    // position the corners'.
+    const auto t = triangulate(placed.left_px, placed.right_px, 0.0);
+    if (!t) return std::nullopt;
+    placed.triangulation = *t;
+    const double offset = depth_offset_of(options_, box.type);
+    placed.triangulation.left_camera_position_m = centre + offset * centre.normalized();
+    return placed;
+  }
+
+  const head::StereoCalibration& calibration_;
+  detail::Triangulator triangulator_;
+  const cv::Mat& left_grey_;
+  const cv::Mat& right_grey_;
+  const BoxStereoOptions& options_;
+};
+
+}  // namespace
+
+LearnedStereoRecognizer::LearnedStereoRecognizer(std::shared_ptr<const LearnedDetector> detector,
+                                                 BoxStereoOptions options,
+                                                 head::HeadKinematics head)
+    : detector_(std::move(detector)), options_(std::move(options)), head_(std::move(head)) {
+  if (!detector_) throw std::invalid_argument("LearnedStereoRecognizer: no detector");
+}
+
+FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& right_bgr,
+                                               const head::JointState& joints_at_capture) const {
+  const head::StereoCalibration& calibration = head_.calibration();
+  check_image(left_bgr, calibration.left, "left");
+  check_image(right_bgr, calibration.right, "right");
+  FrameResult result;
+  Eigen::Isometry3d ego_T_right_camera;
+  head_.ego_T_cameras(joints_at_capture.positions_rad, result.ego_T_left_camera,
+                      ego_T_right_camera);
+  const Eigen::Isometry3d left_T_right = result.ego_T_left_camera.inverse() * ego_T_right_camera;
+
+  const Clock::time_point start = Clock::now();
+  std::vector<BoxDetection> left_boxes = detector_->detect(left_bgr);
+  std::vector<BoxDetection> right_boxes = detector_->detect(right_bgr);
+  const Clock::time_point detected = Clock::now();
+
+  cv::Mat left_grey, right_grey;
+  cv::cvtColor(left_bgr, left_grey, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(right_bgr, right_grey, cv::COLOR_BGR2GRAY);
+  if (options_.snap_band_fraction > 0.0 || options_.snap_min_band_px > 0.0) {
+    for (BoxDetection& box : left_boxes) {
+      box = detail::snap_to_outline(left_grey, box, options_.snap_band_fraction,
+                                    options_.snap_min_band_px);
+    }
+    for (BoxDetection& box : right_boxes) {
+      box = detail::snap_to_outline(right_grey, box, options_.snap_band_fraction,
+                                    options_.snap_min_band_px);
+    }
+  }
+  for (const BoxDetection& box : left_boxes) result.left_detections.push_back(as_detection(box));
+  for (const BoxDetection& box : right_boxes) result.right_detections.push_back(as_detection(box));
+  const PairPlacer placer(calibration, left_T_right, left_grey, right_grey, options_);
+  const detail::EpipolarGeometry epipolar(calibration.left, calibration.right, left_T_right);
+  const std::vector<detail::BoxPair> pairs =
+      detail::pair_boxes(left_boxes, right_boxes, calibration.left, calibration.right, epipolar,
+                         placer.triangulator(), options_);
+  // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
+  const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
+  for (const detail::BoxPair& pair : pairs) {
+    const BoxDetection& left = left_boxes[static_cast<std::size_t>(pair.left)];
+    const BoxDetection& right = right_boxes[static_cast<std::size_t>(pair.right)];
+    const std::optional<Placed> placed = placer.place(left, right, left_boxes);
+    if (!placed) continue;
+    FramePercept p;
+    p.type = placed->type;
+    p.ego_position_m = result.ego_T_left_camera * placed->triangulation.left_camera_position_m;
+    p.ego_covariance_m2 =
+        ego_R_left * placed->triangulation.left_camera_covariance_m2 * ego_R_left.transpose();
+    p.left_px = placed->left_px;
+    p.right_px = placed->right_px;
+    p.confidence = std::sqrt(left.confidence * right.confidence);
+    p.left_detection = pair.left;
+    p.right_detection = pair.right;
+    result.percepts.push_back(std::move(p));
+  }
+  result.classification_ms = elapsed_ms(start, detected);
+  result.stereo_ms = elapsed_ms(detected, Clock::now());
+  return result;
+}
+
+}  // namespace vsl::recognition

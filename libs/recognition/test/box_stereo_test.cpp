@@ -1,0 +1,122 @@
+// The learned recognizer's stereo steps: a region of the left image found again in the right one
+// to a tenth of a pixel, boxes paired across the images by the epipolar line, the disparity range
+// and their sizes.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <map>
+
+#include "../src/box_stereo.hpp"
+
+namespace vsl::recognition {
+namespace {
+
+// Seeded texture: noise smoothed to a few pixels' grain, as a real surface's.
+cv::Mat texture(int width, int height, std::uint64_t seed, double grain_px = 1.5) {
+  cv::Mat noise(height, width, CV_8UC1);
+  cv::RNG rng(seed);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
+  cv::GaussianBlur(noise, noise, cv::Size(0, 0), grain_px);
+  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
+  return noise;
+}
+
+cv::Mat shifted(const cv::Mat& image, double du, double dv) {
+  const cv::Mat move = (cv::Mat_<double>(2, 3) << 1, 0, du, 0, 1, dv);
+  cv::Mat out;
+  cv::warpAffine(image, out, move, image.size(), cv::INTER_CUBIC, cv::BORDER_REFLECT);
+  return out;
+}
+
+TEST(FindInRightImage, RecoversASubpixelShift) {
+  const cv::Mat left = texture(640, 480, 7);
+  for (const double du : {-23.3, -7.6, 4.25}) {
+    const cv::Mat right = shifted(left, du, 0.4);
+    // Predicted 3 px off, as a box pair's centres are.
+    const auto match = detail::find_in_right_image(left, right, {200, 150}, {260, 230},
+                                                   {du + 3.0, 0.0}, {8.0, 3.0}, 3000.0);
+    ASSERT_TRUE(match) << du;
+    EXPECT_NEAR(match->shift_px.x(), du, 0.15) << du;
+    EXPECT_NEAR(match->shift_px.y(), 0.4, 0.15) << du;
+    EXPECT_GT(match->correlation, 0.95);
+  }
+}
+
+TEST(FindInRightImage, LargeRegionsAtReducedScaleStillWithinAPixel) {
+  // A door's texture at the scale it is seen from near: grain of several pixels.
+  const cv::Mat left = texture(640, 480, 8, 6.0);
+  const cv::Mat right = shifted(left, -31.7, 0.0);
+  const auto match = detail::find_in_right_image(left, right, {150, 40}, {450, 440}, {-25, 0},
+                                                 {12.0, 3.0}, 3000.0);
+  ASSERT_TRUE(match);
+  EXPECT_NEAR(match->shift_px.x(), -31.7, 1.0);
+}
+
+TEST(FindInRightImage, RefusesFlatRegionsAndRegionsOutsideTheImage) {
+  const cv::Mat flat(480, 640, CV_8UC1, cv::Scalar(128));
+  EXPECT_FALSE(
+      detail::find_in_right_image(flat, flat, {100, 100}, {150, 150}, {-5, 0}, {5, 2}, 3000.0));
+  const cv::Mat left = texture(640, 480, 9);
+  EXPECT_FALSE(
+      detail::find_in_right_image(left, left, {600, 100}, {650, 150}, {0, 0}, {5, 2}, 3000.0));
+  // The whole search window beyond the right image's left border.
+  EXPECT_FALSE(
+      detail::find_in_right_image(left, left, {2, 100}, {40, 150}, {-60, 0}, {5, 2}, 3000.0));
+}
+
+BoxDetection box(int cls, double u0, double v0, double u1, double v1) {
+  BoxDetection b;
+  b.class_index = cls;
+  b.type = cls == 0 ? "door" : "handle";
+  b.confidence = 0.9f;
+  b.min_px = {u0, v0};
+  b.max_px = {u1, v1};
+  return b;
+}
+
+struct ParallelRig {
+  head::CameraIntrinsics intrinsics;  // 640x480, f 554.3 px, no distortion
+  Eigen::Isometry3d left_T_right = Eigen::Isometry3d(Eigen::Translation3d(0.09, 0.0, 0.0));
+  detail::EpipolarGeometry epipolar{intrinsics, intrinsics, left_T_right};
+  detail::Triangulator triangulator{intrinsics, intrinsics, left_T_right};
+};
+
+TEST(PairBoxes, PairsAlongTheEpipolarLineWithinTheDisparityRange) {
+  const ParallelRig rig;
+  // Two doors at 2 m (disparity 554.3 * 0.09 / 2 = 24.9 px) and a handle; the right image lists
+  // them in another order.
+  const std::vector<BoxDetection> left{box(0, 100, 100, 200, 300), box(0, 300, 100, 400, 300),
+                                       box(1, 330, 180, 340, 230)};
+  const std::vector<BoxDetection> right{box(1, 305, 181, 315, 231), box(0, 275, 101, 376, 299),
+                                        box(0, 75, 99, 175, 302)};
+  const auto pairs = detail::pair_boxes(left, right, rig.intrinsics, rig.intrinsics, rig.epipolar,
+                                        rig.triangulator, BoxStereoOptions{});
+  ASSERT_EQ(pairs.size(), 3u);
+  std::map<int, int> right_of;
+  for (const auto& p : pairs) right_of[p.left] = p.right;
+  EXPECT_EQ(right_of[0], 2);
+  EXPECT_EQ(right_of[1], 1);
+  EXPECT_EQ(right_of[2], 0);
+}
+
+TEST(PairBoxes, RefusesOffTheLineTooFarTooDifferentAndCutBoxes) {
+  const ParallelRig rig;
+  const BoxStereoOptions options;
+  const auto pairs_of = [&](const BoxDetection& l, const BoxDetection& r) {
+    return detail::pair_boxes({l}, {r}, rig.intrinsics, rig.intrinsics, rig.epipolar,
+                              rig.triangulator, options)
+        .size();
+  };
+  const BoxDetection door = box(0, 100, 100, 200, 300);
+  EXPECT_EQ(pairs_of(door, box(0, 75, 100, 175, 300)), 1u);
+  EXPECT_EQ(pairs_of(door, box(0, 75, 140, 175, 340)), 0u);   // 40 px off the epipolar line
+  EXPECT_EQ(pairs_of(door, box(0, 105, 100, 205, 300)), 0u);  // negative disparity
+  EXPECT_EQ(pairs_of(door, box(0, 75, 100, 275, 300)), 0u);   // twice as wide
+  EXPECT_EQ(pairs_of(door, box(1, 75, 100, 175, 300)), 0u);   // another class
+  EXPECT_EQ(pairs_of(box(0, 0, 100, 100, 300), box(0, 0, 100, 80, 300)), 0u);  // at the border
+}
+
+}  // namespace
+}  // namespace vsl::recognition

@@ -1,0 +1,74 @@
+"""The door and handle detector's network: a compact fully convolutional one-stage detector.
+
+Backbone: a 3x3 stem and depthwise-separable residual stages down to stride 32 (the receptive
+field a whole door needs); a feature pyramid merges the stages back to stride 4 (a handle 10 px
+long in a 640 px image is 6 px at the 384 px input, under two output cells at stride 4). The head
+predicts, per output cell, one logit per class (a Gaussian "centre-ness" map, TTFNet) and four
+log-distances from the cell's centre to the box's left, top, right and bottom sides in input
+pixels. Only operators OpenCV's dnn runs fast on one core (Conv, BatchNorm folded at export,
+ReLU, Add, nearest Resize).
+"""
+import torch
+from torch import nn
+import torch.nn.functional as F
+
+STRIDE = 4
+
+
+def conv_bn(cin, cout, k=3, s=1, groups=1, relu=True):
+    layers = [nn.Conv2d(cin, cout, k, s, k // 2, groups=groups, bias=False), nn.BatchNorm2d(cout)]
+    if relu:
+        layers.append(nn.ReLU(inplace=True))
+    return nn.Sequential(*layers)
+
+
+class SeparableBlock(nn.Module):
+    """Depthwise k x k then pointwise 1x1; residual when shape is kept."""
+
+    def __init__(self, cin, cout, stride=1, k=3):
+        super().__init__()
+        self.dw = conv_bn(cin, cin, k, stride, groups=cin)
+        self.pw = conv_bn(cin, cout, 1, relu=False)
+        self.residual = stride == 1 and cin == cout
+
+    def forward(self, x):
+        y = self.pw(self.dw(x))
+        return F.relu(y + x if self.residual else y)
+
+
+def stage(cin, cout, blocks, k=3):
+    return nn.Sequential(SeparableBlock(cin, cout, 2, k), *[SeparableBlock(cout, cout, 1, k) for _ in range(blocks - 1)])
+
+
+class DoorHandleDetector(nn.Module):
+    def __init__(self, num_classes=2, width=1.0):
+        super().__init__()
+        c = [int(round(v * width)) for v in (16, 32, 64, 128, 192)]
+        self.num_classes = num_classes
+        # stride 4: a full 3x3 convolution, then a separable one (a full one here costs 3x)
+        self.stem = nn.Sequential(conv_bn(3, c[0], 3, 2), conv_bn(c[0], c[0], 3, 2, groups=c[0]),
+                                  conv_bn(c[0], c[1], 1))
+        self.s8 = stage(c[1], c[2], 2)
+        self.s16 = stage(c[2], c[3], 3)
+        self.s32 = stage(c[3], c[4], 2, k=5)
+        f, f4 = 64, 32  # pyramid channels; fewer at stride 4, where each layer costs the most
+        self.lat32 = conv_bn(c[4], f, 1)
+        self.lat16 = conv_bn(c[3], f, 1)
+        self.lat8 = conv_bn(c[2], f, 1)
+        self.smooth16 = SeparableBlock(f, f)
+        self.smooth8 = nn.Sequential(SeparableBlock(f, f), conv_bn(f, f4, 1))
+        self.lat4 = conv_bn(c[1], f4, 1)
+        self.head = nn.Sequential(conv_bn(f4, f4, 3, groups=f4), conv_bn(f4, f4, 1),
+                                  nn.Conv2d(f4, num_classes + 4, 1))
+        nn.init.constant_(self.head[-1].bias[:num_classes], -4.6)  # initial centre-ness 0.01
+        nn.init.constant_(self.head[-1].bias[num_classes:], 2.0)   # sides ~7 px away
+
+    def forward(self, x):
+        x4 = self.stem(x)
+        x8 = self.s8(x4)
+        x16 = self.s16(x8)
+        x32 = self.s32(x16)
+        up = lambda t: F.interpolate(t, scale_factor=2.0, mode="nearest")
+        p16 = self.smooth16(self.lat16(x16) + up(self.lat32(x32)))
+        p8 = self.smooth8(self.lat8(x8) + up(p16))
+        return self.head(self.lat4(x4) + up(p8))

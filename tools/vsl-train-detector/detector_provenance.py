@@ -1,0 +1,42 @@
+"""The model's description file (door_handle.yaml): what the C++ detector needs to run it (input
+size, stride, classes, thresholds) and where it came from (data, seed, command, figures)."""
+import os
+
+import detector_data as data
+
+
+def write_description(path, args, figures, command, counts, seconds, date):
+    thresholds = {c: (f["threshold"] if figures else 0.3) for c, f in zip(data.CLASSES, figures or [{}] * 2)}
+    lines = [
+        "# The learned door and handle detector (libs/recognition/include/vsl/recognition/learned_detector.hpp),",
+        "# written by tools/vsl-train-detector. Paths are relative to this file.",
+        "detector:",
+        "  model: door_handle.onnx",
+        f"  input_width: {args.input_w}",
+        f"  input_height: {args.input_h}",
+        "  stride: 4",
+        f"  classes: [{', '.join(data.CLASSES)}]",
+        "  # Per class, the confidence maximizing F1 on the held-out images (2-fold cross-validated below).",
+        "  min_confidence: {" + ", ".join(f"{c}: {t:.3f}" for c, t in thresholds.items()) + "}",
+        "provenance:",
+        f"  command: \"{command}\"",
+        f"  date: {date}",
+        f"  seed: {args.seed}",
+        f"  split_seed: {args.split_seed}",
+        f"  init: \"{os.path.basename(args.init) if args.init else 'random'}\"",
+        f"  iterations: {args.iterations}",
+        f"  batch: {args.batch}",
+        f"  training_minutes: {seconds / 60:.1f}",
+        f"  threads: {args.threads}",
+        f"  images: {{real_or_own: {counts['real']}, rendered: {counts['rendered']}, held_out: {counts['held_out']}}}",
+        "  data: [" + ", ".join(f"\"{os.path.basename(os.path.normpath(d))}\"" for d in args.labels + args.real + args.sim) + "]",
+    ]
+    if figures:
+        lines.append("  # Held-out images: AP50 (PASCAL VOC, IoU >= 0.5), and precision and recall at a threshold")
+        lines.append("  # chosen on the other half of them (2-fold).")
+        lines.append("  held_out:")
+        for c, f in zip(data.CLASSES, figures):
+            lines.append(f"    {c}: {{ap50: {f['ap50']:.3f}, precision: {f['cv_precision']:.3f}, "
+                         f"recall: {f['cv_recall']:.3f}, objects: {f['objects']}}}")
+    with open(path, "w") as out:
+        out.write("\n".join(lines) + "\n")

@@ -1,0 +1,91 @@
+// vsl-train-detector as a process: a user's labelled images (here a few rendered ones, as
+// box-label YAML) fine-tune the shipped model for a few steps; the tool writes the ONNX model, the
+// weights and a description with provenance that vsl-eval-recognition (C++, OpenCV's dnn) loads
+// and runs; bad input is one line and exit code 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "run_command.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using vsl::testing::run_command;
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(VSL_BINARY_DIR) / "test-output" / "vsl-train-detector" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(VslTrainDetector, FineTunesOnABoxLabelFileAndTheModelRunsInCpp) {
+  const fs::path dir = scratch("fine-tune");
+  const auto dataset = run_command({VSL_MAKE_DATASET_BIN, "--world", "config/worlds/kitchen.yaml",
+                                    "--views", "6", "--seed", "5", "--realism", "off", "--out",
+                                    (dir / "data").string(), "-q"},
+                                   300.0);
+  ASSERT_EQ(dataset.exit_code, 0) << dataset.err;
+  const auto trained = run_command(
+      {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--out",
+       (dir / "model").string(), "--iterations", "3", "--batch", "2", "--threads", "1", "-q"},
+      600.0);
+  ASSERT_EQ(trained.exit_code, 0) << trained.err;
+  for (const char* file : {"door_handle.onnx", "door_handle.pt", "door_handle.yaml"}) {
+    EXPECT_TRUE(fs::exists(dir / "model" / file)) << file;
+  }
+  const std::string description = read(dir / "model" / "door_handle.yaml");
+  for (const char* text : {"model: door_handle.onnx", "min_confidence: {door: ", "provenance:",
+                           "command: \"vsl-train-detector --labels", "init: \"door_handle.pt\"",
+                           "held_out:"}) {
+    EXPECT_NE(description.find(text), std::string::npos) << text << "\n" << description;
+  }
+  // 12 images: 2 held out (0.2) for the thresholds.
+  EXPECT_NE(description.find("images: {real_or_own: 10, rendered: 0, held_out: 2}"),
+            std::string::npos)
+      << description;
+  const auto evaluated = run_command(
+      {VSL_EVAL_RECOGNITION_BIN, "--images", (dir / "data" / "images").string(), "--yolo-labels",
+       (dir / "data" / "labels").string(), "--detector",
+       (dir / "model" / "door_handle.yaml").string(), "--json", "-", "-q"},
+      120.0);
+  ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
+  EXPECT_NE(evaluated.out.find("\"images\":12"), std::string::npos) << evaluated.out;
+  EXPECT_NE(evaluated.out.find("\"type\":\"handle\""), std::string::npos) << evaluated.out;
+}
+
+TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
+  const fs::path dir = scratch("bad");
+  const auto missing = run_command({VSL_TRAIN_DETECTOR, "--labels", "no/such/labels.yaml", "--out",
+                                    (dir / "m").string()});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "vsl-train-detector: no/such/labels.yaml: no such file or folder\n");
+  fs::create_directories(dir);
+  std::ofstream(dir / "broken.yaml") << "images: [{boxes: []}]\n";
+  const auto broken = run_command({VSL_TRAIN_DETECTOR, "--labels", (dir / "broken.yaml").string(),
+                                   "--out", (dir / "m").string()});
+  EXPECT_EQ(broken.exit_code, 2);
+  EXPECT_NE(broken.err.find("broken.yaml: images[0]: expected a map with 'image'"),
+            std::string::npos)
+      << broken.err;
+  const auto usage = run_command({VSL_TRAIN_DETECTOR, "--out", (dir / "m").string()});
+  EXPECT_EQ(usage.exit_code, 2);
+  EXPECT_NE(usage.err.find("no training data"), std::string::npos) << usage.err;
+  const auto input = run_command(
+      {VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--input", "300x200", "--out", (dir / "m").string()});
+  EXPECT_EQ(input.exit_code, 2);
+  EXPECT_NE(input.err.find("multiples of 32"), std::string::npos) << input.err;
+}
+
+}  // namespace
