@@ -18,6 +18,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_assignment.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_options.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/frame_capture.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/frame_recognizer.cpp)
 list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/stereo_match_test.cpp

@@ -11,30 +11,12 @@
 #include <string>
 #include <utility>
 
+#include "frame_capture.hpp"
 #include "twin_handle_split.hpp"
 
 namespace vsl::recognition {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point from, Clock::time_point to) {
-  return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-void check_image(const cv::Mat& image, const head::CameraIntrinsics& intrinsics,
-                 const char* which) {
-  if (image.type() != CV_8UC3 || image.cols != intrinsics.width_px ||
-      image.rows != intrinsics.height_px) {
-    throw std::invalid_argument(
-        std::string("FrameRecognizer::recognize: the ") + which + " image must be CV_8UC3 of " +
-        std::to_string(intrinsics.width_px) + "x" + std::to_string(intrinsics.height_px) +
-        " (the calibration's size), got type " + std::to_string(image.type()) + " of " +
-        std::to_string(image.cols) + "x" + std::to_string(image.rows));
-  }
-}
-
-}  // namespace
+using detail::Clock;
+using detail::elapsed_ms;
 
 FrameRecognizer::FrameRecognizer(FrameRecognizerOptions options, head::HeadKinematics head,
                                  std::vector<std::unique_ptr<ClassRecognizer>> recognizers)
@@ -50,16 +32,11 @@ FrameRecognizer::FrameRecognizer(FrameRecognizerOptions options, head::HeadKinem
 FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& right_bgr,
                                        const head::JointState& joints_at_capture) const {
   const head::StereoCalibration& calibration = head_.calibration();
-  check_image(left_bgr, calibration.left, "left");
-  check_image(right_bgr, calibration.right, "right");
-  // §2.1.1: percepts are related to the ego centre through the kinematic configuration at
-  // capture time. The cameras' relative pose comes from the same chain, so verging eyes (the
-  // right camera turned against the left one) are matched and triangulated correctly.
+  const detail::CaptureGeometry capture = detail::check_and_place_cameras(
+      "FrameRecognizer::recognize", left_bgr, right_bgr, head_, joints_at_capture);
   FrameResult result;
-  Eigen::Isometry3d ego_T_right_camera;
-  head_.ego_T_cameras(joints_at_capture.positions_rad, result.ego_T_left_camera,
-                      ego_T_right_camera);
-  const Eigen::Isometry3d left_T_right = result.ego_T_left_camera.inverse() * ego_T_right_camera;
+  result.ego_T_left_camera = capture.ego_T_left_camera;
+  const Eigen::Isometry3d& left_T_right = capture.left_T_right;
 
   const Clock::time_point start = Clock::now();
   result.left_blobs = segment(left_bgr, options_.segmentation);

@@ -11,26 +11,13 @@
 #include <stdexcept>
 
 #include "box_stereo.hpp"
+#include "frame_capture.hpp"
 
 namespace vsl::recognition {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double elapsed_ms(Clock::time_point from, Clock::time_point to) {
-  return std::chrono::duration<double, std::milli>(to - from).count();
-}
-
-void check_image(const cv::Mat& image, const head::CameraIntrinsics& intrinsics,
-                 const char* which) {
-  if (image.type() != CV_8UC3 || image.cols != intrinsics.width_px ||
-      image.rows != intrinsics.height_px) {
-    throw std::invalid_argument(std::string("LearnedStereoRecognizer::recognize: the ") + which +
-                                " image must be CV_8UC3 of " + std::to_string(intrinsics.width_px) +
-                                "x" + std::to_string(intrinsics.height_px) +
-                                " (the calibration's size)");
-  }
-}
+using detail::Clock;
+using detail::elapsed_ms;
 
 // A box as the pipeline's Detection (raw pixel-centre coordinates: pixel (u, v)'s centre at
 // (u, v), so a box's continuous corners move by half a pixel).
@@ -248,13 +235,11 @@ LearnedStereoRecognizer::LearnedStereoRecognizer(std::shared_ptr<const LearnedDe
 FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& right_bgr,
                                                const head::JointState& joints_at_capture) const {
   const head::StereoCalibration& calibration = head_.calibration();
-  check_image(left_bgr, calibration.left, "left");
-  check_image(right_bgr, calibration.right, "right");
+  const detail::CaptureGeometry capture = detail::check_and_place_cameras(
+      "LearnedStereoRecognizer::recognize", left_bgr, right_bgr, head_, joints_at_capture);
   FrameResult result;
-  Eigen::Isometry3d ego_T_right_camera;
-  head_.ego_T_cameras(joints_at_capture.positions_rad, result.ego_T_left_camera,
-                      ego_T_right_camera);
-  const Eigen::Isometry3d left_T_right = result.ego_T_left_camera.inverse() * ego_T_right_camera;
+  result.ego_T_left_camera = capture.ego_T_left_camera;
+  const Eigen::Isometry3d& left_T_right = capture.left_T_right;
 
   const Clock::time_point start = Clock::now();
   std::vector<BoxDetection> left_boxes = detector_->detect(left_bgr);
