@@ -39,3 +39,24 @@ pkg_check_modules(LIBCAMERA REQUIRED IMPORTED_TARGET libcamera)
 add_library(vsl_libcamera_external INTERFACE)
 target_link_libraries(vsl_libcamera_external INTERFACE PkgConfig::LIBCAMERA)
 target_include_directories(vsl_libcamera_external SYSTEM INTERFACE ${LIBCAMERA_INCLUDE_DIRS})
+
+# World import (libs/world_import): each format through its own well-kept Debian library.
+# urdfdom 3 (liburdfdom-dev) ships a CMake package with plain variables, not targets.
+find_package(urdfdom REQUIRED)
+add_library(vsl_urdfdom_external INTERFACE)
+target_link_libraries(vsl_urdfdom_external INTERFACE ${urdfdom_LIBRARIES})
+target_include_directories(vsl_urdfdom_external SYSTEM INTERFACE ${urdfdom_INCLUDE_DIRS})
+# SDFormat 12 (libsdformat-dev): SDF and Gazebo .world files.
+find_package(sdformat12 REQUIRED)
+add_library(vsl_sdformat_external INTERFACE)
+target_link_libraries(vsl_sdformat_external INTERFACE sdformat12::sdformat12)
+# Assimp 5 (libassimp-dev): COLLADA, OBJ, glTF, STL, PLY and the meshes URDF and SDF refer to.
+find_package(assimp REQUIRED)
+add_library(vsl_assimp_external INTERFACE)
+target_link_libraries(vsl_assimp_external INTERFACE assimp::assimp)
+# Coin3D 4 (libcoin-dev): VRML 2 and Open Inventor. No CMake or pkg-config package in Debian.
+find_library(COIN_LIBRARY NAMES Coin REQUIRED)
+find_path(COIN_INCLUDE_DIR NAMES Inventor/SoDB.h REQUIRED)
+add_library(vsl_coin_external INTERFACE)
+target_link_libraries(vsl_coin_external INTERFACE ${COIN_LIBRARY})
+target_include_directories(vsl_coin_external SYSTEM INTERFACE ${COIN_INCLUDE_DIR})
