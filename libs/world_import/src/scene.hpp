@@ -42,8 +42,8 @@ struct PartGeometry {
 
 // One named part of a model file.
 struct ScenePart {
-  std::string name;    // unique within its scene
-  std::string parent;  // name of the enclosing part in the same scene, or ""
+  std::string name;                   // unique within its scene
+  std::string parent;                 // name of the enclosing part in the same scene, or ""
   JointKind joint = JointKind::none;  // how it attaches to `parent`
   // For revolute, continuous and prismatic joints: the axis (unit, world frame), a point on it
   // (world, m) and the limits (rad or m; both 0 when the file gives none).
@@ -72,7 +72,7 @@ struct ReadOptions {
 // Each reader throws config::Error, one line naming the file, for a file it cannot read; a
 // referenced mesh that is missing or unreadable is a warning in Scene::warnings, not an error.
 Scene read_urdf(const std::string& path, const ReadOptions& options);
-Scene read_sdf(const std::string& path, const ReadOptions& options);       // SDF, Gazebo .world
+Scene read_sdf(const std::string& path, const ReadOptions& options);        // SDF, Gazebo .world
 Scene read_mesh_file(const std::string& path, const ReadOptions& options);  // assimp formats
 Scene read_inventor(const std::string& path, const ReadOptions& options);   // VRML 2, Inventor
 
