@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "import_command.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/world/world_graph.hpp"
 #include "vsl/world/world_graph_options.hpp"
@@ -17,6 +18,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: vsl-world check FILE
        vsl-world stats FILE [--config FILE] [--link-threshold METRES] [--node-types T,T,...]
+       vsl-world import FILE... -o WORLD.yaml [--rules FILE] [--dry-run] ...  (import --help)
 
 Validates a vsl world-model file (format: docs/world-model.md).
   check   validate; prints a one-line summary, or the one-line error and exits 2
@@ -165,6 +167,9 @@ void print_stats(const vsl::world::WorldModel& world, const Options& options, do
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 2 && std::string(argv[1]) == "import") {
+    return vsl::world_tool::run_import(argc - 1, argv + 1);
+  }
   try {
     const Options options = parse(argc, argv);
     const auto start = std::chrono::steady_clock::now();
