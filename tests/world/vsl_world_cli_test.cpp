@@ -84,4 +84,21 @@ TEST(VslWorldCli, StatsCountsPrimitivesObjectsLinksAndBounds) {
       << typed.out;
 }
 
+TEST(VslWorldCli, StatsCountsMeshesTheirTrianglesAndBoundsThem) {
+  const std::string path =
+      write_temp("mesh_world.yaml",
+                 "objects:\n"
+                 "  - {id: part, type: clutter, position: [1, 0, 0], primitives: [\n"
+                 "     {mesh: {vertices: [[0, 0, 0], [2, 0, 0], [0, 3, 0], [0, 0, 4]],\n"
+                 "             triangles: [[0, 1, 2], [0, 2, 3], [1, 1, 2]]}}]}\n");
+  const auto result = run_command({VSL_WORLD_BIN, "stats", path});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("primitives: 1\n"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("  mesh                        1\n"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("mesh triangles: 3\n"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("bounding box: [1.000, 0.000, 0.000] .. [3.000, 3.000, 4.000] m"),
+            std::string::npos)
+      << result.out;
+}
+
 }  // namespace

@@ -19,7 +19,8 @@ namespace {
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 
 // Corners of a primitive in the world frame: a box's 8, a cylinder's two rims (24 points each),
-// a polyhedron's vertices. Their floor projection's convex hull is the footprint.
+// a polyhedron's vertices, a mesh's bounding box's 8. Their floor projection's convex hull is the
+// footprint.
 std::vector<Eigen::Vector3d> world_corners(const world::ObjectModel& object,
                                            const world::Primitive& primitive) {
   const Eigen::Isometry3d world_T_primitive =
@@ -41,6 +42,17 @@ std::vector<Eigen::Vector3d> world_corners(const world::ObjectModel& object,
     }
   } else if (const auto* polyhedron = std::get_if<world::Polyhedron>(&primitive.shape)) {
     local = polyhedron->vertices_m;
+  } else if (const auto* mesh = std::get_if<world::TriangleMesh>(&primitive.shape)) {
+    // The 8 corners of its own-frame bounding box: a hull of 100k vertices would be slow for a
+    // footprint that is only a hint of where the part is.
+    if (!mesh->vertices_m.empty()) {
+      Eigen::AlignedBox3f bounds;
+      for (const Eigen::Vector3f& v : mesh->vertices_m) bounds.extend(v);
+      for (int i = 0; i < 8; ++i) {
+        local.push_back(
+            bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(i)).cast<double>());
+      }
+    }
   }
   for (Eigen::Vector3d& p : local) p = world_T_primitive * p;
   return local;

@@ -73,6 +73,31 @@ TEST(MapFrame, FitsTheWorldsFootprints) {
   EXPECT_EQ(frame.height_px, 100 + 2 * frame.margin_px + frame.caption_px);
 }
 
+TEST(MapFrame, MeshFootprintIsItsBoundingBox) {
+  // A mesh spanning x in [1, 2] and y in [2, 4] (object frame = world frame here).
+  world::WorldModel world;
+  world::ObjectModel part;
+  part.id = "m";
+  part.type = "table";
+  world::TriangleMesh mesh;
+  mesh.vertices_m = {{1, 2, 0}, {2, 2, 0}, {1.5f, 4, 0.5f}};
+  mesh.triangles = {{0, 1, 2}};
+  part.primitives.emplace_back().shape = mesh;
+  part.primitives.back().colour = {200, 40, 40};
+  world.objects = {part};
+  const MapFrame frame = map_frame_for(world, 50.0);
+  EXPECT_NEAR(frame.world_min_m.x(), 1.0, 1e-6);
+  EXPECT_NEAR(frame.world_min_m.y(), 2.0, 1e-6);
+  EXPECT_EQ(frame.width_px, 50 + 2 * frame.margin_px);
+  EXPECT_EQ(frame.height_px, 100 + 2 * frame.margin_px + frame.caption_px);
+  // The footprint is filled: a point inside the box but outside the triangle is drawn too.
+  const cv::Mat map = draw_world(world, frame);
+  const cv::Point2d inside = frame.to_pixel({1.1, 3.8});
+  EXPECT_FALSE(same_colour(pixel(map, int(inside.x), int(inside.y)), colour::kBackground));
+  const cv::Point2d outside = frame.to_pixel({2.3, 3.0});
+  EXPECT_TRUE(same_colour(pixel(map, int(outside.x), int(outside.y)), colour::kBackground));
+}
+
 TEST(MapDrawing, KnownPoseDrawsTheRobotMarkerAtItsPixel) {
   const MapFrame frame = test_frame();
   MapOverlay overlay;

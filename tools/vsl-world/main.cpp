@@ -22,8 +22,8 @@ constexpr const char* kUsage = R"(usage: vsl-world check FILE
 
 Validates a vsl world-model file (format: docs/world-model.md).
   check   validate; prints a one-line summary, or the one-line error and exits 2
-  stats   primitives by kind, objects by type, world-graph links (paper Eq. 6) and the
-          bounding box of all geometry (world frame, metres)
+  stats   primitives by kind, mesh triangles, objects by type, world-graph links (paper
+          Eq. 6) and the bounding box of all geometry (world frame, metres)
 options:
   --config FILE        read the world_graph section (link_threshold_m, node_types) of a
                        localizer config such as config/localizer.yaml
@@ -36,6 +36,7 @@ exit codes: 0 ok, 2 bad file or usage
 using vsl::world::Box;
 using vsl::world::Cylinder;
 using vsl::world::Polyhedron;
+using vsl::world::TriangleMesh;
 
 struct Options {
   std::string command;
@@ -106,6 +107,11 @@ std::vector<Eigen::Vector3d> extreme_points(const vsl::world::Shape& shape) {
     half = box->size_m / 2;
   } else if (const auto* cylinder = std::get_if<Cylinder>(&shape)) {
     half = {cylinder->radius_m, cylinder->radius_m, cylinder->height_m / 2};
+  } else if (const auto* mesh = std::get_if<TriangleMesh>(&shape)) {
+    std::vector<Eigen::Vector3d> vertices;
+    vertices.reserve(mesh->vertices_m.size());
+    for (const Eigen::Vector3f& v : mesh->vertices_m) vertices.push_back(v.cast<double>());
+    return vertices;
   } else {
     return std::get<Polyhedron>(shape).vertices_m;
   }
@@ -119,7 +125,8 @@ std::vector<Eigen::Vector3d> extreme_points(const vsl::world::Shape& shape) {
 
 void print_stats(const vsl::world::WorldModel& world, const Options& options, double load_s) {
   std::map<std::string, std::size_t> primitives_by_kind{
-      {"box", 0}, {"cylinder", 0}, {"polyhedron", 0}};
+      {"box", 0}, {"cylinder", 0}, {"polyhedron", 0}, {"mesh", 0}};
+  std::size_t mesh_triangles = 0;
   std::map<std::string, std::size_t> objects_by_type;
   Eigen::AlignedBox3d bounds;
   for (const auto& object : world.objects) {
@@ -127,10 +134,14 @@ void print_stats(const vsl::world::WorldModel& world, const Options& options, do
     bounds.extend(object.world_position_m);
     const Eigen::Isometry3d world_T_object = object.world_T_object();
     for (const auto& primitive : object.primitives) {
-      const char* kind = std::holds_alternative<Box>(primitive.shape)        ? "box"
-                         : std::holds_alternative<Cylinder>(primitive.shape) ? "cylinder"
-                                                                             : "polyhedron";
+      const char* kind = std::holds_alternative<Box>(primitive.shape)          ? "box"
+                         : std::holds_alternative<Cylinder>(primitive.shape)   ? "cylinder"
+                         : std::holds_alternative<Polyhedron>(primitive.shape) ? "polyhedron"
+                                                                               : "mesh";
       ++primitives_by_kind[kind];
+      if (const auto* mesh = std::get_if<TriangleMesh>(&primitive.shape)) {
+        mesh_triangles += mesh->triangles.size();
+      }
       const Eigen::Isometry3d world_T_primitive = world_T_object * primitive.object_T_primitive();
       for (const Eigen::Vector3d& p : extreme_points(primitive.shape))
         bounds.extend(world_T_primitive * p);
@@ -148,6 +159,7 @@ void print_stats(const vsl::world::WorldModel& world, const Options& options, do
   std::printf("primitives: %zu\n", total_primitives);
   for (const auto& [kind, count] : primitives_by_kind)
     std::printf("  %-20s %8zu\n", kind.c_str(), count);
+  std::printf("mesh triangles: %zu\n", mesh_triangles);
   std::printf("objects: %zu\n", world.objects.size());
   for (const auto& [type, count] : objects_by_type)
     std::printf("  %-20s %8zu\n", type.c_str(), count);

@@ -29,6 +29,14 @@ Eigen::Vector3d extents_of(const world::Shape& shape) {
   if (const auto* cylinder = std::get_if<world::Cylinder>(&shape)) {
     return {2 * cylinder->radius_m, 2 * cylinder->radius_m, cylinder->height_m};
   }
+  if (const auto* mesh = std::get_if<world::TriangleMesh>(&shape)) {
+    Eigen::Vector3f lo = mesh->vertices_m.front(), hi = lo;
+    for (const Eigen::Vector3f& v : mesh->vertices_m) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    return (hi - lo).cast<double>();
+  }
   const auto& poly = std::get<world::Polyhedron>(shape);
   Eigen::Vector3d lo = poly.vertices_m.front(), hi = lo;
   for (const Eigen::Vector3d& v : poly.vertices_m) {
@@ -88,6 +96,10 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
   inputs.skip.assign(count, false);
   inputs.slot_factor = scene.slot_factor;
   std::vector<bool> is_sky(count, false);
+  // A primitive's triangles are consecutive in the scene: its extents are computed once, not per
+  // triangle (a mesh of n triangles would cost n times its vertex count).
+  const world::Primitive* extents_primitive = nullptr;
+  Eigen::Vector3d extents = Eigen::Vector3d::Zero();
   for (std::size_t t = 0; t < count; ++t) {
     const world::ObjectModel& object =
         world.objects[static_cast<std::size_t>(scene.object_index[t])];
@@ -117,9 +129,13 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     const Look& look = looks_[tl.look];
     const Eigen::Isometry3d world_T_primitive =
         object.world_T_object() * primitive.object_T_primitive();
-    std::tie(tl.s_axis, tl.t_axis) = texture_axes(
-        world_T_primitive, extents_of(primitive.shape), scene.world_planes[t].head<3>(),
-        hash_text(object.id) + 977u * scene.primitive_index[t]);
+    if (extents_primitive != &primitive) {
+      extents_primitive = &primitive;
+      extents = extents_of(primitive.shape);
+    }
+    std::tie(tl.s_axis, tl.t_axis) =
+        texture_axes(world_T_primitive, extents, scene.world_planes[t].head<3>(),
+                     hash_text(object.id) + 977u * scene.primitive_index[t]);
     const float* mean = look.texture->mean_rgb();
     inputs.albedo_rgb[t] = {mean[0], mean[1], mean[2]};
     is_sky[t] = object.type == "window" && look.surface.finish == world::Finish::glass;

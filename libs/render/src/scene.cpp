@@ -26,12 +26,14 @@ Mesh mesh_of(const world::Shape& shape, int cylinder_segments) {
 }  // namespace
 
 Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
+  std::vector<bool> two_sided;  // per triangle: from an imported mesh, drawn in both windings
   for (std::size_t object = 0; object < world.objects.size(); ++object) {
     const world::ObjectModel& model = world.objects[object];
     const Eigen::Isometry3d world_T_object = model.world_T_object();
     for (std::size_t p = 0; p < model.primitives.size(); ++p) {
       const world::Primitive& primitive = model.primitives[p];
       const Mesh mesh = mesh_of(primitive.shape, options.cylinder_segments);
+      const bool is_mesh = std::holds_alternative<world::TriangleMesh>(primitive.shape);
       const Eigen::Isometry3d world_T_primitive = world_T_object * primitive.object_T_primitive();
       Chunk chunk;
       chunk.first_vertex = static_cast<std::uint32_t>(world_vertices_m.size());
@@ -61,6 +63,7 @@ Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
         shaded_bgr.push_back(lambert_bgr(primitive.colour, unit_normal, options));
         object_index.push_back(static_cast<std::int32_t>(object));
         primitive_index.push_back(static_cast<std::uint32_t>(p));
+        two_sided.push_back(is_mesh);
       }
       chunk.triangle_count = static_cast<std::uint32_t>(triangles.size()) - chunk.first_triangle;
       if (chunk.triangle_count == 0) continue;
@@ -69,7 +72,7 @@ Scene::Scene(const world::WorldModel& world, const RenderOptions& options) {
     }
   }
   slot_factor = slot_light_factors(world_vertices_m, triangles, world_planes,
-                                   options.slot_occlusion_max_width_m);
+                                   options.slot_occlusion_max_width_m, two_sided);
   for (std::size_t t = 0; t < shaded_bgr.size(); ++t) {
     for (float& channel : shaded_bgr[t]) channel *= slot_factor[t];
   }

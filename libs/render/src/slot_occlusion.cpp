@@ -42,20 +42,23 @@ constexpr double kMaxSlotDepth_m = 0.1;
 std::vector<float> slot_light_factors(const std::vector<Eigen::Vector3d>& world_vertices_m,
                                       const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                       const std::vector<Eigen::Vector4d>& world_planes,
-                                      double max_width_m) {
+                                      double max_width_m, const std::vector<bool>& two_sided) {
   std::vector<float> factors(triangles.size(), 1.0f);
   if (!(max_width_m > 0.0)) return factors;
+  const auto takes_part = [&](std::uint32_t t) { return two_sided.empty() || !two_sided[t]; };
 
   // Triangles by orientation, each group sorted by plane offset d, so that the facets facing a
   // given one within max_width are one binary search away.
   std::map<NormalKey, std::vector<std::pair<double, std::uint32_t>>> by_normal;
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    if (!takes_part(t)) continue;
     by_normal[key_of(world_planes[t].head<3>())].emplace_back(world_planes[t].w(), t);
   }
   for (auto& [key, group] : by_normal) std::sort(group.begin(), group.end());
 
   constexpr double kTolerance_m = 1e-4;
   for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    if (!takes_part(t)) continue;
     const Eigen::Vector3d n = world_planes[t].head<3>();
     const auto found = by_normal.find(key_of(-n));
     if (found == by_normal.end()) continue;

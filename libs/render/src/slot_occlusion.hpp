@@ -18,10 +18,13 @@ namespace vsl::render {
 
 // Per triangle, the factor (0, 1] its shade is multiplied by; 1 for triangles in no slot.
 // triangles index world_vertices_m; world_planes hold each triangle's unit normal n and offset d
-// (n . x = d, world frame, m). max_width_m <= 0: all ones.
+// (n . x = d, world frame, m). max_width_m <= 0: all ones. Triangles marked in `two_sided` (an
+// imported mesh's, drawn in both windings) take no part, factor 1: each faces its own reverse
+// across no gap, and a flat mesh's thousands of coplanar triangles would make the search
+// quadratic. Empty `two_sided`: none is.
 std::vector<float> slot_light_factors(const std::vector<Eigen::Vector3d>& world_vertices_m,
                                       const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                       const std::vector<Eigen::Vector4d>& world_planes,
-                                      double max_width_m);
+                                      double max_width_m, const std::vector<bool>& two_sided = {});
 
 }  // namespace vsl::render

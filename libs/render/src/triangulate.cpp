@@ -158,4 +158,26 @@ Mesh triangulate(const world::Polyhedron& polyhedron) {
   return mesh;
 }
 
+Mesh triangulate(const world::TriangleMesh& mesh) {
+  Mesh out;
+  out.vertices_m.reserve(mesh.vertices_m.size());
+  for (const Eigen::Vector3f& v : mesh.vertices_m) out.vertices_m.push_back(v.cast<double>());
+  out.triangles.reserve(2 * mesh.triangles.size());
+  for (const auto& [a, b, c] : mesh.triangles) {
+    if (a >= out.vertices_m.size() || b >= out.vertices_m.size() || c >= out.vertices_m.size()) {
+      continue;  // the loader rejects these; a hand-made model must not crash us
+    }
+    const Eigen::Vector3d& pa = out.vertices_m[a];
+    if (a == b || b == c || c == a ||
+        !((out.vertices_m[b] - pa).cross(out.vertices_m[c] - pa).squaredNorm() > 0.0)) {
+      continue;
+    }
+    // The rasterizer culls faces turned away from the camera; an open or inconsistently wound
+    // mesh has no outside, so both faces of each triangle are drawn.
+    out.triangles.push_back({a, b, c});
+    out.triangles.push_back({a, c, b});
+  }
+  return out;
+}
+
 }  // namespace vsl::render

@@ -55,6 +55,22 @@ TEST(SlotOcclusion, LargeFacetsAndOpenFacetsKeepTheirLight) {
   for (float factor : factors) EXPECT_EQ(factor, 1.0f);
 }
 
+TEST(SlotOcclusion, TwoSidedMeshTrianglesTakeNoPart) {
+  // A small facet and its reverse (how a mesh triangle is drawn), then a door edge facing it
+  // across 4 mm: the mesh's own triangles are no slot walls, so nothing darkens.
+  Facets f;
+  f.rectangle(0.0, 0.018, 0.7, +1.0);
+  f.rectangle(0.0, 0.018, 0.7, -1.0);
+  f.rectangle(0.004, 0.018, 0.7, -1.0);
+  const std::vector<bool> two_sided{true, true, true, true, false, false};
+  const std::vector<float> factors =
+      slot_light_factors(f.vertices, f.triangles, f.planes, 0.02, two_sided);
+  for (float factor : factors) EXPECT_EQ(factor, 1.0f);
+  // Unmarked, the same facets darken each other.
+  const std::vector<float> unmarked = slot_light_factors(f.vertices, f.triangles, f.planes, 0.02);
+  EXPECT_LT(unmarked[0], 0.5f);
+}
+
 TEST(SlotOcclusion, OffKeepsEverything) {
   Facets f;
   f.rectangle(0.0, 0.018, 0.7, +1.0);

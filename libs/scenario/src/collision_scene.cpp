@@ -39,6 +39,9 @@ Eigen::AlignedBox3d world_bounds(const world::Shape& shape,
     add_box(b->size_m / 2);
   } else if (const auto* c = std::get_if<world::Cylinder>(&shape)) {
     add_box({c->radius_m, c->radius_m, c->height_m / 2});
+  } else if (const auto* mesh = std::get_if<world::TriangleMesh>(&shape)) {
+    for (const Eigen::Vector3f& v : mesh->vertices_m)
+      box.extend(world_T_primitive * v.cast<double>());
   } else {
     for (const Eigen::Vector3d& v : std::get<world::Polyhedron>(shape).vertices_m) {
       box.extend(world_T_primitive * v);

@@ -1,6 +1,7 @@
 #include "vsl/scenario/ray_cast.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -45,6 +46,46 @@ std::optional<double> first_in_span(const std::optional<Span>& span, double t_mi
   const double t = std::max(span->enter_m, t_min);
   if (t > std::min(span->exit_m, t_max)) return std::nullopt;
   return t;
+}
+
+// Möller–Trumbore: t at which the line meets triangle abc (edges included), or nullopt for a miss
+// or a line parallel to the triangle's plane. Degenerate triangles are never met.
+std::optional<double> line_meets_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                          const Eigen::Vector3d& c, const Ray& ray) {
+  const Eigen::Vector3d ab = b - a, ac = c - a;
+  const Eigen::Vector3d p = ray.direction.cross(ac);
+  const double determinant = ab.dot(p);
+  // Relative to the edges' lengths, so that millimetre facets and metre walls are judged alike.
+  if (!(std::abs(determinant) > kParallel * ab.norm() * ac.norm())) return std::nullopt;
+  const double inverse = 1.0 / determinant;
+  const Eigen::Vector3d to_origin = ray.origin_m - a;
+  const double u = to_origin.dot(p) * inverse;
+  if (u < 0.0 || u > 1.0) return std::nullopt;
+  const Eigen::Vector3d q = to_origin.cross(ab);
+  const double v = ray.direction.dot(q) * inverse;
+  if (v < 0.0 || u + v > 1.0) return std::nullopt;
+  return ac.dot(q) * inverse;
+}
+
+// Where the line meets triangle `triangle` of the mesh, if it does.
+std::optional<double> line_meets_mesh_triangle(const world::TriangleMesh& mesh,
+                                               const std::array<std::uint32_t, 3>& triangle,
+                                               const Ray& ray) {
+  const std::size_t count = mesh.vertices_m.size();
+  if (triangle[0] >= count || triangle[1] >= count || triangle[2] >= count) {
+    return std::nullopt;  // the loader rejects these; a hand-made model must not crash us
+  }
+  return line_meets_triangle(mesh.vertices_m[triangle[0]].cast<double>(),
+                             mesh.vertices_m[triangle[1]].cast<double>(),
+                             mesh.vertices_m[triangle[2]].cast<double>(), ray);
+}
+
+// Calls visit(t) for every t at which the line crosses a triangle of the mesh.
+template <typename Visit>
+void for_each_mesh_crossing(const world::TriangleMesh& mesh, const Ray& ray, Visit&& visit) {
+  for (const auto& triangle : mesh.triangles) {
+    if (const std::optional<double> t = line_meets_mesh_triangle(mesh, triangle, ray)) visit(*t);
+  }
 }
 
 }  // namespace
@@ -107,6 +148,13 @@ std::vector<double> polyhedron_crossings(const world::Polyhedron& polyhedron, co
   return crossings;
 }
 
+std::vector<double> mesh_crossings(const world::TriangleMesh& mesh, const Ray& ray) {
+  std::vector<double> crossings;
+  for_each_mesh_crossing(mesh, ray, [&](double t) { crossings.push_back(t); });
+  std::sort(crossings.begin(), crossings.end());
+  return crossings;
+}
+
 std::optional<double> first_hit(const world::Shape& shape, const Ray& ray, double t_min_m,
                                 double t_max_m) {
   if (t_min_m > t_max_m) return std::nullopt;
@@ -115,6 +163,14 @@ std::optional<double> first_hit(const world::Shape& shape, const Ray& ray, doubl
   }
   if (const auto* cylinder = std::get_if<world::Cylinder>(&shape)) {
     return first_in_span(line_through_cylinder(*cylinder, ray), t_min_m, t_max_m);
+  }
+  if (const auto* mesh = std::get_if<world::TriangleMesh>(&shape)) {
+    // A surface without an inside: the nearest crossing in range, found without sorting them all.
+    std::optional<double> nearest;
+    for_each_mesh_crossing(*mesh, ray, [&](double t) {
+      if (t >= t_min_m && t <= t_max_m && (!nearest || t < *nearest)) nearest = t;
+    });
+    return nearest;
   }
   const std::vector<double> crossings =
       polyhedron_crossings(std::get<world::Polyhedron>(shape), ray);

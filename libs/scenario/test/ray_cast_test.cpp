@@ -1,5 +1,5 @@
-// Ray casting against analytic cases: boxes, cylinders, polyhedra (convex and not), and primitives
-// placed in the world through their object's pose.
+// Ray casting against analytic cases: boxes, cylinders, polyhedra (convex and not), triangle
+// meshes, and primitives placed in the world through their object's pose.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -122,6 +122,72 @@ TEST(RayCast, NonConvexPolyhedronHasAGapInTheNotch) {
   EXPECT_FALSE(first_hit(l_prism, r, 6.5, 10));                     // in the notch and beyond
   // Along y at z = 0.5 the solid spans y in [0, 2].
   EXPECT_NEAR(first_hit(l_prism, ray({0, -5, 0.5}, {0, 1, 0}), 5.5, 10).value(), 5.5, 1e-12);
+}
+
+TEST(RayCast, MeshTriangleIsHitFromEitherSide) {
+  // One triangle in the plane x = 2 (an open surface: no inside, no preferred side).
+  world::TriangleMesh mesh;
+  mesh.vertices_m = {{2, -1, -1}, {2, 1, -1}, {2, 0, 1}, {5, 5, 5}};
+  mesh.triangles = {{0, 1, 2}, {3, 3, 3}};  // the second degenerate: never hit
+  const world::Shape shape = mesh;
+  EXPECT_NEAR(first_hit(shape, ray({0, 0, 0}, {1, 0, 0}), 0, 10).value(), 2.0, 1e-12);
+  EXPECT_NEAR(first_hit(shape, ray({4, 0, 0}, {-1, 0, 0}), 0, 10).value(), 2.0, 1e-12);
+  EXPECT_NEAR(first_hit(shape, ray({0, 0, 0}, {2, 0.25, 0.25}), 0, 10).value(),
+              Eigen::Vector3d(2, 0.25, 0.25).norm(), 1e-12);
+  EXPECT_FALSE(first_hit(shape, ray({0, 0.9, 0.5}, {1, 0, 0}), 0, 10));  // beside the triangle
+  EXPECT_FALSE(first_hit(shape, ray({0, 0, 0}, {1, 0, 0}), 0, 1.9));     // stops short
+  EXPECT_FALSE(first_hit(shape, ray({0, 0, 0}, {1, 0, 0}), 2.1, 10));    // starts beyond
+  EXPECT_FALSE(first_hit(shape, ray({0, 0, 0}, {0, 1, 0}), 0, 10));      // parallel
+  const auto crossings = mesh_crossings(mesh, ray({0, 0, 0}, {1, 0, 0}));
+  ASSERT_EQ(crossings.size(), 1u);
+  EXPECT_NEAR(crossings[0], 2.0, 1e-12);
+}
+
+TEST(RayCast, ClosedMeshAgreesWithTheBoxFromOutside) {
+  // The 2 m cube as 12 triangles of mixed winding.
+  world::TriangleMesh mesh;
+  for (const Eigen::Vector3d& v : cube_polyhedron(2.0).vertices_m) {
+    mesh.vertices_m.push_back(v.cast<float>());
+  }
+  for (const auto& f : cube_polyhedron(2.0).faces) {
+    mesh.triangles.push_back({f[0], f[1], f[2]});
+    mesh.triangles.push_back({f[0], f[3], f[2]});
+  }
+  const world::Shape cube = mesh;
+  const world::Shape box = world::Box{Eigen::Vector3d(2, 2, 2)};
+  Rng rng(8);
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector3d origin(rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-4, 4));
+    if ((origin.array().abs() <= 1.0).all()) continue;  // inside: a mesh has no inside
+    const Eigen::Vector3d target(rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5),
+                                 rng.uniform(-1.5, 1.5));
+    const Ray r = ray(origin, target - origin);
+    const auto a = first_hit(cube, r, 0, 20);
+    const auto b = first_hit(box, r, 0, 20);
+    ASSERT_EQ(a.has_value(), b.has_value()) << i;
+    if (a) {
+      EXPECT_NEAR(*a, *b, 1e-6) << i;  // float vertices
+      ++hits;
+    }
+  }
+  EXPECT_GT(hits, 500);
+}
+
+TEST(RayCast, SceneBoundsAMeshByItsVertices) {
+  world::WorldModel world;
+  auto& part = testing::add_object(world, "part", "clutter", {1, 2, 3}, 0.0);
+  world::TriangleMesh mesh;
+  mesh.vertices_m = {{0, 0, 0}, {0.5f, 0, 0}, {0, 0.25f, 0.125f}};
+  mesh.triangles = {{0, 1, 2}};
+  part.primitives.emplace_back().shape = mesh;
+  const CollisionScene scene(world);
+  const auto& box = scene.primitives()[0].world_box;
+  EXPECT_TRUE(box.min().isApprox(Eigen::Vector3d(1, 2, 3), 1e-12));
+  EXPECT_TRUE(box.max().isApprox(Eigen::Vector3d(1.5, 2.25, 3.125), 1e-12));
+  const auto hit = scene.first_hit(ray({1.1, 2.05, 0}, {0, 0, 1}), 10, scene.all_primitives());
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t_m, 3.025, 1e-6);
 }
 
 TEST(RayCast, SceneCastsInThePrimitivesFrame) {

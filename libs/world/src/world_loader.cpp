@@ -1,5 +1,6 @@
 // World-model file loader: YAML (docs/world-model.md) -> validated WorldModel.
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <thread>
 #include <unordered_map>
@@ -146,16 +147,60 @@ Polyhedron polyhedron(const Node& node) {
   return out;
 }
 
+// An imported triangle soup: only the indices are checked (open, inconsistently wound and
+// degenerate triangles are all legal). Linear in the mesh's size: meshes of 100k triangles are
+// normal, so no per-edge bookkeeping as for polyhedra.
+TriangleMesh triangle_mesh(const Node& node) {
+  node.expect_keys({"vertices", "triangles"});
+  TriangleMesh out;
+  const Node vertices = node.at("vertices");
+  const std::size_t vertex_count = vertices.size();
+  if (vertex_count < 3) vertices.fail("a mesh needs at least 3 vertices");
+  out.vertices_m.reserve(vertex_count);
+  for (std::size_t i = 0; i < vertex_count; ++i) {
+    // as_vector3 rejects non-finite numbers; one beyond float's range would become infinite.
+    const Eigen::Vector3d v = as_vector3(vertices[i]);
+    if (!(v.array().abs() < 1e30).all()) vertices[i].fail("coordinate too large (limit 1e30 m)");
+    out.vertices_m.push_back(v.cast<float>());
+  }
+  const Node triangles = node.at("triangles");
+  const std::size_t triangle_count = triangles.size();
+  if (triangle_count == 0) triangles.fail("a mesh needs at least one triangle");
+  out.triangles.reserve(triangle_count);
+  const auto last = static_cast<std::int64_t>(vertex_count) - 1;
+  for (std::size_t t = 0; t < triangle_count; ++t) {
+    const Node triangle = triangles[t];
+    if (triangle.size() != 3) {
+      triangle.fail("a triangle needs 3 vertex indices, got " + std::to_string(triangle.size()));
+    }
+    std::array<std::uint32_t, 3> corners{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int64_t index = triangle[k].as_int();
+      if (index < 0 || index > last) {
+        triangle[k].fail("vertex index " + std::to_string(index) + " out of range [0, " +
+                         std::to_string(last) + "]");
+      }
+      corners[k] = static_cast<std::uint32_t>(index);
+    }
+    out.triangles.push_back(corners);
+  }
+  return out;
+}
+
 Primitive primitive(const Node& node, const WorldModel& world) {
-  node.expect_keys({"box", "cylinder", "polyhedron", "position", "orientation", "rpy", "yaw",
-                    "material", "colour"});
+  node.expect_keys({"box", "cylinder", "polyhedron", "mesh", "position", "orientation", "rpy",
+                    "yaw", "material", "colour"});
   Primitive out;
   const auto box = node.find("box");
   const auto cylinder = node.find("cylinder");
   const auto poly = node.find("polyhedron");
-  const int shapes = int(box.has_value()) + int(cylinder.has_value()) + int(poly.has_value());
-  if (shapes != 1) node.fail("a primitive needs exactly one of box, cylinder, polyhedron");
-  if (box) {
+  const auto mesh = node.find("mesh");
+  const int shapes = int(box.has_value()) + int(cylinder.has_value()) + int(poly.has_value()) +
+                     int(mesh.has_value());
+  if (shapes != 1) node.fail("a primitive needs exactly one of box, cylinder, polyhedron, mesh");
+  if (mesh) {
+    out.shape = triangle_mesh(*mesh);
+  } else if (box) {
     out.shape = Box{positive_vector3(*box)};
   } else if (cylinder) {
     cylinder->expect_keys({"radius", "height"});

@@ -26,8 +26,9 @@ std::string number(double value, int decimals) {
   return out;
 }
 
-constexpr int kMetre = 6;     // decimals: 1 um
-constexpr int kUnitless = 9;  // decimals: 1 nrad
+constexpr int kMetre = 6;      // decimals: 1 um
+constexpr int kMeshMetre = 4;  // decimals: 0.1 mm; mesh vertices are floats and many
+constexpr int kUnitless = 9;   // decimals: 1 nrad
 
 // "[a, b, ...]", appended piecewise: GCC 12 warns falsely (-Wrestrict, GCC bug 105651) on
 // `"[" + std::string` once inlined at -O2.
@@ -104,12 +105,38 @@ std::string orientation_value(const Eigen::Quaterniond& q_in, std::string* key) 
                     number(q.z(), kUnitless)});
 }
 
+// One flow-style line however big the mesh: appended in place, no temporary per number, so that
+// writing 100k triangles stays linear and quick.
+std::string triangle_mesh(const TriangleMesh& mesh) {
+  std::string out = "mesh: {vertices: [";
+  out.reserve(out.size() + mesh.vertices_m.size() * 32 + mesh.triangles.size() * 24 + 16);
+  for (std::size_t i = 0; i < mesh.vertices_m.size(); ++i) {
+    out += i ? ", [" : "[";
+    for (int k = 0; k < 3; ++k) {
+      if (k) out += ", ";
+      out += number(static_cast<double>(mesh.vertices_m[i][k]), kMeshMetre);
+    }
+    out += ']';
+  }
+  out += "], triangles: [";
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    out += t ? ", [" : "[";
+    for (int k = 0; k < 3; ++k) {
+      if (k) out += ", ";
+      out += std::to_string(mesh.triangles[t][k]);
+    }
+    out += ']';
+  }
+  return out + "]}";
+}
+
 std::string shape(const Shape& s) {
   if (const auto* box = std::get_if<Box>(&s)) return "box: " + vector3(box->size_m);
   if (const auto* cylinder = std::get_if<Cylinder>(&s)) {
     return "cylinder: {radius: " + number(cylinder->radius_m, kMetre) +
            ", height: " + number(cylinder->height_m, kMetre) + "}";
   }
+  if (const auto* mesh = std::get_if<TriangleMesh>(&s)) return triangle_mesh(*mesh);
   const auto& poly = std::get<Polyhedron>(s);
   std::string out = "polyhedron: {vertices: [";
   for (std::size_t i = 0; i < poly.vertices_m.size(); ++i) {

@@ -98,7 +98,7 @@ TEST(WorldLoader, EveryErrorNamesFileLineKeyAndWhat) {
       error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
                "    primitives:\n      - {box: [1, 1, 1], cylinder: {radius: 1, height: 1}}\n"),
       "w.yaml:6: objects[0].primitives[0]: a primitive needs exactly one of box, cylinder, "
-      "polyhedron");
+      "polyhedron, mesh");
   EXPECT_EQ(error_of("objects:\n  - id: a\n    type: door\n    position: [0, 0, 0]\n"
                      "    primitives:\n      - {box: [1, 1, 1], material: oak}\n"),
             "w.yaml:6: objects[0].primitives[0].material: unknown material 'oak'");

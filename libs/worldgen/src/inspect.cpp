@@ -17,6 +17,9 @@ WorldCounts count_world(const world::WorldModel& world) {
         ++counts.boxes;
       } else if (std::holds_alternative<world::Cylinder>(p.shape)) {
         ++counts.cylinders;
+      } else if (const auto* mesh = std::get_if<world::TriangleMesh>(&p.shape)) {
+        ++counts.meshes;
+        counts.mesh_triangles += mesh->triangles.size();
       } else {
         const auto& poly = std::get<world::Polyhedron>(p.shape);
         ++counts.polyhedra;
@@ -33,10 +36,33 @@ std::string describe(const WorldCounts& counts) {
   for (const auto& [type, n] : counts.by_type) {
     types += (types.empty() ? "" : ", ") + type + " " + std::to_string(n);
   }
-  return std::to_string(counts.objects) + " objects (" + types + "), " +
-         std::to_string(counts.boxes) + " boxes, " + std::to_string(counts.cylinders) +
-         " cylinders, " + std::to_string(counts.polyhedra) + " polyhedra";
+  std::string out = std::to_string(counts.objects) + " objects (" + types + "), " +
+                    std::to_string(counts.boxes) + " boxes, " + std::to_string(counts.cylinders) +
+                    " cylinders, " + std::to_string(counts.polyhedra) + " polyhedra";
+  if (counts.meshes > 0) {
+    out += ", " + std::to_string(counts.meshes) + " meshes (" +
+           std::to_string(counts.mesh_triangles) + " triangles)";
+  }
+  return out;
 }
+
+namespace {
+
+// What is wrong with an imported mesh, or "" (open and inconsistently wound meshes are fine).
+std::string check_mesh(const world::TriangleMesh& mesh) {
+  if (mesh.triangles.empty()) return "has no triangles";
+  for (const Eigen::Vector3f& v : mesh.vertices_m) {
+    if (!v.allFinite()) return "vertex not finite";
+  }
+  for (const auto& triangle : mesh.triangles) {
+    for (const std::uint32_t index : triangle) {
+      if (index >= mesh.vertices_m.size()) return "vertex index out of range";
+    }
+  }
+  return "";
+}
+
+}  // namespace
 
 std::vector<std::string> check_generated_world(const world::WorldModel& world) {
   std::vector<std::string> problems;
@@ -60,6 +86,9 @@ std::vector<std::string> check_generated_world(const world::WorldModel& world) {
       if (const auto* poly = std::get_if<world::Polyhedron>(&p.shape)) {
         const std::string what = check_polyhedron(*poly);
         if (!what.empty()) problems.push_back(id + ": polyhedron " + what);
+      } else if (const auto* mesh = std::get_if<world::TriangleMesh>(&p.shape)) {
+        const std::string what = check_mesh(*mesh);
+        if (!what.empty()) problems.push_back(id + ": mesh " + what);
       } else if (const auto* b = std::get_if<world::Box>(&p.shape)) {
         if (!((b->size_m.array() > 0.0).all())) problems.push_back(id + ": box size not positive");
       } else {

@@ -88,6 +88,18 @@ double polyhedron_area_m2(const world::Polyhedron& shape) {
   return area;
 }
 
+// One side of each triangle: an imported mesh is a surface, not necessarily a closed solid.
+double mesh_area_m2(const world::TriangleMesh& shape) {
+  double area = 0.0;
+  for (const auto& [a, b, c] : shape.triangles) {
+    const Eigen::Vector3d pa = shape.vertices_m[a].cast<double>();
+    area += 0.5 * (shape.vertices_m[b].cast<double>() - pa)
+                      .cross(shape.vertices_m[c].cast<double>() - pa)
+                      .norm();
+  }
+  return area;
+}
+
 }  // namespace
 
 double surface_area_m2(const world::Shape& shape) {
@@ -98,6 +110,7 @@ double surface_area_m2(const world::Shape& shape) {
   if (const auto* cylinder = std::get_if<world::Cylinder>(&shape)) {
     return 2.0 * std::numbers::pi * cylinder->radius_m * (cylinder->radius_m + cylinder->height_m);
   }
+  if (const auto* mesh = std::get_if<world::TriangleMesh>(&shape)) return mesh_area_m2(*mesh);
   return polyhedron_area_m2(std::get<world::Polyhedron>(shape));
 }
 

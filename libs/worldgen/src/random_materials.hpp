@@ -20,7 +20,7 @@ void set_material(world::WorldModel& world, const world::Material& material);
 // materials had light) or is one of randomized looks' lamps (`looks.lamp.*`, on or off).
 bool is_lamp(const world::WorldModel& world, const world::Primitive& primitive);
 
-// Surface area of a primitive's shape, m^2.
+// Surface area of a primitive's shape, m^2 (of a mesh: the sum of its triangles' areas, one side).
 double surface_area_m2(const world::Shape& shape);
 
 }  // namespace vsl::worldgen

@@ -10,13 +10,18 @@ namespace {
 
 constexpr double kTouchTolerance_m = 1e-4;  // boxes that only touch do not intersect
 
-// The primitive's own bounding box corners (primitive frame).
+// The primitive's own bounding box corners, or its vertices (primitive frame).
 std::vector<Eigen::Vector3d> local_points(const world::Shape& shape) {
   Eigen::Vector3d half = Eigen::Vector3d::Zero();
   if (const auto* box = std::get_if<world::Box>(&shape)) {
     half = box->size_m / 2.0;
   } else if (const auto* cylinder = std::get_if<world::Cylinder>(&shape)) {
     half = Eigen::Vector3d(cylinder->radius_m, cylinder->radius_m, cylinder->height_m / 2.0);
+  } else if (const auto* mesh = std::get_if<world::TriangleMesh>(&shape)) {
+    std::vector<Eigen::Vector3d> vertices;
+    vertices.reserve(mesh->vertices_m.size());
+    for (const Eigen::Vector3f& v : mesh->vertices_m) vertices.push_back(v.cast<double>());
+    return vertices;
   } else {
     return std::get<world::Polyhedron>(shape).vertices_m;
   }

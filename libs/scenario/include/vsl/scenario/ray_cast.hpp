@@ -3,7 +3,8 @@
 // an object, and where a spurious recognition would land on a surface.
 //
 // A ray is origin + t * direction with a unit direction, so t is a distance in metres. Solids are
-// closed: a ray that starts inside one hits it at its start.
+// closed: a ray that starts inside one hits it at its start. A TriangleMesh is a surface with no
+// inside: only its triangles are hit.
 #pragma once
 
 #include <Eigen/Core>
@@ -33,10 +34,14 @@ std::optional<Span> line_through_cylinder(const world::Cylinder& cylinder, const
 // Every t at which the line crosses a face of the polyhedron (plane hit, then point-in-polygon in
 // the face's plane; faces may be non-convex), sorted. Faces parallel to the ray are skipped.
 std::vector<double> polyhedron_crossings(const world::Polyhedron& polyhedron, const Ray& ray);
+// Every t at which the line crosses a triangle of the mesh (Möller–Trumbore, edges included),
+// sorted. Triangles parallel to the ray and degenerate ones are skipped.
+std::vector<double> mesh_crossings(const world::TriangleMesh& mesh, const Ray& ray);
 
 // The first t in [t_min_m, t_max_m] at which the ray is in the solid, or nullopt. For a polyhedron,
 // "in" is decided by the parity of the crossings before t_min_m (closed, consistently oriented
-// surfaces, as docs/world-model.md requires).
+// surfaces, as docs/world-model.md requires). For a mesh, the first crossing in the range: cost
+// linear in its triangles.
 std::optional<double> first_hit(const world::Shape& shape, const Ray& ray, double t_min_m,
                                 double t_max_m);
 

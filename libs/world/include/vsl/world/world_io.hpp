@@ -19,7 +19,8 @@ WorldModel load_world_from_string(const std::string& text, const std::string& so
 // documents (separated by `---`), which load_world parses on all cores.
 inline constexpr std::size_t kObjectsPerDocument = 10000;
 
-// Writes a world in the same format (round-trips through load_world up to 1e-6 m / 1e-9 rad).
+// Writes a world in the same format (round-trips through load_world up to 1e-6 m / 1e-9 rad;
+// mesh vertices to 1e-4 m).
 void write_world(const WorldModel& world, std::ostream& out);
 void write_world_file(const WorldModel& world, const std::string& path);
 

@@ -1,6 +1,7 @@
 // The world model, paper §2.2: two levels of abstraction.
-//  1. Geometric primitives (boxes, cylinders, general polyhedra), each with a transform and a
-//     colour/material. The simulator renders them; localization never needs them.
+//  1. Geometric primitives (boxes, cylinders, general polyhedra, imported triangle meshes), each
+//     with a transform and a colour/material. The simulator renders them; localization never
+//     needs them.
 //  2. Typed object-model instances O_i^m (id, type, pose, size, optional parent, the primitives
 //     that make them up). Their collection is the node set Xi of Eq. 5.
 // Frames: every object pose is world_T_object (metres, unit quaternion); every primitive pose is
@@ -10,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -88,7 +90,15 @@ struct Polyhedron {
   std::vector<std::vector<std::uint32_t>> faces;
 };
 
-using Shape = std::variant<Box, Cylinder, Polyhedron>;
+// Triangle soup from an imported mesh (CAD, URDF, SDF, VRML): need not be closed or consistently
+// oriented, so it is rendered two-sided and has no inside. Vertices in the primitive's frame (m).
+// Degenerate triangles (repeated or collinear corners) are allowed and ignored by the renderer.
+struct TriangleMesh {
+  std::vector<Eigen::Vector3f> vertices_m;  // float: meshes are large; 0.1 mm precision is plenty
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into vertices_m
+};
+
+using Shape = std::variant<Box, Cylinder, Polyhedron, TriangleMesh>;
 
 struct Primitive {
   Shape shape;
