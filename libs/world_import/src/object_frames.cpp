@@ -15,7 +15,7 @@ constexpr double kMaxFrontSlabM = 0.05;
 Eigen::Vector3d centroid_of_box(const std::vector<Eigen::Vector3d>& points) {
   Eigen::AlignedBox3d box;
   for (const Eigen::Vector3d& p : points) box.extend(p);
-  return points.empty() ? Eigen::Vector3d::Zero() : box.center();
+  return points.empty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
 }
 
 Eigen::Vector3d horizontal(const Eigen::Vector3d& v) {
@@ -250,7 +250,7 @@ std::vector<ObjectFrame> object_frames(const std::vector<Candidate>& candidates)
     for (const Eigen::Vector3d& p : c.world_points_m) everything.extend(p);
   }
   const Eigen::Vector3d scene_centre =
-      everything.isEmpty() ? Eigen::Vector3d::Zero() : everything.center();
+      everything.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(everything.center());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     if (c.reference == Reference::kFrontFaceCentre) {
