@@ -75,6 +75,65 @@ TEST(VslWorldImportCli, DryRunReportsWhatBecameWhatAndWritesNothing) {
   EXPECT_NE(result.out.find("[  1.000,  -0.270,   0.400]"), std::string::npos) << result.out;
 }
 
+// An SDF room (z up) and a VRML door (y up, as VRML has it) into one world, each placed.
+constexpr const char* kSdfRoom = R"(<?xml version="1.0"?>
+<sdf version="1.7"><model name="room"><static>true</static>
+  <link name="wall"><pose>0 0.5 1.2 0 0 0</pose>
+    <visual name="v"><geometry><box><size>4 0.1 2.4</size></box></geometry></visual></link>
+  <link name="cupboard"><pose>0 0 0.4 0 0 0</pose>
+    <visual name="v"><geometry><box><size>0.6 0.5 0.8</size></box></geometry></visual></link>
+  <link name="cupboard_door"><pose>0 -0.26 0.4 0 0 0</pose>
+    <visual name="v"><geometry><box><size>0.6 0.02 0.78</size></box></geometry></visual></link>
+  <link name="door_handle"><pose>0.22 -0.29 0.5 0 0 0</pose>
+    <visual name="v"><geometry><cylinder><radius>0.008</radius><length>0.2</length></cylinder>
+    </geometry></visual></link>
+  <joint name="hinge" type="revolute"><parent>cupboard</parent><child>cupboard_door</child>
+    <pose>-0.3 0 0 0 0 0</pose>
+    <axis><xyz>0 0 -1</xyz><limit><lower>0</lower><upper>1.6</upper></limit></axis></joint>
+  <joint name="handle_fix" type="fixed"><parent>cupboard_door</parent><child>door_handle</child>
+  </joint>
+</model></sdf>
+)";
+constexpr const char* kVrmlDoor = R"(#VRML V2.0 utf8
+DEF RoomDoor Transform { translation 0 1.0 0 children [
+  Shape { appearance Appearance { material Material { diffuseColor 0.6 0.4 0.2 } }
+          geometry Box { size 0.9 2.0 0.04 } }
+  DEF RoomDoorHandle Transform { translation 0.35 0 0.05 children [
+    Shape { geometry Box { size 0.12 0.02 0.02 } } ] }
+] }
+)";
+
+TEST(VslWorldImportCli, SeveralFormatsIntoOneWorldEachPlaced) {
+  const std::string sdf = write_temp("import_many/room.sdf", kSdfRoom);
+  const std::string vrml = write_temp("import_many/door.wrl", kVrmlDoor);
+  const std::string world = ::testing::TempDir() + "/import_many/home.yaml";
+  const std::vector<std::string> files{sdf, "--at", "5,0,0,0", vrml, "--y-up", "--at", "2,0,0,0"};
+  std::vector<std::string> dry{VSL_WORLD_BIN, "import"};
+  dry.insert(dry.end(), files.begin(), files.end());
+  dry.insert(dry.end(), {"--dry-run", "--list"});
+  auto result = run_command(dry);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  // The SDF door's front face, moved 5 m along x; the VRML door stood up and moved 2 m.
+  EXPECT_NE(result.out.find("room::cupboard_door                  door           "
+                            "[  5.000,  -0.270,   0.400]  front: its handle"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("RoomDoor                             door           "
+                            "[  2.000,  -0.020,   1.000]  front: its handle"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("RoomDoorHandle                       handle         "
+                            "[  2.350,  -0.050,   1.000]"),
+            std::string::npos)
+      << result.out;
+  std::vector<std::string> write{VSL_WORLD_BIN, "import"};
+  write.insert(write.end(), files.begin(), files.end());
+  write.insert(write.end(), {"-o", world});
+  result = run_command(write);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(run_command({VSL_WORLD_BIN, "check", world}).exit_code, 0);
+}
+
 TEST(VslWorldImportCli, BadInputIsOneLineAndExitCode2) {
   const std::string bad = write_temp("import_bad/broken.urdf", "<robot name='x'><link");
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
@@ -85,7 +144,12 @@ TEST(VslWorldImportCli, BadInputIsOneLineAndExitCode2) {
            {"import", bad, "--at", "1,2", "--dry-run"},
            {"import", bad},
            {"import", bad, "--dry-run", "--rules", "/nonexistent/rules.yaml"},
-           {"import", bad, "--bogus"}}) {
+           {"import", bad, "--bogus"},
+           {"import", "--y-up", bad, "--dry-run"},
+           {"import", write_temp("import_bad/garbage.wrl", "#VRML V2.0 utf8\nBogus { }\n"),
+            "--dry-run"},
+           {"import", write_temp("import_bad/garbage.sdf", "<sdf version='1.7'><model"),
+            "--dry-run"}}) {
     std::vector<std::string> command{VSL_WORLD_BIN};
     command.insert(command.end(), args.begin(), args.end());
     const auto result = run_command(command);

@@ -1,5 +1,7 @@
 #include "import_command.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +30,8 @@ fronts and windows are placed at the centre of their front face, handles at the 
 bar; the geometry is kept so that the simulated head can render the building.
   FILE                 a model file, in world coordinates unless --at follows it
   --at X,Y,Z,YAW       place the file before it: its origin at X,Y,Z (m), turned by YAW (rad)
+  --y-up               the file before it has y up (VRML's convention, many CAD exports);
+                       default z up (URDF, SDF, ROS), glTF and COLLADA files say their own
   -o, --output WORLD   the world file to write
   --dry-run            write nothing; report what would become what
   --list               with the report, every typed object and its reference point
@@ -98,6 +102,9 @@ Options parse(int argc, char** argv) {
       if (options.inputs.empty()) usage_error("--at must follow the file it places");
       if (options.inputs.back().at) usage_error("two --at for " + options.inputs.back().path);
       options.inputs.back().at = placement(value(i, arg));
+    } else if (arg == "--y-up") {
+      if (options.inputs.empty()) usage_error("--y-up must follow the file it turns");
+      options.inputs.back().y_up = true;
     } else if (arg == "--rules") {
       options.rules_file = value(i, arg);
     } else if (arg == "--package-path") {
@@ -144,7 +151,8 @@ int run_import(int argc, char** argv) {
     const world_import::TypeRules rules = options.rules_file.empty()
                                               ? world_import::TypeRules::built_in()
                                               : world_import::TypeRules::load(options.rules_file);
-    if (!options.quiet) {
+    // The status line is for a person watching; logs and pipes get the report alone.
+    if (!options.quiet && ::isatty(STDERR_FILENO)) {
       std::cerr << "vsl-world import: reading " << options.inputs.size() << " file"
                 << (options.inputs.size() == 1 ? "" : "s") << " ...\n";
     }

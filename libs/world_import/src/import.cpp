@@ -39,11 +39,15 @@ Scene read_scene(const std::string& path, ModelFormat format, const ReadOptions&
   return {};
 }
 
-void place(Scene& scene, const Placement& at) {
+// Moves a file's scene into the world: a quarter turn about x for a y-up file, then `at`.
+void place(Scene& scene, const Placement& at, bool y_up) {
   Eigen::Isometry3d world_T_file = Eigen::Isometry3d::Identity();
   world_T_file.translation() = at.position_m;
   world_T_file.linear() =
       Eigen::AngleAxisd(at.yaw_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  if (y_up) {
+    world_T_file.rotate(Eigen::AngleAxisd(0.5 * 3.14159265358979323846, Eigen::Vector3d::UnitX()));
+  }
   for (ScenePart& part : scene.parts) {
     part.world_T_part = world_T_file * part.world_T_part;
     part.world_joint_axis = world_T_file.linear() * part.world_joint_axis;
@@ -192,7 +196,7 @@ ImportResult import_world(const std::vector<ImportInput>& inputs, const ImportOp
   for (const ImportInput& input : inputs) {
     const ModelFormat format = model_format_of(input.path);
     Scene scene = read_scene(input.path, format, read_options);
-    if (input.at) place(scene, *input.at);
+    if (input.at || input.y_up) place(scene, input.at.value_or(Placement{}), input.y_up);
     report.files.push_back({input.path, format, scene.parts.size()});
     report.warnings.insert(report.warnings.end(), scene.warnings.begin(), scene.warnings.end());
     scenes.push_back(std::move(scene));

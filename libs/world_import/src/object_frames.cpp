@@ -249,8 +249,9 @@ std::vector<ObjectFrame> object_frames(const std::vector<Candidate>& candidates)
   for (const Candidate& c : candidates) {
     for (const Eigen::Vector3d& p : c.world_points_m) everything.extend(p);
   }
-  const Eigen::Vector3d scene_centre =
-      everything.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(everything.center());
+  const Eigen::Vector3d scene_centre = everything.isEmpty()
+                                           ? Eigen::Vector3d(Eigen::Vector3d::Zero())
+                                           : Eigen::Vector3d(everything.center());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
     if (c.reference == Reference::kFrontFaceCentre) {

@@ -34,6 +34,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "quiet_parsers.hpp"
 #include "scene.hpp"
 #include "vsl/config/node.hpp"
 
@@ -200,7 +201,11 @@ class SdfSceneReader {
     config.SetFindCallback(
         [roots = roots_](const std::string& uri) { return find_model_path(uri, roots); });
     sdf::Root root;
-    const sdf::Errors errors = root.Load(path_, config);
+    sdf::Errors errors;
+    {
+      const QuietParsers quiet;  // the errors come back in `errors`
+      errors = root.Load(path_, config);
+    }
     const bool loaded = root.Model() != nullptr || root.WorldCount() > 0;
     for (const auto& error : errors) {
       if (!loaded || !tolerated(error.Code())) {

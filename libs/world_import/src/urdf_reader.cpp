@@ -1,13 +1,12 @@
 // URDF through urdfdom: every link is a part, placed by forward kinematics from the root at the
 // joint positions given (0 when not given: doors closed, drawers in).
-#include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 
+#include "quiet_parsers.hpp"
 #include "scene.hpp"
 #include "vsl/config/node.hpp"
 
@@ -45,30 +44,15 @@ std::uint8_t to_byte(float channel) {
   return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(channel, 0.0f, 1.0f)));
 }
 
-// urdfdom reports through console_bridge, whose output handler is process-global: capture the
-// first error of one parse as the error line, and keep its chatter off the terminal.
-class CapturedLog : public console_bridge::OutputHandler {
- public:
-  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first_error.empty()) {
-      first_error = text;
-    }
-  }
-  std::string first_error;
-};
-std::mutex console_bridge_mutex;
-
 urdf::ModelInterfaceSharedPtr parse(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw config::Error(path + ": cannot open file");
   const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::lock_guard lock(console_bridge_mutex);
-  CapturedLog log;
-  console_bridge::useOutputHandler(&log);
+  const QuietParsers quiet;
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
-  console_bridge::restorePreviousOutputHandler();
   if (!model) {
-    std::string reason = log.first_error.empty() ? "not a valid URDF file" : log.first_error;
+    std::string reason =
+        quiet.first_error().empty() ? "not a valid URDF file" : quiet.first_error();
     std::replace(reason.begin(), reason.end(), '\n', ' ');
     throw config::Error(path + ": " + reason);
   }

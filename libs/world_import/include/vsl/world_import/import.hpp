@@ -33,6 +33,9 @@ struct Placement {
 struct ImportInput {
   std::string path;
   std::optional<Placement> at;  // unset: the file is in world coordinates
+  // The file's y axis is up (VRML's convention, many CAD exports): a quarter turn about x takes
+  // it to vsl's z up before `at` places it.
+  bool y_up = false;
 };
 
 struct ImportOptions {
