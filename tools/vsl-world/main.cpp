@@ -1,4 +1,5 @@
 // vsl-world: check a world-model file, or print what is in it.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -18,6 +19,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: vsl-world check FILE
        vsl-world stats FILE [--config FILE] [--link-threshold METRES] [--node-types T,T,...]
+                       [--list TYPES]
        vsl-world import FILE... -o WORLD.yaml [--rules FILE] [--dry-run] ...  (import --help)
 
 Validates a vsl world-model file (format: docs/world-model.md).
@@ -28,6 +30,8 @@ options:
   --config FILE        read the world_graph section (link_threshold_m, node_types) of a
                        localizer config such as config/localizer.yaml
   --link-threshold M   varpi of Eq. 6, metres (default 4; overrides --config)
+  --list TYPES         also list every object of these types (comma-separated), with its
+                       position
   --node-types LIST    only these object types become graph nodes (default: all; overrides
                        --config)
 exit codes: 0 ok, 2 bad file or usage
@@ -42,6 +46,7 @@ struct Options {
   std::string command;
   std::string file;
   vsl::world::WorldGraphOptions graph;
+  std::vector<std::string> list_types;  // stats --list: these types' objects, one per line
 };
 
 [[noreturn]] void usage_error(const std::string& what) {
@@ -52,16 +57,18 @@ struct Options {
 Options parse(int argc, char** argv) {
   Options options;
   std::vector<std::string> positional;
-  std::optional<std::string> config_file, threshold, node_types;
+  std::optional<std::string> config_file, threshold, node_types, list_types;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--link-threshold" || arg == "--node-types" || arg == "--config") {
+    } else if (arg == "--link-threshold" || arg == "--node-types" || arg == "--config" ||
+               arg == "--list") {
       if (i + 1 >= argc) usage_error(arg + " needs a value");
       (arg == "--config"           ? config_file
        : arg == "--link-threshold" ? threshold
+       : arg == "--list"           ? list_types
                                    : node_types) = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
       usage_error("unknown option " + arg);
@@ -88,6 +95,12 @@ Options parse(int argc, char** argv) {
       if (used != threshold->size() || !(options.graph.link_threshold_m > 0)) throw 0;
     } catch (...) {
       usage_error("--link-threshold must be a positive number of metres, got '" + *threshold + "'");
+    }
+  }
+  if (list_types) {
+    std::stringstream list(*list_types);
+    for (std::string type; std::getline(list, type, ',');) {
+      if (!type.empty()) options.list_types.push_back(type);
     }
   }
   if (node_types) {
@@ -174,6 +187,18 @@ void print_stats(const vsl::world::WorldModel& world, const Options& options, do
                 lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z(), size.x(), size.y(), size.z());
   }
   std::printf("time: load %.3f s, graph %.3f s\n", load_s, graph_s);
+  if (!options.list_types.empty()) {
+    std::printf("objects of the listed types (id, type, position in the world frame, m):\n");
+    for (const auto& object : world.objects) {
+      if (std::find(options.list_types.begin(), options.list_types.end(), object.type) ==
+          options.list_types.end()) {
+        continue;
+      }
+      const Eigen::Vector3d& p = object.world_position_m;
+      std::printf("  %-36s %-14s [%7.3f, %7.3f, %7.3f]\n", object.id.c_str(), object.type.c_str(),
+                  p.x(), p.y(), p.z());
+    }
+  }
 }
 
 }  // namespace

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <numbers>
+#include <utility>
 
 #include "vsl/config/node.hpp"
 
@@ -34,6 +37,46 @@ Floor make_floor(const CollisionScene& scene, std::size_t object_index) {
   return floor;
 }
 
+// An imported mesh (a whole building's walls in one COLLADA node) is no solid block: it stands
+// where its triangles are. Each triangle in the body's height range blocks its own footprint;
+// triangles wider than a quarter metre both ways (a diagonal wall, a table top) are split into
+// four until they are not, so that the footprints hug the surface. Footprints are then merged
+// per 0.25 m cell, which keeps the obstacle count at most that of the cells the mesh crosses.
+void add_mesh_obstacles(const world::TriangleMesh& mesh, const Eigen::Isometry3d& world_T_primitive,
+                        double z_min_m, double z_max_m, std::vector<Eigen::AlignedBox2d>& out) {
+  constexpr double kCellM = 0.25;
+  std::map<std::pair<std::int64_t, std::int64_t>, Eigen::AlignedBox2d> by_cell;
+  const auto add = [&](const Eigen::AlignedBox2d& box) {
+    const Eigen::Vector2d c = box.center() / kCellM;
+    by_cell[{static_cast<std::int64_t>(std::floor(c.x())),
+             static_cast<std::int64_t>(std::floor(c.y()))}]
+        .extend(box);
+  };
+  const auto split = [&](auto&& self, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                         const Eigen::Vector3d& c, int depth) -> void {
+    Eigen::AlignedBox3d box(a);
+    box.extend(b);
+    box.extend(c);
+    if (box.max().z() < z_min_m || box.min().z() > z_max_m) return;
+    const Eigen::Vector3d size = box.sizes();
+    if (depth == 0 || size.x() <= kCellM || size.y() <= kCellM) {
+      add(Eigen::AlignedBox2d(box.min().head<2>(), box.max().head<2>()));
+      return;
+    }
+    const Eigen::Vector3d ab = (a + b) / 2, bc = (b + c) / 2, ca = (c + a) / 2;
+    self(self, a, ab, ca, depth - 1);
+    self(self, ab, b, bc, depth - 1);
+    self(self, ca, bc, c, depth - 1);
+    self(self, ab, bc, ca, depth - 1);
+  };
+  for (const auto& t : mesh.triangles) {
+    split(split, world_T_primitive * mesh.vertices_m[t[0]].cast<double>(),
+          world_T_primitive * mesh.vertices_m[t[1]].cast<double>(),
+          world_T_primitive * mesh.vertices_m[t[2]].cast<double>(), 8);
+  }
+  for (const auto& [cell, box] : by_cell) out.push_back(box);
+}
+
 }  // namespace
 
 FreeSpace::FreeSpace(const CollisionScene& scene, PoseSamplingOptions options, double body_height_m)
@@ -63,7 +106,13 @@ FreeSpace::FreeSpace(const CollisionScene& scene, PoseSamplingOptions options, d
         Eigen::Vector3d(floor.world_footprint.max().x(), floor.world_footprint.max().y(),
                         floor.world_top_z_m + body_height_m));
     for (const std::uint32_t index : scene.primitives_in(body)) {
-      const Eigen::AlignedBox3d& box = scene.primitives()[index].world_box;
+      const ScenePrimitive& primitive = scene.primitives()[index];
+      if (const auto* mesh = std::get_if<world::TriangleMesh>(primitive.shape)) {
+        add_mesh_obstacles(*mesh, primitive.primitive_T_world.inverse(Eigen::Isometry),
+                           body.min().z(), body.max().z(), floor.obstacles);
+        continue;
+      }
+      const Eigen::AlignedBox3d& box = primitive.world_box;
       floor.obstacles.emplace_back(box.min().head<2>(), box.max().head<2>());
     }
   }

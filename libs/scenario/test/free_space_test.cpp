@@ -94,6 +94,37 @@ TEST(FreeSpace, KeepsTheFootprintOffAnObstacleAndIgnoresLowOnes) {
   }
 }
 
+// An imported building's walls come as one mesh around the rooms: the robot stands between the
+// walls, not outside the mesh's bounding box.
+TEST(FreeSpace, AMeshOfWallsBlocksOnlyWhereItsTrianglesAre) {
+  world::WorldModel world;
+  testing::add_floor(world, 6.0);
+  auto& walls = testing::add_object(world, "walls", "wall", {0, 0, 0});
+  world::TriangleMesh mesh;
+  // Two walls as vertical quads: x = -2 (along y) and a diagonal from (0, -2) to (2, 0).
+  const auto quad = [&](Eigen::Vector2f a, Eigen::Vector2f b) {
+    const auto base = static_cast<std::uint32_t>(mesh.vertices_m.size());
+    mesh.vertices_m.insert(
+        mesh.vertices_m.end(),
+        {{a.x(), a.y(), 0.f}, {b.x(), b.y(), 0.f}, {b.x(), b.y(), 2.5f}, {a.x(), a.y(), 2.5f}});
+    mesh.triangles.push_back({base, base + 1, base + 2});
+    mesh.triangles.push_back({base, base + 2, base + 3});
+  };
+  quad({-2.f, -2.f}, {-2.f, 2.f});
+  quad({0.f, -2.f}, {2.f, 0.f});
+  world::Primitive primitive;
+  primitive.shape = mesh;
+  walls.primitives.push_back(primitive);
+  const CollisionScene scene(world);
+  const FreeSpace space(scene, PoseSamplingOptions{}, 1.6);
+  const Floor& floor = space.floors().front();
+  EXPECT_TRUE(space.is_free(floor, {-1.0, 0.0}));  // between the walls
+  EXPECT_TRUE(space.is_free(floor, {0.0, 1.0}));
+  EXPECT_FALSE(space.is_free(floor, {-1.9, 0.0}));  // the disc reaches the wall at x = -2
+  EXPECT_FALSE(space.is_free(floor, {1.0, -1.0}));  // on the diagonal
+  EXPECT_TRUE(space.is_free(floor, {-0.5, 1.5}));   // far from the diagonal's triangles
+}
+
 TEST(FreeSpace, AWorldWithoutFloorIsAnError) {
   world::WorldModel world;
   world.name = "bare";
