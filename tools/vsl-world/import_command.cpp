@@ -32,6 +32,8 @@ bar; the geometry is kept so that the simulated head can render the building.
   --at X,Y,Z,YAW       place the file before it: its origin at X,Y,Z (m), turned by YAW (rad)
   --y-up               the file before it has y up (VRML's convention, many CAD exports);
                        default z up (URDF, SDF, ROS), glTF and COLLADA files say their own
+  --scale S            the file before it is in other units: metres = S x its numbers
+                       (0.001 for millimetres, 0.0254 for inches)
   -o, --output WORLD   the world file to write
   --dry-run            write nothing; report what would become what
   --list               with the report, every typed object and its reference point
@@ -105,6 +107,11 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--y-up") {
       if (options.inputs.empty()) usage_error("--y-up must follow the file it turns");
       options.inputs.back().y_up = true;
+    } else if (arg == "--scale") {
+      if (options.inputs.empty()) usage_error("--scale must follow the file it scales");
+      const double scale = number(value(i, arg), arg);
+      if (!(scale > 0.0) || scale > 1e6) usage_error("--scale must be a positive factor");
+      options.inputs.back().scale = scale;
     } else if (arg == "--rules") {
       options.rules_file = value(i, arg);
     } else if (arg == "--package-path") {

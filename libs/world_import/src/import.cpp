@@ -40,6 +40,32 @@ Scene read_scene(const std::string& path, ModelFormat format, const ReadOptions&
 }
 
 // Moves a file's scene into the world: a quarter turn about x for a y-up file, then `at`.
+// Scales a file's scene into metres (a file in millimetres: 0.001): positions and shapes alike,
+// so that frames stay rigid.
+void scale_scene(Scene& scene, double scale) {
+  for (ScenePart& part : scene.parts) {
+    part.world_T_part.translation() *= scale;
+    part.world_joint_point_m *= scale;
+    if (part.joint == JointKind::prismatic) {
+      part.joint_lower *= scale;
+      part.joint_upper *= scale;
+    }
+    for (PartGeometry& geometry : part.geometry) {
+      geometry.world_T_geometry.translation() *= scale;
+      if (auto* box = std::get_if<world::Box>(&geometry.shape)) {
+        box->size_m *= scale;
+      } else if (auto* cylinder = std::get_if<world::Cylinder>(&geometry.shape)) {
+        cylinder->radius_m *= scale;
+        cylinder->height_m *= scale;
+      } else {
+        for (Eigen::Vector3f& v : std::get<TriangleSoup>(geometry.shape).vertices_m) {
+          v *= static_cast<float>(scale);
+        }
+      }
+    }
+  }
+}
+
 void place(Scene& scene, const Placement& at, bool y_up) {
   Eigen::Isometry3d world_T_file = Eigen::Isometry3d::Identity();
   world_T_file.translation() = at.position_m;
@@ -196,12 +222,30 @@ ImportResult import_world(const std::vector<ImportInput>& inputs, const ImportOp
   for (const ImportInput& input : inputs) {
     const ModelFormat format = model_format_of(input.path);
     Scene scene = read_scene(input.path, format, read_options);
+    if (input.scale != 1.0) scale_scene(scene, input.scale);
     if (input.at || input.y_up) place(scene, input.at.value_or(Placement{}), input.y_up);
     report.files.push_back({input.path, format, scene.parts.size()});
     report.warnings.insert(report.warnings.end(), scene.warnings.begin(), scene.warnings.end());
     scenes.push_back(std::move(scene));
   }
   const std::vector<Part> parts = collect_parts(scenes);
+  // A building is not half a kilometre long: such a file is most likely in millimetres or inches.
+  for (const Scene& scene : scenes) {
+    Eigen::AlignedBox3d bounds;
+    std::vector<Eigen::Vector3d> points;
+    for (const ScenePart& part : scene.parts) {
+      for (const PartGeometry& g : part.geometry) {
+        points.clear();
+        append_world_points(g, points);
+        for (const Eigen::Vector3d& p : points) bounds.extend(p);
+      }
+    }
+    if (!bounds.isEmpty() && bounds.sizes().maxCoeff() > 500.0) {
+      report.warnings.push_back(scene.source + ": spans " +
+                                std::to_string(static_cast<long>(bounds.sizes().maxCoeff())) +
+                                " m; if it is in millimetres, import it with --scale 0.001");
+    }
+  }
 
   // Types, then the parts that become objects: those with geometry that no rule left out.
   std::vector<int> candidate_of(parts.size(), -1);

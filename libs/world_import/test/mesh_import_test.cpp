@@ -74,6 +74,21 @@ TEST_F(MeshImport, APlacedCopyMovesAndKeepsItsIdsApart) {
   EXPECT_LT((door.world_position_m - Eigen::Vector3d(3, 0.02, 0.4)).norm(), 1e-3);
 }
 
+TEST_F(MeshImport, AScaleTakesAFileInOtherUnitsToMetres) {
+  ImportInput twice{obj_, std::nullopt};
+  twice.scale = 2.0;
+  const ImportResult result = import_world({twice}, {}, TypeRules::built_in());
+  const world::ObjectModel& door = result.world.objects[*result.world.find("CabinetDoor")];
+  EXPECT_LT((door.world_position_m - Eigen::Vector3d(0, -0.04, 0.8)).norm(), 1e-3);
+  EXPECT_LT((*door.size_m - Eigen::Vector3d(1.2, 0.04, 1.56)).norm(), 1e-3);
+  EXPECT_TRUE(result.report.warnings.empty());
+  ImportInput millimetres{obj_, std::nullopt};
+  millimetres.scale = 1000.0;  // as if metres were read as millimetres: far too big
+  const ImportResult huge = import_world({millimetres}, {}, TypeRules::built_in());
+  ASSERT_EQ(huge.report.warnings.size(), 1u);
+  EXPECT_NE(huge.report.warnings[0].find("--scale 0.001"), std::string::npos);
+}
+
 TEST_F(MeshImport, WithoutRulesUnknownNamesAreReported) {
   const ImportResult result = import_world({{obj_, std::nullopt}}, {}, TypeRules::built_in());
   ASSERT_EQ(result.report.unmatched.size(), 1u);

@@ -36,6 +36,9 @@ struct ImportInput {
   // The file's y axis is up (VRML's convention, many CAD exports): a quarter turn about x takes
   // it to vsl's z up before `at` places it.
   bool y_up = false;
+  // Multiplies the file's coordinates first: 0.001 for a file in millimetres (Simox, many CAD
+  // exports), 0.0254 for inches.
+  double scale = 1.0;
 };
 
 struct ImportOptions {
