@@ -2,6 +2,7 @@
 // progress (LOCALIZER_STATUS) and prints the POSE_ESTIMATE beside the simulator's ground truth
 // (GROUND_TRUTH_POSE) when there is one. tools/demo and the pipeline tests drive the daemons
 // with it; on a robot it is how an operator asks "where am I?".
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -108,9 +109,11 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--request-id") {
       const std::string text = value();
       char* end = nullptr;
+      errno = 0;
       options.request_id = std::strtoll(text.c_str(), &end, 10);
-      if (*end != '\0' || options.request_id <= 0) {
-        usage_error("--request-id: '" + text + "' is not a positive integer");
+      // strtoll clamps what does not fit to INT64_MAX and says so only in errno.
+      if (text.empty() || *end != '\0' || errno == ERANGE || options.request_id <= 0) {
+        usage_error("--request-id: '" + text + "' is not a positive integer below 2^63");
       }
     } else if (arg == "--reason") {
       options.reason = value();

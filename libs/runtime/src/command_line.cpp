@@ -1,5 +1,7 @@
 #include "vsl/runtime/command_line.hpp"
 
+#include "vsl/runtime/lcm_url.hpp"
+
 #include <string_view>
 
 #include "vsl/runtime/config.hpp"
@@ -37,6 +39,9 @@ CommandLine parse_command_line(int argc, const char* const* argv) {
       if (url->find("://") == std::string::npos) {
         throw UsageError("option --lcm-url: expected an LCM URL such as " +
                          std::string(kDefaultLcmUrl) + ", got '" + *url + "'");
+      }
+      if (const std::string problem = lcm_url_problem(*url); !problem.empty()) {
+        throw UsageError("option --lcm-url '" + *url + "': " + problem);
       }
       out.lcm_url = std::move(url);
     } else if (arg.rfind("-", 0) == 0) {

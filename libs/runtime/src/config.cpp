@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "vsl/config/node.hpp"
+#include "vsl/runtime/lcm_url.hpp"
 
 namespace vsl::runtime {
 
@@ -113,9 +114,14 @@ RuntimeConfig read_runtime_section(const config::Node& section) {
           "file:///path/to/log?speed=1, got '" +
           out.lcm_url + "'");
     }
+    if (const std::string problem = lcm_url_problem(out.lcm_url); !problem.empty()) {
+      url->fail("'" + out.lcm_url + "': " + problem);
+    }
   }
   if (const auto period = section.find("heartbeat_period_s")) {
-    out.heartbeat_period_s = period->as_positive_double();
+    // Below 10 ms the loop would do little but beat; above a minute a watcher could not tell a
+    // hung daemon from a quiet one (and 1e-10 s once divided by zero).
+    out.heartbeat_period_s = period->as_double_in(kMinHeartbeatPeriodS, kMaxHeartbeatPeriodS);
   }
   if (const auto level = section.find("log_level")) {
     const std::string text = level->as_string();

@@ -58,8 +58,9 @@ struct Daemon::Impl {
 
   Impl(RuntimeConfig config_in, Logger log_in)
       : signals({SIGINT, SIGTERM}), config(std::move(config_in)), log(std::move(log_in)) {
-    if (!(config.heartbeat_period_s > 0.0) || !std::isfinite(config.heartbeat_period_s)) {
-      throw std::invalid_argument("heartbeat_period_s must be positive");
+    if (!(config.heartbeat_period_s >= kMinHeartbeatPeriodS &&
+          config.heartbeat_period_s <= kMaxHeartbeatPeriodS)) {
+      throw std::invalid_argument("heartbeat_period_s must be within [0.01, 60] s");
     }
     heartbeat_period = std::chrono::duration_cast<std::chrono::nanoseconds>(
         std::chrono::duration<double>(config.heartbeat_period_s));

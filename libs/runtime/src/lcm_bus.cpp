@@ -2,6 +2,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <exception>
 #include <list>
 #include <stdexcept>
@@ -21,6 +24,49 @@ std::string escape_regex(const std::string& channel) {
   }
   return out;
 }
+
+// liblcm explains why it cannot open a URL on stderr, itself. While it opens one, its stderr goes
+// to a temporary file instead, so that the daemon's own error can carry the reason in one line.
+class CapturedStderr {
+ public:
+  CapturedStderr() : file_(std::tmpfile()) {
+    std::fflush(stderr);
+    if (file_ != nullptr) saved_ = ::dup(STDERR_FILENO);
+    if (saved_ >= 0) ::dup2(::fileno(file_), STDERR_FILENO);
+  }
+  ~CapturedStderr() { restore(); }
+  CapturedStderr(const CapturedStderr&) = delete;
+  CapturedStderr& operator=(const CapturedStderr&) = delete;
+
+  // Puts stderr back and returns what was written to it, on one line.
+  std::string release() {
+    restore();
+    std::string text;
+    if (file_ == nullptr) return text;
+    std::rewind(file_);
+    char buffer[512];
+    while (text.size() < 2000 && std::fgets(buffer, sizeof buffer, file_) != nullptr) {
+      text += buffer;
+    }
+    for (char& c : text) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
+  }
+
+ private:
+  void restore() {
+    if (saved_ >= 0) {
+      std::fflush(stderr);
+      ::dup2(saved_, STDERR_FILENO);
+      ::close(saved_);
+      saved_ = -1;
+    }
+  }
+  std::FILE* file_;
+  int saved_ = -1;
+};
 
 }  // namespace
 
@@ -54,10 +100,13 @@ struct LcmBus::Impl {
   bool publish_failure_logged = false;
 };
 
-LcmBus::LcmBus(std::string url, Logger log)
-    : Bus(std::move(log)), impl_(std::make_unique<Impl>(std::move(url))) {
+LcmBus::LcmBus(std::string url, Logger log) : Bus(std::move(log)) {
+  CapturedStderr captured;
+  impl_ = std::make_unique<Impl>(std::move(url));
+  const std::string said = captured.release();
   if (!impl_->lcm.good()) {
-    throw std::runtime_error("cannot open LCM URL '" + impl_->url + "'");
+    throw std::runtime_error("cannot open LCM URL '" + impl_->url + "'" +
+                             (said.empty() ? "" : ": liblcm says: " + said));
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -121,6 +122,16 @@ TEST_F(runtime_daemon_main, UnknownOptionIsOneLineAndExit2) {
   EXPECT_EQ(body_calls_, 0);
 }
 
+// systemd's RestartPreventExitStatus=2 keeps a daemon down on a usage error; a bad URL is one.
+TEST_F(runtime_daemon_main, MalformedLcmUrlIsOneLineAndExit2) {
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"--lcm-url", "udpm://239.255.76.67:99999"}), 2);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+            "vsl-test: option --lcm-url 'udpm://239.255.76.67:99999': expected a port 1-65535, "
+            "got '99999' (try --help)\n");
+  EXPECT_EQ(body_calls_, 0);
+}
+
 TEST_F(runtime_daemon_main, BadRuntimeSectionIsOneLineAndExit2) {
   const std::string path = write_config("runtime:\n  lcm_url: memq://\n  log_levle: debug\n");
   ::testing::internal::CaptureStderr();
@@ -165,12 +176,25 @@ TEST_F(runtime_daemon_main, NoConfigMeansDefaults) {
   EXPECT_EQ(seen_value_, 0);
 }
 
-TEST_F(runtime_daemon_main, UnopenableBusExits1) {
+// A well-formed URL liblcm cannot open (here a log file that is not there) is a start-up
+// failure, not a usage error: exit code 1, one line with liblcm's reason.
+TEST_F(runtime_daemon_main, UnopenableBusExits1WithOneLine) {
   ::testing::internal::CaptureStderr();
-  EXPECT_EQ(run({"--lcm-url", "bogus://x"}), 1);
+  EXPECT_EQ(run({"--lcm-url", "file:///nonexistent/session.lcmlog?mode=r"}), 1);
   const std::string err = ::testing::internal::GetCapturedStderr();
-  EXPECT_NE(err.find("vsl-test: cannot open LCM URL 'bogus://x'\n"), std::string::npos) << err;
+  EXPECT_EQ(
+      err.rfind("vsl-test: cannot open LCM URL 'file:///nonexistent/session.lcmlog?mode=r'", 0), 0u)
+      << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_EQ(body_calls_, 0);
+}
+
+TEST_F(runtime_daemon_main, UnknownLcmProviderIsAUsageError) {
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"--lcm-url", "bogus://x"}), 2);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(),
+            "vsl-test: option --lcm-url 'bogus://x': unknown provider 'bogus' (liblcm has udpm, "
+            "mpudpm, memq, file, tcpq) (try --help)\n");
 }
 
 }  // namespace

@@ -63,6 +63,21 @@ TEST(runtime_config, ChannelLookupByKey) {
   }
 }
 
+// 1e-10 s once died of SIGFPE at the first beat, 1e300 s beat 150,000 times a second.
+TEST(runtime_config, HeartbeatPeriodOutsideItsRangeIsRefused) {
+  EXPECT_EQ(error_of("runtime:\n  heartbeat_period_s: 1e-10\n"),
+            "test.yaml:2: runtime.heartbeat_period_s: must be in [0.01, 60], got 1e-10");
+  EXPECT_EQ(error_of("runtime:\n  heartbeat_period_s: 1e300\n"),
+            "test.yaml:2: runtime.heartbeat_period_s: must be in [0.01, 60], got 1e+300");
+  EXPECT_EQ(error_of("runtime:\n  heartbeat_period_s: 0.01\n"), "(no error)");
+}
+
+TEST(runtime_config, MalformedLcmUrlIsRefusedAtLoad) {
+  EXPECT_EQ(error_of("runtime:\n  lcm_url: udpm://10.0.0.1:7667\n"),
+            "test.yaml:2: runtime.lcm_url: 'udpm://10.0.0.1:7667': expected an IPv4 multicast "
+            "address (224.0.0.0 to 239.255.255.255), got '10.0.0.1'");
+}
+
 TEST(runtime_config, UnknownKeyIsNamed) {
   EXPECT_EQ(error_of("runtime:\n  lcm_url: memq://\n  heartbeat_period: 2\n"),
             "test.yaml:3: runtime.heartbeat_period: unknown key (allowed: lcm_url, "
@@ -73,7 +88,7 @@ TEST(runtime_config, BadTypes) {
   EXPECT_EQ(error_of("runtime:\n  heartbeat_period_s: fast\n"),
             "test.yaml:2: runtime.heartbeat_period_s: expected a number, got 'fast'");
   EXPECT_EQ(error_of("runtime:\n  heartbeat_period_s: 0\n"),
-            "test.yaml:2: runtime.heartbeat_period_s: must be positive, got 0");
+            "test.yaml:2: runtime.heartbeat_period_s: must be in [0.01, 60], got 0");
   EXPECT_EQ(error_of("runtime:\n  lcm_url: [a, b]\n"),
             "test.yaml:2: runtime.lcm_url: expected text, got a list");
   EXPECT_EQ(error_of("runtime: 3\n"), "test.yaml:1: runtime: expected a map of keys, got '3'");

@@ -185,7 +185,7 @@ TEST(runtime_daemon, NewestOnlyMalformedIsADecodeErrorNotACrash) {
 }
 
 TEST(runtime_daemon, HeartbeatCarriesStateAndCounters) {
-  MemqDaemon d(0.005);
+  MemqDaemon d(0.01);  // the shortest period allowed
   std::vector<vsl::daemon_heartbeat_t> beats;
   d.daemon->subscribe<vsl::daemon_heartbeat_t>(d.daemon->channels().heartbeat,
                                                [&](const vsl::daemon_heartbeat_t& m, std::int64_t) {

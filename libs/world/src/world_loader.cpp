@@ -12,11 +12,26 @@
 namespace vsl::world {
 namespace {
 
-using config::as_vector3;
 using config::Node;
 
+// A world spans at most 100 km. Bigger numbers are typos or hostile input, and the renderer's
+// rasterizer and the grids over the world overflow long before 1e308 m.
+constexpr double kMaxCoordinateM = 1e5;
+
+Eigen::Vector3d bounded_vector3(const Node& node) {
+  const Eigen::Vector3d v = config::as_vector3(node);
+  if (!(v.array().abs() <= kMaxCoordinateM).all()) node.fail("beyond 100 km (limit 1e5 m)");
+  return v;
+}
+
+double length_m(const Node& node) {
+  const double value = node.as_positive_double();
+  if (value > kMaxCoordinateM) node.fail("beyond 100 km (limit 1e5 m)");
+  return value;
+}
+
 Eigen::Vector3d positive_vector3(const Node& node) {
-  const Eigen::Vector3d v = as_vector3(node);
+  const Eigen::Vector3d v = bounded_vector3(node);
   if (!(v.array() > 0.0).all()) node.fail("every extent must be positive");
   return v;
 }
@@ -100,7 +115,7 @@ Polyhedron polyhedron(const Node& node) {
   Polyhedron out;
   const Node vertices = node.at("vertices");
   for (std::size_t i = 0; i < vertices.size(); ++i)
-    out.vertices_m.push_back(as_vector3(vertices[i]));
+    out.vertices_m.push_back(bounded_vector3(vertices[i]));
   if (out.vertices_m.size() < 4) vertices.fail("a polyhedron needs at least 4 vertices");
   const Node faces = node.at("faces");
   if (faces.size() < 4) faces.fail("a polyhedron needs at least 4 faces");
@@ -158,9 +173,8 @@ TriangleMesh triangle_mesh(const Node& node) {
   if (vertex_count < 3) vertices.fail("a mesh needs at least 3 vertices");
   out.vertices_m.reserve(vertex_count);
   for (std::size_t i = 0; i < vertex_count; ++i) {
-    // as_vector3 rejects non-finite numbers; one beyond float's range would become infinite.
-    const Eigen::Vector3d v = as_vector3(vertices[i]);
-    if (!(v.array().abs() < 1e30).all()) vertices[i].fail("coordinate too large (limit 1e30 m)");
+    // Within 100 km, so well inside float's range.
+    const Eigen::Vector3d v = bounded_vector3(vertices[i]);
     out.vertices_m.push_back(v.cast<float>());
   }
   const Node triangles = node.at("triangles");
@@ -204,12 +218,12 @@ Primitive primitive(const Node& node, const WorldModel& world) {
     out.shape = Box{positive_vector3(*box)};
   } else if (cylinder) {
     cylinder->expect_keys({"radius", "height"});
-    out.shape = Cylinder{cylinder->at("radius").as_positive_double(),
-                         cylinder->at("height").as_positive_double()};
+    out.shape = Cylinder{length_m(cylinder->at("radius")), length_m(cylinder->at("height"))};
   } else {
     out.shape = polyhedron(*poly);
   }
-  if (const auto position = node.find("position")) out.object_position_m = as_vector3(*position);
+  if (const auto position = node.find("position"))
+    out.object_position_m = bounded_vector3(*position);
   out.object_orientation = orientation(node);
   if (const auto material = node.find("material")) {
     out.material = material->as_string();
@@ -226,13 +240,20 @@ struct ParentReference {
   Node node;  // the `parent:` value, for the error's line
 };
 
+// An id or a type of nothing but blanks names nothing: `id: ""` is a typo, not an object.
+std::string non_blank_text(const Node& node) {
+  std::string text = node.as_string();
+  if (text.find_first_not_of(" \t") == std::string::npos) node.fail("must not be empty");
+  return text;
+}
+
 ObjectModel object(const Node& node, const WorldModel& world) {
   node.expect_keys(
       {"id", "type", "position", "orientation", "rpy", "yaw", "size", "parent", "primitives"});
   ObjectModel out;
-  out.id = node.at("id").as_string();
-  out.type = node.at("type").as_string();
-  out.world_position_m = as_vector3(node.at("position"));
+  out.id = non_blank_text(node.at("id"));
+  out.type = non_blank_text(node.at("type"));
+  out.world_position_m = bounded_vector3(node.at("position"));
   out.world_orientation = orientation(node);
   if (const auto size = node.find("size")) out.size_m = positive_vector3(*size);
   if (const auto parent = node.find("parent")) out.parent_id = parent->as_string();

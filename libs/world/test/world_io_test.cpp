@@ -69,6 +69,23 @@ TEST(WorldLoader, FullFormat) {
   EXPECT_NEAR(cupboard_x.y(), 1.0, 1e-12);
 }
 
+// Once accepted by `vsl-world check`: an empty id or type, and a box 1e308 m wide that then
+// crashed the renderer.
+TEST(WorldLoader, EmptyNamesAndAstronomicalSizesAreRefused) {
+  EXPECT_EQ(error_of("objects:\n  - {id: \"\", type: door, position: [0, 0, 0]}\n"),
+            "w.yaml:2: objects[0].id: must not be empty");
+  EXPECT_EQ(error_of("objects:\n  - {id: a, type: \" \", position: [0, 0, 0]}\n"),
+            "w.yaml:2: objects[0].type: must not be empty");
+  EXPECT_EQ(error_of("objects:\n  - {id: a, type: wall, position: [0, 0, 0],\n"
+                     "     primitives: [{box: [1e308, 1, 1]}]}\n"),
+            "w.yaml:3: objects[0].primitives[0].box: beyond 100 km (limit 1e5 m)");
+  EXPECT_EQ(error_of("objects:\n  - {id: a, type: wall, position: [1e6, 0, 0]}\n"),
+            "w.yaml:2: objects[0].position: beyond 100 km (limit 1e5 m)");
+  EXPECT_EQ(error_of("objects:\n  - {id: a, type: wall, position: [0, 0, 0],\n"
+                     "     primitives: [{cylinder: {radius: 1e200, height: 1}}]}\n"),
+            "w.yaml:3: objects[0].primitives[0].cylinder.radius: beyond 100 km (limit 1e5 m)");
+}
+
 TEST(WorldLoader, EveryErrorNamesFileLineKeyAndWhat) {
   EXPECT_EQ(error_of("objects:\n  - {id: a, position: [0, 0, 0]}\n"),
             "w.yaml:2: objects[0].type: missing required key");

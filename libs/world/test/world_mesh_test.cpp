@@ -61,8 +61,7 @@ TEST(WorldMesh, BadMeshesAreOneLineErrorsNamingObjectAndPrimitive) {
             "got 'nan'");
   EXPECT_EQ(error_of(world_with_mesh("{vertices: [[0,0,0],[1,0,0],[0,1e40,0]], "
                                      "triangles: [[0,1,2]]}")),
-            "w.yaml:7: objects[0].primitives[1].mesh.vertices[2]: coordinate too large (limit "
-            "1e30 m)");
+            "w.yaml:7: objects[0].primitives[1].mesh.vertices[2]: beyond 100 km (limit 1e5 m)");
   EXPECT_EQ(error_of(world_with_mesh("{vertices: [[0,0,0],[1,0,0],[0,1,0]], "
                                      "triangles: [[0,1,2,0]]}")),
             "w.yaml:7: objects[0].primitives[1].mesh.triangles[0]: a triangle needs 3 vertex "

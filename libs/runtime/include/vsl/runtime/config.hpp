@@ -2,7 +2,7 @@
 //
 //   runtime:
 //     lcm_url: udpm://239.255.76.67:7667?ttl=0   # or memq://, file:///path.log?speed=1
-//     heartbeat_period_s: 1.0                    # > 0
+//     heartbeat_period_s: 1.0                    # 0.01 to 60
 //     log_level: info                            # debug | info | warn | error
 //     channels: {PERCEPTS: ROBOT2_PERCEPTS}      # overrides of default channel names
 //
@@ -22,6 +22,10 @@ namespace vsl::runtime {
 
 // recv_buf_size: the kernel default (208 KiB) silently drops a 1.8 MB stereo frame; 4 MiB needs
 // net.core.rmem_max >= 4194304 on the robot PC (docs/ARCHITECTURE.md).
+// The heartbeat period's range (s), checked at load and by Daemon.
+inline constexpr double kMinHeartbeatPeriodS = 0.01;
+inline constexpr double kMaxHeartbeatPeriodS = 60.0;
+
 inline constexpr const char* kDefaultLcmUrl =
     "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304";
 
