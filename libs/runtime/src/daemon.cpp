@@ -222,6 +222,7 @@ int Daemon::run() {
     }
     if (now >= s.next_heartbeat) {
       publish_heartbeat();
+      s.log.flush_suppressed();  // the summary of warnings held back, once their interval is over
       s.next_heartbeat = next_after(s.next_heartbeat, s.heartbeat_period, now);
     }
     if (s.stop_requested) break;
@@ -290,6 +291,7 @@ int Daemon::run() {
 
   s.state = "stopped";
   publish_heartbeat();
+  s.log.flush_suppressed(true);
   const BusCounters& counters = s.bus->counters();
   s.log.log(s.exit_code == 0 ? Level::kInfo : Level::kError,
             s.exit_code == 0 ? "clean shutdown" : "shutdown after an error", ", exit code ",

@@ -2,6 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <utility>
+#include <vector>
+
 #include <cerrno>
 #include <charconv>
 #include <ctime>
@@ -100,14 +107,86 @@ void append_time(std::string& out, TimeFormat format) {
 
 }  // namespace
 
+struct Logger::RateLimit {
+  struct Subject {
+    std::chrono::steady_clock::time_point interval_start;
+    int written = 0;
+    long long held_back = 0;
+    Level level = Level::kWarn;
+  };
+  std::mutex mutex;
+  std::map<std::string, Subject, std::less<>> subjects;
+};
+
 Logger::Logger(std::string process, Level level, Sink sink, TimeFormat time_format)
     : process_(std::move(process)),
       level_(level),
       sink_(std::move(sink)),
-      time_format_(time_format) {}
+      time_format_(time_format),
+      limit_(std::make_shared<RateLimit>()) {}
 
 void Logger::write(Level level, std::string_view message) const {
   if (!enabled(level)) return;
+  if (level >= Level::kWarn) {
+    // 2,000 malformed messages must not be 2,000 lines: the subject is what a message is about.
+    const std::string_view subject = message.substr(0, message.find(": "));
+    const auto now = std::chrono::steady_clock::now();
+    std::unique_lock lock(limit_->mutex);
+    auto it = limit_->subjects.find(subject);
+    if (it == limit_->subjects.end() && limit_->subjects.size() >= 256) {
+      // Subjects that vary (a number before the colon) must not grow the table without end.
+      std::erase_if(limit_->subjects, [&](const auto& entry) {
+        return entry.second.held_back == 0 && now - entry.second.interval_start >= kInterval;
+      });
+    }
+    if (it == limit_->subjects.end()) {
+      it = limit_->subjects.emplace(std::string(subject), RateLimit::Subject{now, 0, 0, level})
+               .first;
+    }
+    RateLimit::Subject& state = it->second;
+    if (now - state.interval_start >= kInterval) {
+      lock.unlock();
+      flush_suppressed();
+      lock.lock();
+      state.interval_start = now;
+      state.written = 0;
+    }
+    if (state.written >= kLinesPerInterval) {
+      ++state.held_back;
+      state.level = std::max(state.level, level);
+      return;
+    }
+    ++state.written;
+  }
+  emit(level, message);
+}
+
+void Logger::flush_suppressed(bool all) const {
+  std::vector<std::pair<Level, std::string>> summaries;
+  {
+    const auto now = std::chrono::steady_clock::now();
+    std::lock_guard lock(limit_->mutex);
+    for (auto& [subject, state] : limit_->subjects) {
+      if (state.held_back == 0 || (!all && now - state.interval_start < kInterval)) continue;
+      const double seconds =
+          std::chrono::duration<double>(
+              std::min<std::chrono::steady_clock::duration>(now - state.interval_start, kInterval))
+              .count();
+      std::string line =
+          subject + ": " + std::to_string(state.held_back) + " more like this in the last ";
+      detail::append_double(line, std::round(seconds * 10.0) / 10.0);
+      line += " s (at most " + std::to_string(kLinesPerInterval) + " lines per subject every " +
+              std::to_string(kInterval.count()) + " s)";
+      summaries.emplace_back(state.level, std::move(line));
+      state.held_back = 0;
+      state.written = 0;
+      state.interval_start = now;
+    }
+  }
+  for (const auto& [level, line] : summaries) emit(level, line);
+}
+
+void Logger::emit(Level level, std::string_view message) const {
   std::string line;
   line.reserve(message.size() + process_.size() + 48);
   line.push_back('[');

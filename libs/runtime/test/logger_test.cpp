@@ -47,6 +47,29 @@ TEST(runtime_logger, UtimeLineFormat) {
       << capture.lines->front();
 }
 
+// 2,000 malformed messages once gave 2,000 warning lines.
+TEST(runtime_logger, RepeatedWarningsAreHeldBackAndSummedUp) {
+  Capture capture;
+  const Logger log("p", Level::kInfo, capture.sink());
+  const Logger copy = log;  // the bus's copy shares the count
+  for (int i = 0; i < 1000; ++i) {
+    log.warn("FUSED_PERCEPTS: cannot decode ", i, " bytes as vsl.fused_percept_list_t");
+    copy.warn("FUSED_PERCEPTS: cannot decode ", i, " bytes as vsl.fused_percept_list_t");
+  }
+  log.warn("PERCEPTS: skipped frame 3");                  // another subject has its own lines
+  for (int i = 0; i < 10; ++i) log.info("progress ", i);  // information is never held back
+  EXPECT_EQ(capture.lines->size(), static_cast<std::size_t>(Logger::kLinesPerInterval + 1 + 10));
+  log.flush_suppressed();  // the interval has not passed: nothing yet
+  EXPECT_EQ(capture.lines->size(), static_cast<std::size_t>(Logger::kLinesPerInterval + 11));
+  log.flush_suppressed(true);
+  ASSERT_EQ(capture.lines->size(), static_cast<std::size_t>(Logger::kLinesPerInterval + 12));
+  EXPECT_NE(capture.lines->back().find("] WARN FUSED_PERCEPTS: 1995 more like this in the last "),
+            std::string::npos)
+      << capture.lines->back();
+  log.flush_suppressed(true);  // said once
+  EXPECT_EQ(capture.lines->size(), static_cast<std::size_t>(Logger::kLinesPerInterval + 12));
+}
+
 TEST(runtime_logger, LevelFiltersLowerLevels) {
   Capture capture;
   const Logger log("p", Level::kWarn, capture.sink());

@@ -4,8 +4,10 @@
 // Copyable: the bus and the daemon hold copies that share the sink.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -56,7 +58,18 @@ class Logger {
   bool enabled(Level level) const { return level >= level_; }
 
   // Writes one line; newlines inside `message` are escaped so that it stays one line.
+  // Warnings and errors are rate-limited per subject (the text before the first ": ", such as
+  // a channel name): at most kLinesPerInterval lines per subject in kInterval; the rest are
+  // counted and summed up in one line when the interval has passed (flush_suppressed).
   void write(Level level, std::string_view message) const;
+
+  static constexpr int kLinesPerInterval = 5;
+  static constexpr std::chrono::seconds kInterval{10};
+
+  // Writes the summary line of every subject whose interval has passed with lines held back
+  // ("WARN FUSED_PERCEPTS: 1995 more like this in the last 10 s"); with `all`, of every subject
+  // with lines held back (at shutdown). The daemon calls it with each heartbeat.
+  void flush_suppressed(bool all = false) const;
 
   // log.info("fused ", n, " percepts in ", seconds, " s"): the arguments are concatenated (numbers
   // in their shortest exact form) only when the level is enabled.
@@ -89,6 +102,10 @@ class Logger {
   Level level_;
   Sink sink_;
   TimeFormat time_format_;
+  struct RateLimit;  // shared by the copies of one logger
+  std::shared_ptr<RateLimit> limit_;
+
+  void emit(Level level, std::string_view message) const;
 };
 
 }  // namespace vsl::runtime
