@@ -17,6 +17,9 @@ bool finite(const double* values, int n) {
 // Why the row-major 3x3 `c` is no covariance, or "".
 std::string covariance_problem(const double* c) {
   if (!finite(c, 9)) return "covariance is not finite";
+  for (int i = 0; i < 9; ++i) {
+    if (std::abs(c[i]) > kMaxCovariance_m2) return "covariance entry beyond 1e4 m^2";
+  }
   double scale = 0.0;
   for (int i = 0; i < 9; ++i) scale = std::max(scale, std::abs(c[i]));
   for (int r = 0; r < 3; ++r) {
@@ -46,6 +49,10 @@ std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& l
   if (!finite(pose.position_m, 3) || !finite(pose.orientation_wxyz, 4)) {
     return "ego_T_left_camera is not finite";
   }
+  if (Eigen::Vector3d(pose.position_m[0], pose.position_m[1], pose.position_m[2]).norm() >
+      kMaxPerceptDistance_m) {
+    return "ego_T_left_camera is more than 100 m from the ego origin";
+  }
   const Eigen::Quaterniond q(pose.orientation_wxyz[0], pose.orientation_wxyz[1],
                              pose.orientation_wxyz[2], pose.orientation_wxyz[3]);
   // A unit quaternion up to rounding (recognition normalizes); anything else is not a rotation.
@@ -67,6 +74,10 @@ std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& l
              std::to_string(list.frame_id);
     }
     if (!finite(p.ego_position_m, 3)) return which + "ego_position_m is not finite";
+    if (Eigen::Vector3d(p.ego_position_m[0], p.ego_position_m[1], p.ego_position_m[2]).norm() >
+        kMaxPerceptDistance_m) {
+      return which + "ego_position_m is more than 100 m away";
+    }
     if (const std::string problem = covariance_problem(p.ego_covariance_m2); !problem.empty()) {
       return which + problem;
     }

@@ -18,6 +18,12 @@ namespace vsl::fusion_daemon {
 // Smallest eigenvalue a percept covariance may have (m^2): a 1 um standard deviation. Below it
 // the information-weighted mean would trust one percept absolutely.
 inline constexpr double kMinCovarianceEigenvalue_m2 = 1e-12;
+// How far from the ego origin a percept (and the left camera) may be (m), and the largest
+// covariance entry (m^2, a 100 m standard deviation). A stereo head triangulates a few metres
+// out; finite but absurd numbers (1e308 m) would overflow the fusion's sums into non-finite
+// fused positions, which the localizer then drops, failing with the wrong reason.
+inline constexpr double kMaxPerceptDistance_m = 100.0;
+inline constexpr double kMaxCovariance_m2 = 1e4;
 
 // The frame (percepts and left camera pose) or the list's problem ("percept 2 (door): covariance
 // is not positive definite").

@@ -58,6 +58,16 @@ TEST(PerceptInput, MalformedListsAreOneLineProblems) {
   l = good_list();
   l.percepts[1].ego_position_m[2] = std::numeric_limits<double>::infinity();
   EXPECT_EQ(problem_of(l), "percept 1 (handle): ego_position_m is not finite");
+  // Finite but absurd: once fused into non-finite positions the localizer dropped.
+  l = good_list();
+  l.percepts[1].ego_position_m[0] = 1e308;
+  EXPECT_EQ(problem_of(l), "percept 1 (handle): ego_position_m is more than 100 m away");
+  l = good_list();
+  l.ego_T_left_camera.position_m[1] = -1e300;
+  EXPECT_EQ(problem_of(l), "ego_T_left_camera is more than 100 m from the ego origin");
+  l = good_list();
+  l.percepts[0].ego_covariance_m2[0] = 1e300;
+  EXPECT_EQ(problem_of(l), "percept 0 (door): covariance entry beyond 1e4 m^2");
   l = good_list();
   l.percepts[0].ego_covariance_m2[5] = nan;
   EXPECT_EQ(problem_of(l), "percept 0 (door): covariance is not finite");
