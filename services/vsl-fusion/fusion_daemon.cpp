@@ -12,7 +12,8 @@ namespace vsl::fusion_daemon {
 FusionDaemon::FusionDaemon(runtime::Daemon& daemon, FusionSetup setup)
     : daemon_(daemon),
       setup_(std::move(setup)),
-      tracker_(setup_.config.options, setup_.field_of_view, setup_.config.max_frames_per_scan) {
+      tracker_(setup_.config.options, setup_.field_of_view, setup_.config.max_frames_per_scan,
+               setup_.config.max_percepts_per_scan) {
   const runtime::Channels& channels = daemon_.channels();
   // Every message, in order: a percept list is small and a skipped one would lower C of Eq. 4.
   daemon_.subscribe<vsl::percept_list_t>(
@@ -59,7 +60,10 @@ void FusionDaemon::on_percepts(const vsl::percept_list_t& list) {
     case ScanTracker::FrameOutcome::kScanFull:
       if (stats_.over_limit++ == 0) {
         daemon_.log().warn(channel, ": request ", *tracker_.request_id(), " has ",
-                           tracker_.num_frames(), " frames (max_frames_per_scan): dropping more");
+                           tracker_.num_frames(), " frames and ", tracker_.num_percepts(),
+                           " percepts; a frame of ", list.num_percepts,
+                           " more would pass max_frames_per_scan or max_percepts_per_scan: "
+                           "dropping frames beyond");
       }
       return;
   }

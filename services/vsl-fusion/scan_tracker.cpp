@@ -7,8 +7,11 @@
 namespace vsl::fusion_daemon {
 
 ScanTracker::ScanTracker(fusion::FusionOptions options, fusion::FieldOfView field_of_view,
-                         std::size_t max_frames_per_scan)
-    : options_(options), field_of_view_(field_of_view), max_frames_(max_frames_per_scan) {}
+                         std::size_t max_frames_per_scan, std::size_t max_percepts_per_scan)
+    : options_(options),
+      field_of_view_(field_of_view),
+      max_frames_(max_frames_per_scan),
+      max_percepts_(max_percepts_per_scan) {}
 
 bool ScanTracker::seen(std::int64_t request_id) const {
   return std::find(seen_requests_.begin(), seen_requests_.end(), request_id) !=
@@ -36,7 +39,7 @@ ScanTracker::RequestOutcome ScanTracker::start(std::int64_t request_id) {
 ScanTracker::FrameOutcome ScanTracker::add(fusion::Frame frame, std::int64_t frame_utime) {
   if (!request_id_) return FrameOutcome::kNoRequest;
   if (!frame_keys_.insert({frame.frame_id, frame_utime}).second) return FrameOutcome::kDuplicate;
-  if (frames_.size() >= max_frames_) {
+  if (frames_.size() >= max_frames_ || num_percepts_ + frame.percepts.size() > max_percepts_) {
     frame_keys_.erase({frame.frame_id, frame_utime});
     return FrameOutcome::kScanFull;
   }

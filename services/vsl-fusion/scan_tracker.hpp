@@ -26,7 +26,7 @@ namespace vsl::fusion_daemon {
 class ScanTracker {
  public:
   ScanTracker(fusion::FusionOptions options, fusion::FieldOfView field_of_view,
-              std::size_t max_frames_per_scan);
+              std::size_t max_frames_per_scan, std::size_t max_percepts_per_scan);
 
   enum class RequestOutcome { kStarted, kRepeated };
   RequestOutcome start(std::int64_t request_id);
@@ -54,6 +54,7 @@ class ScanTracker {
   fusion::FusionOptions options_;
   fusion::FieldOfView field_of_view_;
   std::size_t max_frames_;
+  std::size_t max_percepts_;
   std::optional<std::int64_t> request_id_;
   std::optional<std::int8_t> last_state_;  // of the current request's statuses
   std::vector<fusion::Frame> frames_;

@@ -225,6 +225,11 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     return result;
   };
 
+  if (percepts.size() > static_cast<std::size_t>(options.pruning.max_percepts)) {
+    result.message = "too many percepts: " + std::to_string(percepts.size()) + " (limit " +
+                     std::to_string(options.pruning.max_percepts) + ", pruning.max_percepts)";
+    return finish();
+  }
   std::vector<PerceptNoise> noise;
   try {
     noise = percept_noise(percepts, options.noise);

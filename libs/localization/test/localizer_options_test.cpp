@@ -48,6 +48,7 @@ TEST(LocalizerOptions, BadValuesNameFileLineAndKey) {
   EXPECT_EQ(error_of("pruning:\n  mu_max: 0.1\n"),
             "l.yaml:2: pruning.mu_max: unknown key (allowed: tau_sigmas, min_tau_m, mu_max_m, "
             "kappa_max_rad, max_unsupported_fraction, max_partners, max_filtered_percepts, "
+            "max_percepts, "
             "max_link_set, use_gravity, max_tilt_rad)");
   EXPECT_EQ(error_of("hypotheses: {min_associations: 3.5}\n"),
             "l.yaml:1: hypotheses.min_associations: expected an integer, got '3.5'");

@@ -58,6 +58,21 @@ TEST(Localizer, NoiseFreeKitchenViewsAreExact) {
   EXPECT_GE(localized, 12);
 }
 
+// 20,000 fused percepts once died of std::bad_alloc building the n x n percept-pair table.
+TEST(Localizer, TooManyPerceptsFailAtOnceWithTheReason) {
+  const Localizer& localizer = kitchen_localizer();
+  std::vector<FusedPercept> percepts(20000);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  for (FusedPercept& p : percepts) {
+    p.type = "handle";
+    p.ego_position_m = Eigen::Vector3d(coordinate(rng), coordinate(rng), 1.0);
+  }
+  const LocalizationResult result = localizer.localize(percepts);
+  EXPECT_EQ(result.status, Status::kFailed);
+  EXPECT_EQ(result.message, "too many percepts: 20000 (limit 500, pruning.max_percepts)");
+}
+
 TEST(Localizer, TwoIdenticalRoomsAreAmbiguousWithTheTruthAmongTheHypotheses) {
   const world::WorldModel world = testing::identical_rooms(2);
   const Localizer localizer(world, test_options());

@@ -9,9 +9,10 @@ namespace {
 
 using S = vsl::localizer_status_t;
 
-ScanTracker tracker(std::size_t max_frames = 100) {
+ScanTracker tracker(std::size_t max_frames = 100, std::size_t max_percepts = 1500) {
   const fusion::FusionOptions options;
-  return ScanTracker(options, fusion::FieldOfView(head::CameraIntrinsics{}, options), max_frames);
+  return ScanTracker(options, fusion::FieldOfView(head::CameraIntrinsics{}, options), max_frames,
+                     max_percepts);
 }
 
 fusion::Frame frame(std::int64_t id, int percepts = 1) {
@@ -85,6 +86,18 @@ TEST(ScanTracker, FramesBeyondTheLimitAreDropped) {
   EXPECT_EQ(t.add(frame(0), 1), ScanTracker::FrameOutcome::kAdded);
   EXPECT_EQ(t.add(frame(1), 2), ScanTracker::FrameOutcome::kAdded);
   EXPECT_EQ(t.add(frame(2), 3), ScanTracker::FrameOutcome::kScanFull);
+  EXPECT_EQ(t.num_frames(), 2u);
+}
+
+// A few lists of 3,000 percepts once kept fusion's loop thread busy for 25 s each.
+TEST(ScanTracker, PerceptsBeyondTheLimitAreDroppedWithTheirFrames) {
+  ScanTracker t = tracker(100, 10);
+  t.start(1);
+  EXPECT_EQ(t.add(frame(0, 6), 1), ScanTracker::FrameOutcome::kAdded);
+  EXPECT_EQ(t.add(frame(1, 5), 2), ScanTracker::FrameOutcome::kScanFull);  // 11 > 10
+  EXPECT_EQ(t.add(frame(2, 4), 3), ScanTracker::FrameOutcome::kAdded);     // 10: still fits
+  EXPECT_EQ(t.add(frame(3, 3000), 4), ScanTracker::FrameOutcome::kScanFull);
+  EXPECT_EQ(t.num_percepts(), 10u);
   EXPECT_EQ(t.num_frames(), 2u);
 }
 

@@ -44,6 +44,10 @@ struct PruningOptions {
   // nothing, and seeds are drawn from the precise ones anyway. The others stay unconstrained
   // (validation still uses them all).
   int max_filtered_percepts = 16;
+  // More fused percepts than this and the localizer answers FAILED ("too many percepts") at
+  // once: the percept-pair table is n x n (10,000 percepts took 2.4 GB). A scan of a room gives
+  // tens; hundreds are a malformed or hostile list.
+  int max_percepts = 500;
   // A percept with a link set (Eq. 8, one per partner) of more links than this is left
   // unconstrained: in a large repetitive building it would keep thousands of candidates (one per
   // identical room) at a cost far above what orientation filtering then saves.
