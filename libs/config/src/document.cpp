@@ -10,6 +10,9 @@
 #include "vsl/config/node.hpp"
 
 namespace vsl::config {
+
+// How deeply maps and lists may nest in any file vsl reads (a world file needs about ten).
+constexpr std::size_t kMaxNestingDepth = 100;
 namespace {
 
 struct ParserDeleter {
@@ -178,6 +181,13 @@ Document Document::parse(std::string_view text, const std::string& source_name,
         remember_anchor(is_map ? event.data.mapping_start.anchor : event.data.sequence_start.anchor,
                         index);
         attach(index, false);
+        // No vsl file nests deeper than about ten levels; 100,000 levels once kept the parser
+        // busy for more than 30 s. Stop at the limit, before libyaml reads further.
+        if (stack.size() >= kMaxNestingDepth) {
+          throw Error(
+              format_error(source_name, static_cast<int>(event.start_mark.line + first_line), "",
+                           "nested deeper than " + std::to_string(kMaxNestingDepth) + " levels"));
+        }
         stack.push_back(Open{index, pending.size()});
         break;
       }

@@ -90,6 +90,18 @@ TEST(ConfigNode, SyntaxErrorsAndDuplicateKeysGiveTheLine) {
             "m.yaml:2: only one YAML document per file is supported");
 }
 
+// 100,000 levels of nesting (600 kB) once kept any loader busy for more than 30 s.
+TEST(ConfigNode, DeepNestingStopsAtTheLimit) {
+  const std::string deep = "a: " + std::string(100000, '[') + std::string(100000, ']') + "\n";
+  EXPECT_EQ(error_of([&] { Node::load_string(deep, "deep.yaml"); }),
+            "deep.yaml:1: nested deeper than 100 levels");
+  EXPECT_EQ(error_of([&] { Node::load_string_documents("a: 1\n---\n" + deep, "deep.yaml", 2); }),
+            "deep.yaml:3: nested deeper than 100 levels");
+  // A hundred levels are fine.
+  const std::string fine = std::string(99, '[') + std::string(99, ']') + "\n";
+  EXPECT_TRUE(Node::load_string(fine, "fine.yaml").is_sequence());
+}
+
 TEST(ConfigNode, DocumentStreamsKeepFileLines) {
   const std::string text =
       "# header comment only\n---\na: 1\n---\n- x\n- y\n--- # trailing comment\nb: [1, 2]\n"
