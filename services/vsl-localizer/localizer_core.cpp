@@ -375,6 +375,14 @@ void LocalizerCore::finish(State state, const localization::LocalizationResult& 
   set_state(state, now_us);
 }
 
+void LocalizerCore::shut_down(const std::string& reason, std::int64_t now_us) {
+  if (request_id_ <= 0 || state_ == State::kIdle || state_ == State::kDone ||
+      state_ == State::kFailed) {
+    return;
+  }
+  fail(reason, now_us);
+}
+
 void LocalizerCore::fail(const std::string& reason, std::int64_t now_us) {
   localization::LocalizationResult result;
   result.status = localization::Status::kFailed;

@@ -161,6 +161,9 @@ class LocalizerCore {
   void followed_status(std::int64_t request_id, State state, std::int64_t now_us);
   // Timeouts and the periodic status.
   void tick(std::int64_t now_us);
+  // The process is stopping: a request in progress ends FAILED with `reason` (no answer is
+  // ever lost to a shutdown).
+  void shut_down(const std::string& reason, std::int64_t now_us);
 
   State state() const { return state_; }
   std::int64_t request_id() const { return request_id_; }

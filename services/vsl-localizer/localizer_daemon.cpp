@@ -111,6 +111,13 @@ void LocalizerDaemon::start_up_request() {
   core_->request(request.request_id, request.utime);
 }
 
+void LocalizerDaemon::stopped() {
+  if (config_.core.passive) return;  // a replay's requests belong to the recorded localizer
+  core_->shut_down("the localizer stopped before it finished (process " + daemon_.log().process() +
+                       " shut down); send the request again when it is back",
+                   runtime::wall_utime());
+}
+
 void LocalizerDaemon::gaze(const GazeCommand& command) {
   daemon_.publish(daemon_.channels().gaze_command, gaze_message(command, runtime::wall_utime()));
 }

@@ -21,6 +21,10 @@ class LocalizerDaemon : public LocalizerOutputs {
   void status(const StatusReport& report) override;
   void pose(const PoseReport& report) override;
 
+  // After run() returns (SIGTERM, SIGINT, an error): a request still in progress is answered
+  // FAILED with the reason, so that its requester does not wait out its timeout.
+  void stopped();
+
  private:
   void start_up_request();
 

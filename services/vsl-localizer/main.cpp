@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
       [passive](vsl::runtime::Daemon& daemon, const vsl::config::Node& config) {
         vsl::localizer_daemon::LocalizerDaemon localizer(
             daemon, vsl::localizer_daemon::load_localizer(config, passive));
-        return daemon.run();
+        const int exit_code = daemon.run();
+        localizer.stopped();
+        return exit_code;
       });
 }

@@ -118,12 +118,28 @@ class Pipeline {
     start("vsl-fusion",
           {VSL_FUSION, "--config", "config/fusion.yaml", "--lcm-url", udpm_url(options_.port)});
   }
-  void kill_fusion() {
-    ChildProcess& fusion = *processes_.at("vsl-fusion");
-    ::kill(fusion.pid(), SIGKILL);
-    const std::optional<int> status = fusion.wait(10s);
-    ASSERT_TRUE(status && WIFSIGNALED(*status) && WTERMSIG(*status) == SIGKILL);
-    processes_.at("vsl-fusion").reset();
+  void kill_fusion() { kill("vsl-fusion"); }
+  // SIGKILL to one daemon; it is gone when this returns.
+  void kill(const std::string& name) {
+    ChildProcess& process = *processes_.at(name);
+    ::kill(process.pid(), SIGKILL);
+    const std::optional<int> status = process.wait(10s);
+    ASSERT_TRUE(status && WIFSIGNALED(*status) && WTERMSIG(*status) == SIGKILL) << name;
+    processes_.at(name).reset();
+  }
+  // SIGTERM to one daemon: it must stop cleanly (exit code 0); its stderr is returned.
+  std::string terminate(const std::string& name) {
+    ChildProcess& process = *processes_.at(name);
+    ::kill(process.pid(), SIGTERM);
+    const std::optional<int> status = process.wait(20s);
+    EXPECT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << process.err();
+    std::string err = process.err();
+    processes_.at(name).reset();
+    return err;
+  }
+  void start_localizer() {
+    start("vsl-localizer", {VSL_LOCALIZER, "--config", options_.localizer_config, "--lcm-url",
+                            udpm_url(options_.port)});
   }
 
   // vsl-request with `extra` arguments, started (not waited for).
@@ -243,6 +259,43 @@ TEST(PipelineRecovery, FusionKilledDuringTheScanAndRestartedStillLocalizes) {
   ASSERT_TRUE(killed) << "the scan never reached its second gaze target\n" << describe(*request);
   pipeline.start_fusion();  // adopts the request from LOCALIZER_STATUS (docs/fusion.md)
   expect_localized_near_truth(Pipeline::finish(*request), "after fusion's restart");
+}
+
+// --- The localizer stopped or killed mid-request: the request is still answered. ---------------
+
+// Pumps `request`'s output until its progress shows the scan past its first gaze target.
+bool wait_for_second_gaze(ChildProcess& request) {
+  for (int i = 0; i < 600; ++i) {
+    request.wait_for_stdout("\x01", 100ms);  // pumps both pipes
+    if (request.err().find("step 2 of") != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(PipelineRecovery, LocalizerStoppedMidRequestAnswersFailedAtOnce) {
+  Pipeline pipeline(Pipeline::live(17856));
+  const auto request = pipeline.request();
+  ASSERT_TRUE(wait_for_second_gaze(*request)) << describe(*request);
+  const auto stopped_at = std::chrono::steady_clock::now();
+  pipeline.terminate("vsl-localizer");
+  const std::optional<RequestResult> result = Pipeline::finish(*request);
+  ASSERT_TRUE(result.has_value());
+  EXPECT_EQ(result->status, "FAILED");
+  EXPECT_NE(request->out().find("the localizer stopped before it finished"), std::string::npos)
+      << describe(*request);
+  // Answered, not timed out (the request allows 240 s).
+  EXPECT_LT(std::chrono::steady_clock::now() - stopped_at, 30s) << describe(*request);
+}
+
+TEST(PipelineRecovery, LocalizerKilledMidRequestAndRestartedAnswersTheRequest) {
+  Pipeline pipeline(Pipeline::live(17857));
+  const auto request = pipeline.request();
+  ASSERT_TRUE(wait_for_second_gaze(*request)) << describe(*request);
+  pipeline.kill("vsl-localizer");
+  pipeline.start_localizer();  // a new pid: vsl-request sends the request again
+  expect_localized_near_truth(Pipeline::finish(*request), "after the localizer's restart");
+  EXPECT_NE(request->err().find("the localizer restarted"), std::string::npos)
+      << describe(*request);
 }
 
 // --- Record, replay into a passive localizer, decode every channel with lcm-spy. ----------------

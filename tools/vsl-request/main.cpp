@@ -170,9 +170,22 @@ int main(int argc, char** argv) {
   int last_state = -1;
   double last_progress = -1.0;
 
+  // A localizer that restarts mid-request (a new pid, or its uptime going back) forgot the
+  // request: it is sent again, and the new instance answers it.
+  std::int32_t localizer_pid = 0;
+  double localizer_uptime_s = 0.0;
+  bool localizer_restarted = false;
   vsl::runtime::subscribe<vsl::daemon_heartbeat_t>(
-      bus, "VSL_HEARTBEAT",
-      [&](const vsl::daemon_heartbeat_t& m, std::int64_t) { alive.insert(m.process); });
+      bus, "VSL_HEARTBEAT", [&](const vsl::daemon_heartbeat_t& m, std::int64_t) {
+        alive.insert(m.process);
+        if (m.process != "vsl-localizer") return;
+        if (localizer_pid != 0 &&
+            (m.pid != localizer_pid || m.uptime_s + 0.5 < localizer_uptime_s)) {
+          localizer_restarted = true;
+        }
+        localizer_pid = m.pid;
+        localizer_uptime_s = m.uptime_s;
+      });
   vsl::runtime::subscribe<vsl::ground_truth_pose_t>(
       bus, "GROUND_TRUTH_POSE",
       [&](const vsl::ground_truth_pose_t& m, std::int64_t) { truth = pose_of(m.world_T_ego); });
@@ -262,7 +275,20 @@ int main(int argc, char** argv) {
     }
   }
 
-  // 3. The answer.
+  // 3. The answer (the request again whenever the localizer restarts without one).
+  while (!options.follow && !estimate && Clock::now() < deadline) {
+    pump_until([&] { return estimate.has_value() || localizer_restarted; });
+    if (!localizer_restarted || estimate) break;
+    localizer_restarted = false;
+    request.utime = vsl::runtime::wall_utime();
+    vsl::runtime::publish(bus, "LOCALIZE_REQUEST", request);
+    if (!options.quiet) {
+      std::fprintf(stderr,
+                   "[%6.1f s] the localizer restarted (pid %d): LOCALIZE_REQUEST %lld again\n",
+                   seconds_since_start(), static_cast<int>(localizer_pid),
+                   static_cast<long long>(request_id));
+    }
+  }
   if (!pump_until([&] { return estimate.has_value(); })) {
     std::cerr << "vsl-request: no POSE_ESTIMATE for request " << request_id << " within "
               << options.timeout_s << " s\n";
