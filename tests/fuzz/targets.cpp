@@ -184,9 +184,13 @@ std::vector<Target> all_targets(const std::string& source_dir) {
       "recognition_config",
       {file("config/recognition.yaml"), file("config/recognition_learned.yaml")},
       [](const config::Node& root) { recognition_daemon::read_recognition_config(root); }));
-  targets.push_back(
-      yaml_target("head", {file("config/heads/armar3.yaml")},
-                  [](const config::Node& root) { head::HeadKinematics::from_config(root); }));
+  // The head file names its calibration by a path; the shipped one stands in for it.
+  const head::StereoCalibration calibration =
+      head::stereo_calibration_from(yaml(file("calib/armar3_sim.yaml")));
+  targets.push_back(yaml_target("head", {file("config/heads/armar3.yaml")},
+                                [calibration](const config::Node& root) {
+                                  head::HeadKinematics::from_config(root, calibration);
+                                }));
   targets.push_back(
       yaml_target("calibration", {file("calib/armar3_sim.yaml")},
                   [](const config::Node& root) { head::stereo_calibration_from(root); }));

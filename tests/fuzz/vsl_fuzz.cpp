@@ -82,8 +82,13 @@ int main(int argc, char** argv) {
       const auto begin = std::chrono::steady_clock::now();
       try {
         target.run(input);
-      } catch (const vsl::config::Error&) {
+      } catch (const vsl::config::Error& e) {
         ++rejected;
+        if (n == 0) {  // the seed itself must load, or the mutations explore nothing
+          ++findings;
+          std::fprintf(stderr, "vsl-fuzz: %s: the seed is rejected: %s\n", target.name.c_str(),
+                       e.what());
+        }
       } catch (const std::exception& e) {
         ++findings;
         std::fprintf(stderr, "vsl-fuzz: %s: execution %lld (seed %llu): %s\n", target.name.c_str(),
