@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -47,6 +48,8 @@ options:
   --pose-channel CH    channel of the pose estimates (default POSE_ESTIMATE; a passive
                        localizer publishes PASSIVE_POSE_ESTIMATE)
   --status-channel CH  channel of the localizer's status (default LOCALIZER_STATUS)
+  --heartbeat-gaps     also print, per process, the longest time between two of its
+                       heartbeats while the request ran (tools/vsl-soak reads it)
 exit codes: 0 localized, 1 ambiguous, failed or timed out, 2 bad usage
 Besides the table it prints one line for scripts:
   result: status=LOCALIZED x_m=.. y_m=.. z_m=.. yaw_deg=.. [position_error_m=.. rotation_error_deg=..]
@@ -73,6 +76,7 @@ struct Options {
   std::int64_t request_id = 0;
   std::string reason;
   bool quiet = false;
+  bool heartbeat_gaps = false;
   bool follow = false;
   std::string pose_channel = "POSE_ESTIMATE";
   std::string status_channel = "LOCALIZER_STATUS";
@@ -119,6 +123,8 @@ Options parse(int argc, char** argv) {
       options.reason = value();
     } else if (arg == "-q" || arg == "--quiet") {
       options.quiet = true;
+    } else if (arg == "--heartbeat-gaps") {
+      options.heartbeat_gaps = true;
     } else if (arg == "--follow") {
       options.follow = true;
     } else if (arg == "--pose-channel") {
@@ -172,12 +178,21 @@ int main(int argc, char** argv) {
 
   // A localizer that restarts mid-request (a new pid, or its uptime going back) forgot the
   // request: it is sent again, and the new instance answers it.
+  std::map<std::string, std::pair<Clock::time_point, double>> heartbeat_gap_s;  // last, longest
   std::int32_t localizer_pid = 0;
   double localizer_uptime_s = 0.0;
   bool localizer_restarted = false;
   vsl::runtime::subscribe<vsl::daemon_heartbeat_t>(
       bus, "VSL_HEARTBEAT", [&](const vsl::daemon_heartbeat_t& m, std::int64_t) {
         alive.insert(m.process);
+        const Clock::time_point now = Clock::now();
+        const auto [entry, first] = heartbeat_gap_s.try_emplace(m.process, now, 0.0);
+        if (!first) {
+          entry->second.second =
+              std::max(entry->second.second,
+                       std::chrono::duration<double>(now - entry->second.first).count());
+          entry->second.first = now;
+        }
         if (m.process != "vsl-localizer") return;
         if (localizer_pid != 0 &&
             (m.pid != localizer_pid || m.uptime_s + 0.5 < localizer_uptime_s)) {
@@ -320,6 +335,15 @@ int main(int argc, char** argv) {
     // look) to the published pose: recognition of that frame, fusion and localization.
     std::printf("  from the last scan frame's capture to the pose: %.1f ms\n",
                 1e-3 * static_cast<double>(estimate->utime - last_scan_frame_utime));
+  }
+  if (options.heartbeat_gaps) {
+    std::string gaps;
+    for (const auto& [process, times] : heartbeat_gap_s) {
+      char text[96];
+      std::snprintf(text, sizeof text, " %s=%.3f", process.c_str(), times.second);
+      gaps += text;
+    }
+    std::printf("heartbeat_gaps_s:%s\n", gaps.c_str());
   }
   std::fputs(vsl::request::result_line(status, pose, truth).c_str(), stdout);
   return estimate->status == vsl::pose_estimate_t::LOCALIZED ? 0 : 1;
