@@ -117,8 +117,7 @@ std::vector<AssimpPiece> read_assimp_pieces(const std::string& path, const Eigen
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
   if (scene == nullptr || scene->mRootNode == nullptr) {
-    std::string reason = importer.GetErrorString();
-    std::replace(reason.begin(), reason.end(), '\n', ' ');
+    const std::string reason = one_line(importer.GetErrorString());
     throw config::Error(path + ": cannot read mesh: " + (reason.empty() ? "no scene" : reason));
   }
   Walker walker{scene, std::filesystem::path(path).stem().string(), {}, {}, {}, {}, {}, {}};

@@ -46,19 +46,6 @@ std::mutex& coin_mutex() {
   return mutex;
 }
 
-std::string one_line(const std::string& text) {
-  std::string line;
-  for (const char c : text) {
-    if (!std::isspace(static_cast<unsigned char>(c))) {
-      line += c;
-    } else if (!line.empty() && line.back() != ' ') {
-      line += ' ';
-    }
-  }
-  if (!line.empty() && line.back() == ' ') line.pop_back();
-  return line;
-}
-
 // Coin posts read errors to a global handler (stderr by default); while we read, it collects.
 // "Coin read error: WHAT\n\tOccurred at line N in FILE" becomes "WHAT (line N)": our message
 // names the file already.

@@ -90,6 +90,10 @@ std::vector<MeshPiece> load_mesh_pieces(const std::string& path, const Eigen::Ve
 std::string resolve_uri(const std::string& uri, const std::string& referring_file,
                         const std::vector<std::string>& package_paths);
 
+// `text` with every run of white space (newlines too) as one space, trimmed: the libraries'
+// messages can span lines, vsl's errors and warnings are one line each.
+std::string one_line(const std::string& text);
+
 // A UV sphere of about 1 cm edge length at the equator (8-32 segments), centred on the origin.
 TriangleSoup tessellate_sphere(double radius_m);
 

@@ -59,20 +59,6 @@ Eigen::Isometry3d to_isometry(const ignition::math::Pose3d& pose) {
   return t;
 }
 
-// sdformat's messages can span lines; our errors and warnings are one line each.
-std::string one_line(const std::string& text) {
-  std::string line;
-  for (const char c : text) {
-    if (!std::isspace(static_cast<unsigned char>(c))) {
-      line += c;
-    } else if (!line.empty() && line.back() != ' ') {
-      line += ' ';
-    }
-  }
-  if (!line.empty() && line.back() == ' ') line.pop_back();
-  return line;
-}
-
 std::uint8_t to_byte(float unit) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f));
 }

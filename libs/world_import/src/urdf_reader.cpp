@@ -51,9 +51,8 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& path) {
   const QuietParsers quiet;
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
   if (!model) {
-    std::string reason =
-        quiet.first_error().empty() ? "not a valid URDF file" : quiet.first_error();
-    std::replace(reason.begin(), reason.end(), '\n', ' ');
+    const std::string reason =
+        quiet.first_error().empty() ? "not a valid URDF file" : one_line(quiet.first_error());
     throw config::Error(path + ": " + reason);
   }
   return model;
