@@ -25,6 +25,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <cstdlib>
 #include <mutex>
 #include <set>
 #include <tuple>
@@ -279,7 +280,12 @@ Scene read_inventor(const std::string& path, const ReadOptions& /*options*/) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw config::Error(path + ": no such file");
   const std::lock_guard<std::mutex> lock(coin_mutex());
-  SoDB::init();
+  if (!SoDB::isInitialized()) {
+    SoDB::init();
+    // Coin's database lives until the process ends; SoDB::finish() hands its memory back then,
+    // so that a leak checker sees only our own allocations.
+    std::atexit([] { SoDB::finish(); });
+  }
 
   std::vector<std::string> messages;
   SoErrorCB* const previous_handler = SoReadError::getHandlerCallback();

@@ -120,7 +120,8 @@ TEST_F(UrdfImport, DoorsDrawersAndHandlesGetTypesFromTheirNamesAndJoints) {
 }
 
 TEST_F(UrdfImport, ADoorIsAtTheCentreOfItsFrontFaceFacingTheRoom) {
-  const world::ObjectModel& door = object(import(), "door");
+  const ImportResult result = import();
+  const world::ObjectModel& door = object(result, "door");
   // Door centre in the carcass (0, -0.26, 0.5), front face 1 cm further out: world x 1.27.
   expect_near(door.world_position_m, {1.27, 2.0, 0.5});
   expect_near(*door.size_m, {0.6, 0.02, 0.58});
@@ -144,7 +145,8 @@ TEST_F(UrdfImport, AHandleIsAtTheMiddleOfItsBar) {
 }
 
 TEST_F(UrdfImport, ADrawerFrontIsItsFrontSlabNotTheBoxBehind) {
-  const world::ObjectModel& drawer = object(import(), "drawer");
+  const ImportResult result = import();
+  const world::ObjectModel& drawer = object(result, "drawer");
   expect_near(drawer.world_position_m, {1.27, 2.0, 0.1});
   expect_near(*drawer.size_m, {0.6, 0.02, 0.18});
 }
