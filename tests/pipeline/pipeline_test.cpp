@@ -137,10 +137,11 @@ class Pipeline {
     processes_.at(name).reset();
     return err;
   }
-  void start_localizer() {
-    start("vsl-localizer", {VSL_LOCALIZER, "--config", options_.localizer_config, "--lcm-url",
-                            udpm_url(options_.port)});
-  }
+  void start_localizer() { restart("vsl-localizer"); }
+  // Starts a daemon again with the arguments it first had.
+  void restart(const std::string& name) { start(name, argv_.at(name)); }
+  // Sends `signal` to a running daemon (SIGSTOP, SIGCONT: it stays in the pipeline).
+  void signal(const std::string& name, int signal) { ::kill(processes_.at(name)->pid(), signal); }
 
   // vsl-request with `extra` arguments, started (not waited for).
   std::unique_ptr<ChildProcess> request(const std::vector<std::string>& extra = {}) const {
@@ -167,11 +168,13 @@ class Pipeline {
 
  private:
   void start(const std::string& name, const std::vector<std::string>& argv) {
+    argv_[name] = argv;
     processes_[name] = std::make_unique<ChildProcess>(argv);
   }
 
   Options options_;
   std::map<std::string, std::unique_ptr<ChildProcess>> processes_;
+  std::map<std::string, std::vector<std::string>> argv_;
 };
 
 void expect_localized_near_truth(const std::optional<RequestResult>& result,
@@ -297,6 +300,47 @@ TEST(PipelineRecovery, LocalizerKilledMidRequestAndRestartedAnswersTheRequest) {
   EXPECT_NE(request->err().find("the localizer restarted"), std::string::npos)
       << describe(*request);
 }
+
+// Each daemon frozen (SIGSTOP) past every timeout of the request, or killed and restarted, once
+// the scan has begun: the request is always answered within its timeout, and never with a
+// confident pose that is wrong.
+struct FaultCase {
+  const char* name;
+  const char* daemon;
+  int signal;  // SIGSTOP (then SIGCONT once answered) or SIGKILL (then a restart)
+  int port;
+};
+
+class PipelineFault : public ::testing::TestWithParam<FaultCase> {};
+
+TEST_P(PipelineFault, EveryRequestIsAnswered) {
+  const FaultCase& c = GetParam();
+  Pipeline pipeline(Pipeline::live(c.port));
+  const auto request = pipeline.request();
+  ASSERT_TRUE(wait_for_second_gaze(*request)) << describe(*request);
+  if (c.signal == SIGKILL) {
+    pipeline.kill(c.daemon);
+    pipeline.restart(c.daemon);
+  } else {
+    pipeline.signal(c.daemon, SIGSTOP);
+  }
+  const std::optional<RequestResult> result = Pipeline::finish(*request);
+  if (c.signal == SIGSTOP) pipeline.signal(c.daemon, SIGCONT);  // for the clean stop at the end
+  ASSERT_TRUE(result.has_value()) << c.name;
+  EXPECT_TRUE(result->status == "LOCALIZED" || result->status == "AMBIGUOUS" ||
+              result->status == "FAILED")
+      << c.name << ": " << result->status;
+  if (result->status == "LOCALIZED") expect_localized_near_truth(result, c.name);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Daemons, PipelineFault,
+    ::testing::Values(FaultCase{"sim_head_frozen", "vsl-sim-head", SIGSTOP, 17860},
+                      FaultCase{"recognition_frozen", "vsl-recognition", SIGSTOP, 17861},
+                      FaultCase{"fusion_frozen", "vsl-fusion", SIGSTOP, 17862},
+                      FaultCase{"sim_head_killed", "vsl-sim-head", SIGKILL, 17863},
+                      FaultCase{"recognition_killed", "vsl-recognition", SIGKILL, 17864}),
+    [](const ::testing::TestParamInfo<FaultCase>& info) { return std::string(info.param.name); });
 
 // --- Record, replay into a passive localizer, decode every channel with lcm-spy. ----------------
 
