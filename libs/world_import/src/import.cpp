@@ -180,6 +180,122 @@ std::vector<std::string> materials_of(const ScenePart& part) {
   return out;
 }
 
+// Reads, scales and places each file; a file spanning more than 500 m gets a warning (a
+// building is not half a kilometre long: such a file is most likely in millimetres).
+std::vector<Scene> read_scenes(const std::vector<ImportInput>& inputs, const ImportOptions& options,
+                               ImportReport& report) {
+  const ReadOptions read_options{options.package_paths, options.joint_positions};
+  std::vector<Scene> scenes;
+  for (const ImportInput& input : inputs) {
+    const ModelFormat format = model_format_of(input.path);
+    Scene scene = read_scene(input.path, format, read_options);
+    if (input.scale != 1.0) scale_scene(scene, input.scale);
+    if (input.at || input.y_up) place(scene, input.at.value_or(Placement{}), input.y_up);
+    report.files.push_back({input.path, format, scene.parts.size()});
+    report.warnings.insert(report.warnings.end(), scene.warnings.begin(), scene.warnings.end());
+    Eigen::AlignedBox3d bounds;
+    std::vector<Eigen::Vector3d> points;
+    for (const ScenePart& part : scene.parts) {
+      for (const PartGeometry& g : part.geometry) {
+        points.clear();
+        append_world_points(g, points);
+        for (const Eigen::Vector3d& p : points) bounds.extend(p);
+      }
+    }
+    if (!bounds.isEmpty() && bounds.sizes().maxCoeff() > 500.0) {
+      report.warnings.push_back(scene.source + ": spans " +
+                                std::to_string(static_cast<long>(bounds.sizes().maxCoeff())) +
+                                " m; if it is in millimetres, import it with --scale 0.001");
+    }
+    scenes.push_back(std::move(scene));
+  }
+  return scenes;
+}
+
+// The parts that become objects (those with geometry that no rule left out), typed, each with
+// its nearest ancestor among them.
+struct Chosen {
+  std::vector<Candidate> candidates;
+  std::vector<std::size_t> part_of_candidate;  // index into the parts
+};
+
+Chosen choose_candidates(const std::vector<Part>& parts, const TypeRules& rules,
+                         ImportReport& report) {
+  Chosen chosen;
+  std::vector<int> candidate_of(parts.size(), -1);
+  std::vector<std::size_t> fired(rules.rules().size(), 0);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const ScenePart& part = *parts[i].part;
+    const TypeDecision decision =
+        rules.classify({part.name, materials_of(part), joint_kind_name(part.joint)});
+    if (decision.rule >= 0) ++fired[static_cast<std::size_t>(decision.rule)];
+    if (decision.skip) {
+      report.skipped.push_back(parts[i].id);
+      continue;
+    }
+    if (part.geometry.empty()) {
+      // A frame that only groups others; a typed one is worth a line (a door whose mesh is
+      // missing and has no collision geometry).
+      if (!decision.type.empty() && default_reference(decision.type) != Reference::kCentre) {
+        report.dropped.push_back(parts[i].id + ": " + decision.type + " without geometry");
+      }
+      continue;
+    }
+    Candidate candidate;
+    candidate.part = &part;
+    candidate.type = decision.type.empty() ? kUnmatchedType : decision.type;
+    candidate.reference = decision.rule >= 0 ? decision.reference : Reference::kCentre;
+    if (decision.type.empty()) report.unmatched.push_back(parts[i].id);
+    for (const PartGeometry& g : part.geometry) append_world_points(g, candidate.world_points_m);
+    candidate_of[i] = static_cast<int>(chosen.candidates.size());
+    chosen.candidates.push_back(std::move(candidate));
+    chosen.part_of_candidate.push_back(i);
+  }
+  for (std::size_t c = 0; c < chosen.candidates.size(); ++c) {
+    for (int p = parts[chosen.part_of_candidate[c]].parent; p >= 0;
+         p = parts[static_cast<std::size_t>(p)].parent) {
+      if (candidate_of[static_cast<std::size_t>(p)] >= 0) {
+        chosen.candidates[c].parent = candidate_of[static_cast<std::size_t>(p)];
+        break;
+      }
+    }
+  }
+  for (std::size_t r = 0; r < fired.size(); ++r) {
+    if (fired[r] > 0) report.rules_fired.emplace_back(rules.rules()[r].describe(), fired[r]);
+  }
+  return chosen;
+}
+
+// Candidate `c` as a world object: its frame, its parent's id, its geometry as primitives.
+world::ObjectModel object_of(const Chosen& chosen, std::size_t c, const ObjectFrame& frame,
+                             const std::vector<Part>& parts, const ImportOptions& options,
+                             MaterialTable& materials, ImportReport& report) {
+  const Candidate& candidate = chosen.candidates[c];
+  world::ObjectModel object;
+  object.id = parts[chosen.part_of_candidate[c]].id;
+  object.type = candidate.type;
+  object.world_position_m = frame.world_position_m;
+  object.world_orientation = Eigen::Quaterniond(frame.world_R_object).normalized();
+  // The format wants positive extents; a flat part (a floor plane) is 1 mm thick.
+  object.size_m = frame.size_m.cwiseMax(1e-3);
+  if (candidate.parent >= 0) {
+    object.parent_id =
+        parts[chosen.part_of_candidate[static_cast<std::size_t>(candidate.parent)]].id;
+  }
+  const Eigen::Isometry3d object_T_world = object.world_T_object().inverse();
+  const std::size_t triangles_per_piece =
+      options.max_triangles_per_object / std::max<std::size_t>(1, candidate.part->geometry.size());
+  bool simplified = false;
+  for (const PartGeometry& g : candidate.part->geometry) {
+    object.primitives.push_back(
+        to_primitive(g, object_T_world, materials, triangles_per_piece, report, simplified));
+  }
+  report.simplified_objects += simplified ? 1 : 0;
+  if (!frame.front_from.empty()) report.front_decided_by[object.id] = frame.front_from;
+  ++report.objects_by_type[object.type];
+  return object;
+}
+
 }  // namespace
 
 const char* model_format_name(ModelFormat format) {
@@ -217,119 +333,21 @@ ImportResult import_world(const std::vector<ImportInput>& inputs, const ImportOp
                           const TypeRules& rules) {
   ImportResult result;
   ImportReport& report = result.report;
-  const ReadOptions read_options{options.package_paths, options.joint_positions};
-  std::vector<Scene> scenes;
-  for (const ImportInput& input : inputs) {
-    const ModelFormat format = model_format_of(input.path);
-    Scene scene = read_scene(input.path, format, read_options);
-    if (input.scale != 1.0) scale_scene(scene, input.scale);
-    if (input.at || input.y_up) place(scene, input.at.value_or(Placement{}), input.y_up);
-    report.files.push_back({input.path, format, scene.parts.size()});
-    report.warnings.insert(report.warnings.end(), scene.warnings.begin(), scene.warnings.end());
-    scenes.push_back(std::move(scene));
-  }
+  const std::vector<Scene> scenes = read_scenes(inputs, options, report);
   const std::vector<Part> parts = collect_parts(scenes);
-  // A building is not half a kilometre long: such a file is most likely in millimetres or inches.
-  for (const Scene& scene : scenes) {
-    Eigen::AlignedBox3d bounds;
-    std::vector<Eigen::Vector3d> points;
-    for (const ScenePart& part : scene.parts) {
-      for (const PartGeometry& g : part.geometry) {
-        points.clear();
-        append_world_points(g, points);
-        for (const Eigen::Vector3d& p : points) bounds.extend(p);
-      }
-    }
-    if (!bounds.isEmpty() && bounds.sizes().maxCoeff() > 500.0) {
-      report.warnings.push_back(scene.source + ": spans " +
-                                std::to_string(static_cast<long>(bounds.sizes().maxCoeff())) +
-                                " m; if it is in millimetres, import it with --scale 0.001");
-    }
-  }
-
-  // Types, then the parts that become objects: those with geometry that no rule left out.
-  std::vector<int> candidate_of(parts.size(), -1);
-  std::vector<Candidate> candidates;
-  std::vector<std::size_t> fired(rules.rules().size(), 0);
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    const ScenePart& part = *parts[i].part;
-    const TypeDecision decision =
-        rules.classify({part.name, materials_of(part), joint_kind_name(part.joint)});
-    if (decision.rule >= 0) ++fired[static_cast<std::size_t>(decision.rule)];
-    if (decision.skip) {
-      report.skipped.push_back(parts[i].id);
-      continue;
-    }
-    if (part.geometry.empty()) {
-      // A frame that only groups others; a typed one is worth a line (a door whose mesh is
-      // missing and has no collision geometry).
-      if (!decision.type.empty() && default_reference(decision.type) != Reference::kCentre) {
-        report.dropped.push_back(parts[i].id + ": " + decision.type + " without geometry");
-      }
-      continue;
-    }
-    Candidate candidate;
-    candidate.part = &part;
-    candidate.type = decision.type.empty() ? kUnmatchedType : decision.type;
-    candidate.reference = decision.rule >= 0 ? decision.reference : Reference::kCentre;
-    if (decision.type.empty()) report.unmatched.push_back(parts[i].id);
-    for (const PartGeometry& g : part.geometry) append_world_points(g, candidate.world_points_m);
-    candidate_of[i] = static_cast<int>(candidates.size());
-    candidates.push_back(std::move(candidate));
-  }
-  std::vector<std::size_t> part_of_candidate(candidates.size());
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    if (candidate_of[i] < 0) continue;
-    part_of_candidate[static_cast<std::size_t>(candidate_of[i])] = i;
-    for (int p = parts[i].parent; p >= 0; p = parts[static_cast<std::size_t>(p)].parent) {
-      if (candidate_of[static_cast<std::size_t>(p)] >= 0) {
-        candidates[static_cast<std::size_t>(candidate_of[i])].parent =
-            candidate_of[static_cast<std::size_t>(p)];
-        break;
-      }
-    }
-  }
-  const std::vector<ObjectFrame> frames = object_frames(candidates);
+  Chosen chosen = choose_candidates(parts, rules, report);
+  const std::vector<ObjectFrame> frames = object_frames(chosen.candidates);
 
   MaterialTable materials;
   world::WorldModel& world = result.world;
   world.name = !options.world_name.empty() ? options.world_name
                : inputs.empty()            ? "imported"
                                            : std::filesystem::path(inputs[0].path).stem().string();
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const Candidate& candidate = candidates[c];
-    const ObjectFrame& frame = frames[c];
-    world::ObjectModel object;
-    object.id = parts[part_of_candidate[c]].id;
-    object.type = candidate.type;
-    object.world_position_m = frame.world_position_m;
-    object.world_orientation = Eigen::Quaterniond(frame.world_R_object).normalized();
-    // The format wants positive extents; a flat part (a floor plane) is 1 mm thick.
-    object.size_m = frame.size_m.cwiseMax(1e-3);
-    if (candidate.parent >= 0) {
-      object.parent_id = parts[part_of_candidate[static_cast<std::size_t>(candidate.parent)]].id;
-    }
-    const Eigen::Isometry3d object_T_world = object.world_T_object().inverse();
-    bool simplified = false;
-    for (const PartGeometry& g : candidate.part->geometry) {
-      object.primitives.push_back(
-          to_primitive(g, object_T_world, materials,
-                       options.max_triangles_per_object /
-                           std::max<std::size_t>(1, candidate.part->geometry.size()),
-                       report, simplified));
-    }
-    report.simplified_objects += simplified ? 1 : 0;
-    if (!frame.front_from.empty()) {
-      report.front_decided_by[object.id] = frame.front_from;
-    }
-    ++report.objects_by_type[object.type];
-    world.objects.push_back(std::move(object));
+  for (std::size_t c = 0; c < chosen.candidates.size(); ++c) {
+    world.objects.push_back(object_of(chosen, c, frames[c], parts, options, materials, report));
   }
   world.materials = materials.take();
   world.index_ids();
-  for (std::size_t r = 0; r < fired.size(); ++r) {
-    if (fired[r] > 0) report.rules_fired.emplace_back(rules.rules()[r].describe(), fired[r]);
-  }
   return result;
 }
 
