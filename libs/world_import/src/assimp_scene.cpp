@@ -16,17 +16,6 @@
 namespace vsl::world_import {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-std::uint8_t to_byte(float channel) {
-  return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(channel, 0.0f, 1.0f)));
-}
-
 struct MaterialLook {
   std::string name;
   std::optional<world::Colour> colour;

@@ -14,13 +14,6 @@
 namespace vsl::world_import {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 Scene read_scene(const std::string& path, ModelFormat format, const ReadOptions& options) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {

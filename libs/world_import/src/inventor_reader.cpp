@@ -23,9 +23,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <cstdlib>
 #include <mutex>
 #include <set>
 #include <tuple>
@@ -61,10 +61,6 @@ void collect_read_error(const SoError* error, void* data) {
     message = message.substr(0, at) + " (line " + rest.substr(0, rest.find(' ')) + ")";
   }
   messages->push_back(message);
-}
-
-std::uint8_t to_byte(float unit) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f));
 }
 
 // The rigid part of a Coin matrix (row vectors: world = point * matrix); scale stays in the

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 
 #include "scene.hpp"
 
@@ -26,6 +27,17 @@ const char* joint_kind_name(JointKind kind) {
       return "other";
   }
   return "other";
+}
+
+std::uint8_t to_byte(float unit) {
+  return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(unit, 0.0f, 1.0f)));
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
 }
 
 std::string one_line(const std::string& text) {

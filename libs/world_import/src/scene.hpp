@@ -90,6 +90,12 @@ std::vector<MeshPiece> load_mesh_pieces(const std::string& path, const Eigen::Ve
 std::string resolve_uri(const std::string& uri, const std::string& referring_file,
                         const std::vector<std::string>& package_paths);
 
+// A colour channel of 0..1 (as the libraries give them) as an sRGB byte, clamped.
+std::uint8_t to_byte(float unit);
+
+// A file's extension in lower case, with its dot (".dae"): how formats are told apart.
+std::string lower_extension(const std::string& path);
+
 // `text` with every run of white space (newlines too) as one space, trimmed: the libraries'
 // messages can span lines, vsl's errors and warnings are one line each.
 std::string one_line(const std::string& text);

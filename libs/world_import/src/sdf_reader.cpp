@@ -59,10 +59,6 @@ Eigen::Isometry3d to_isometry(const ignition::math::Pose3d& pose) {
   return t;
 }
 
-std::uint8_t to_byte(float unit) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f));
-}
-
 // The roots `model://` URIs (includes and meshes) are searched in: the caller's, then Gazebo's.
 std::vector<std::string> search_roots(const ReadOptions& options) {
   std::vector<std::string> roots = options.package_paths;

@@ -40,10 +40,6 @@ JointKind kind_of(int type) {
   }
 }
 
-std::uint8_t to_byte(float channel) {
-  return static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(channel, 0.0f, 1.0f)));
-}
-
 urdf::ModelInterfaceSharedPtr parse(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw config::Error(path + ": cannot open file");
