@@ -13,12 +13,15 @@ if(VSL_SANITIZE)
 endif()
 
 # vsl_library(NAME <target> SOURCES ... DEPS ...): a library whose public headers live in
-# <dir>/include/vsl/<name>/.
+# <dir>/include/vsl/<name>/; installed, they are in <prefix>/include/vsl/<name>/
+# (cmake/VslInstall.cmake). The warnings are a build-tree matter only, never exported.
 function(vsl_library)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
-  target_include_directories(${ARG_NAME} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
-  target_link_libraries(${ARG_NAME} PUBLIC ${ARG_DEPS} PRIVATE vsl_warnings ${ARG_PRIVATE_DEPS})
+  target_include_directories(${ARG_NAME} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+                                                $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${ARG_NAME} PUBLIC ${ARG_DEPS}
+                                    PRIVATE $<BUILD_INTERFACE:vsl_warnings> ${ARG_PRIVATE_DEPS})
 endfunction()
 
 # vsl_executable(NAME <target> SOURCES ... DEPS ...)

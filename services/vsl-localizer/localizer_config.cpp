@@ -48,11 +48,14 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
   section.expect_keys({"world", "options", "localize_at_startup", "startup_delay_s", "scan",
                        "fusing_timeout_s", "fusing_attempts", "max_active_looks",
                        "max_look_azimuth_deg", "max_look_elevation_deg", "status_period_s",
-                       "passive"});
+                       "passive", "record_percepts_dir"});
   LocalizerDaemonConfig out;
   out.world_path = path_relative_to_file(section.at("world"));
   out.options_path = path_relative_to_file(section.at("options"));
   out.localize_at_startup = section.get("localize_at_startup", false);
+  if (const auto node = section.find("record_percepts_dir")) {
+    if (!node->as_string().empty()) out.record_percepts_dir = path_relative_to_file(*node);
+  }
   if (const auto node = section.find("startup_delay_s")) {
     out.startup_delay_s = node->as_double_in(0.0, 600.0);
   }

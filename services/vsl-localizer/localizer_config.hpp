@@ -28,6 +28,9 @@ struct LocalizerDaemonConfig {
   std::string options_path;  // config/localizer.yaml
   bool localize_at_startup = false;
   double startup_delay_s = 1.0;  // lets the other daemons subscribe first
+  // Non-empty: each list of fused percepts localized from is also written there as a percept
+  // file (request_<id>_<n>.yaml, docs/localize.md), so that `vsl-localize` can replay it.
+  std::string record_percepts_dir;
   PassiveChannels passive_channels;
   CoreOptions core;
 };

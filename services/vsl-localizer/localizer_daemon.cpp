@@ -1,8 +1,10 @@
 #include "localizer_daemon.hpp"
 
+#include <filesystem>
 #include <variant>
 
 #include "messages.hpp"
+#include "vsl/localization/percept_file.hpp"
 #include "vsl/localize_request_t.hpp"
 #include "vsl/percept_list_t.hpp"
 #include "vsl/runtime/clock.hpp"
@@ -55,6 +57,7 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
                              ++malformed_, " malformed so far)");
           return;
         }
+        record_percepts(m.request_id, std::get<0>(percepts));
         core_->fused(m.request_id, std::get<0>(percepts), runtime::wall_utime());
       });
   if (config_.core.passive) {
@@ -99,6 +102,23 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
       config_.core.passive
           ? "passive (follows " + config_.passive_channels.follow_status + ")"
           : std::to_string(config_.core.ego_gaze_targets_m.size()) + " gaze targets");
+}
+
+void LocalizerDaemon::record_percepts(std::int64_t request_id,
+                                      const std::vector<localization::FusedPercept>& percepts) {
+  if (config_.record_percepts_dir.empty()) return;
+  // A full disk or a missing folder costs the recording, never the request.
+  try {
+    std::filesystem::create_directories(config_.record_percepts_dir);
+    const std::filesystem::path path =
+        std::filesystem::path(config_.record_percepts_dir) /
+        ("request_" + std::to_string(request_id) + "_" + std::to_string(++recorded_lists_) +
+         ".yaml");
+    localization::write_percept_file({percepts, std::nullopt}, path.string());
+    daemon_.log().info("fused percepts of request ", request_id, " recorded in ", path.string());
+  } catch (const std::exception& e) {
+    daemon_.log().warn("record_percepts_dir: ", e.what());
+  }
 }
 
 void LocalizerDaemon::start_up_request() {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "localizer_config.hpp"
 #include "localizer_core.hpp"
@@ -27,6 +28,9 @@ class LocalizerDaemon : public LocalizerOutputs {
 
  private:
   void start_up_request();
+  // config record_percepts_dir: the list as a percept file there.
+  void record_percepts(std::int64_t request_id,
+                       const std::vector<localization::FusedPercept>& percepts);
 
   runtime::Daemon& daemon_;
   LocalizerDaemonConfig config_;
@@ -39,6 +43,7 @@ class LocalizerDaemon : public LocalizerOutputs {
   State last_state_ = State::kIdle;
   std::int64_t last_request_ = -1;
   std::int64_t malformed_ = 0;
+  std::int64_t recorded_lists_ = 0;
   bool started_up_ = false;
 };
 
