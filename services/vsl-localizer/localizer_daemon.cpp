@@ -110,10 +110,9 @@ void LocalizerDaemon::record_percepts(std::int64_t request_id,
   // A full disk or a missing folder costs the recording, never the request.
   try {
     std::filesystem::create_directories(config_.record_percepts_dir);
-    const std::filesystem::path path =
-        std::filesystem::path(config_.record_percepts_dir) /
-        ("request_" + std::to_string(request_id) + "_" + std::to_string(++recorded_lists_) +
-         ".yaml");
+    const std::filesystem::path path = std::filesystem::path(config_.record_percepts_dir) /
+                                       ("request_" + std::to_string(request_id) + "_" +
+                                        std::to_string(++recorded_lists_) + ".yaml");
     localization::write_percept_file({percepts, std::nullopt}, path.string());
     daemon_.log().info("fused percepts of request ", request_id, " recorded in ", path.string());
   } catch (const std::exception& e) {

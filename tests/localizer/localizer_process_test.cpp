@@ -24,6 +24,7 @@
 #include "vsl/fused_percept_list_t.hpp"
 #include "vsl/gaze_command_t.hpp"
 #include "vsl/ground_truth_pose_t.hpp"
+#include "vsl/localization/percept_file.hpp"
 #include "vsl/localize_request_t.hpp"
 #include "vsl/localizer_status_t.hpp"
 #include "vsl/percept_list_t.hpp"
@@ -229,8 +230,14 @@ TEST_F(localizer_process, ScanFollowedByTheHeadEndsWithThePose) {
   constexpr int kPort = 17720;
   (void)kitchen();  // before the processes start: loading takes a moment
   StandIn standin(kPort);
+  // record_percepts_dir: the fused percepts localized from, as a percept file.
+  const std::filesystem::path recorded = std::filesystem::temp_directory_path() /
+                                         ("vsl_localizer_percepts_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(recorded);
   ChildProcess localizer(
-      {VSL_LOCALIZER, "--config", temp_config(scan(30, 30)), "--lcm-url", udpm_url(kPort)});
+      {VSL_LOCALIZER, "--config",
+       temp_config(scan(30, 30) + "  record_percepts_dir: " + recorded.string() + "\n"),
+       "--lcm-url", udpm_url(kPort)});
   ASSERT_TRUE(standin.until([&] { return !standin.beats.empty(); }, 60s))
       << "no heartbeat; stderr:\n"
       << localizer.err();
@@ -301,6 +308,10 @@ TEST_F(localizer_process, ScanFollowedByTheHeadEndsWithThePose) {
   }
   EXPECT_TRUE(saw_step);
   EXPECT_EQ(standin.statuses.back().num_fused_percepts > 0, true);
+  const vsl::localization::PerceptFile file =
+      vsl::localization::load_percept_file((recorded / "request_5_1.yaml").string());
+  EXPECT_EQ(static_cast<int>(file.percepts.size()), standin.statuses.back().num_fused_percepts);
+  std::filesystem::remove_all(recorded);
   expect_clean_stop(sim);
   expect_clean_stop(localizer);
 }
