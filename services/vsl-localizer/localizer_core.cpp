@@ -6,6 +6,20 @@
 namespace vsl::localizer_daemon {
 namespace {
 
+State state_of(localization::LocalizationStage stage) {
+  switch (stage) {
+    case localization::LocalizationStage::kPruning:
+      return State::kPruning;
+    case localization::LocalizationStage::kGenerating:
+      return State::kGenerating;
+    case localization::LocalizationStage::kValidating:
+      return State::kValidating;
+    case localization::LocalizationStage::kRefining:
+      return State::kRefining;
+  }
+  return State::kValidating;
+}
+
 std::int64_t after(std::int64_t now_us, double seconds) {
   return now_us + static_cast<std::int64_t>(seconds * 1e6);
 }
@@ -55,8 +69,9 @@ const char* to_string(State state) {
 }
 
 localization::LocalizationResult LocalizerEngine::localize(
-    const std::vector<localization::FusedPercept>& percepts) const {
-  return localizer_.localize(percepts);
+    const std::vector<localization::FusedPercept>& percepts,
+    const localization::StageObserver& on_stage) const {
+  return localizer_.localize(percepts, on_stage);
 }
 
 std::optional<Eigen::Vector3d> LocalizerEngine::discriminator_target(
@@ -185,8 +200,10 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
                              std::int64_t now_us) {
   num_fused_percepts_ = static_cast<int>(percepts.size());
   detail_ = "localizing from " + std::to_string(percepts.size()) + " fused percepts";
-  set_state(State::kValidating, now_us);
-  localization::LocalizationResult result = engine_.localize(percepts);
+  // Each stage's status as the localizer reaches it (LOCALIZER_STATUS lists them). The core
+  // has no clock of its own: they carry the time the localization started.
+  localization::LocalizationResult result = engine_.localize(
+      percepts, [&](localization::LocalizationStage stage) { set_state(state_of(stage), now_us); });
   num_hypotheses_ = static_cast<int>(result.hypotheses.size());
   switch (result.status) {
     case localization::Status::kLocalized:

@@ -106,8 +106,11 @@ class LocalizerOutputs {
 class LocalizationEngine {
  public:
   virtual ~LocalizationEngine() = default;
+  // `on_stage`: called as each stage of the localization is first reached (pruning,
+  // generating, validating, refining; localizer.hpp).
   virtual localization::LocalizationResult localize(
-      const std::vector<localization::FusedPercept>& percepts) const = 0;
+      const std::vector<localization::FusedPercept>& percepts,
+      const localization::StageObserver& on_stage) const = 0;
   // The ego point to look at next; `looked_at_ego_m`: the looks of this request so far.
   virtual std::optional<Eigen::Vector3d> discriminator_target(
       const localization::LocalizationResult& result,
@@ -125,7 +128,8 @@ class LocalizerEngine : public LocalizationEngine {
   LocalizerEngine(const localization::Localizer& localizer, localization::LookLimits look_limits)
       : localizer_(localizer), look_limits_(look_limits) {}
   localization::LocalizationResult localize(
-      const std::vector<localization::FusedPercept>& percepts) const override;
+      const std::vector<localization::FusedPercept>& percepts,
+      const localization::StageObserver& on_stage) const override;
   std::optional<Eigen::Vector3d> discriminator_target(
       const localization::LocalizationResult& result,
       const std::vector<Eigen::Vector3d>& looked_at_ego_m) const override;

@@ -298,7 +298,8 @@ TEST_F(localizer_process, ScanFollowedByTheHeadEndsWithThePose) {
   }
   // The status sequence.
   EXPECT_EQ(standin.states(5),
-            (std::vector<int>{Status::SCANNING, Status::FUSING, Status::VALIDATING, Status::DONE}));
+            (std::vector<int>{Status::SCANNING, Status::FUSING, Status::PRUNING, Status::GENERATING,
+                              Status::VALIDATING, Status::REFINING, Status::DONE}));
   EXPECT_EQ(standin.fusing_entries, 1);
   bool saw_step = false;
   for (const auto& s : standin.statuses) {

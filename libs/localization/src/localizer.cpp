@@ -214,8 +214,15 @@ const LocalizerOptions& Localizer::options() const {
   return state_->options;
 }
 
-LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts) const {
+LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts,
+                                       const StageObserver& on_stage) const {
   const auto start = Clock::now();
+  std::optional<LocalizationStage> reached;
+  const auto enter = [&](LocalizationStage stage) {
+    if (reached && *reached >= stage) return;
+    reached = stage;
+    if (on_stage) on_stage(stage);
+  };
   const LocalizerOptions& options = state_->options;
   const world::WorldGraph& graph = state_->graph;
   LocalizationResult result;
@@ -243,6 +250,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
   }
 
   CandidateSets candidates;
+  enter(LocalizationStage::kPruning);
   {
     StageTimer timer(times.proximity_filter_ms);
     candidates = proximity_filter(graph, state_->adjacency, percepts, noise, options.pruning);
@@ -293,6 +301,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     }
 
     std::vector<std::pair<Eigen::Isometry3d, std::vector<NodeAssociation>>> poses;
+    enter(LocalizationStage::kGenerating);
     {
       StageTimer timer(times.hypothesis_generation_ms);
       // Relative to the best so far (validated, or found by this seed): an interpretation that
@@ -353,6 +362,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
       }
     }
 
+    if (!poses.empty()) enter(LocalizationStage::kValidating);
     {
       StageTimer timer(times.validation_ms);
       for (const auto& [pose, generating] : poses) {
@@ -395,6 +405,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     result.associations = result.hypotheses.front().associations;
   }
   if (decision.status == Status::kLocalized) {
+    enter(LocalizationStage::kRefining);
     StageTimer timer(times.refinement_ms);
     std::vector<PointCorrespondence> points;
     for (const NodeAssociation& a : validated.front().explanation.associations) {

@@ -33,10 +33,18 @@ struct Recorder : LocalizerOutputs {
 
 // Answers from a script: one result per localize() call.
 struct FakeEngine : LocalizationEngine {
-  LocalizationResult localize(const std::vector<FusedPercept>& percepts) const override {
+  // Reports the stages a real localization reaches for its result: pruning, generating and
+  // validating always, refining only for a pose.
+  LocalizationResult localize(const std::vector<FusedPercept>& percepts,
+                              const vsl::localization::StageObserver& on_stage) const override {
     seen.push_back(percepts.size());
     LocalizationResult r = results.empty() ? LocalizationResult{} : results.front();
     if (!results.empty()) results.pop_front();
+    using vsl::localization::LocalizationStage;
+    on_stage(LocalizationStage::kPruning);
+    on_stage(LocalizationStage::kGenerating);
+    on_stage(LocalizationStage::kValidating);
+    if (r.status == Status::kLocalized) on_stage(LocalizationStage::kRefining);
     return r;
   }
   std::optional<Eigen::Vector3d> discriminator_target(
@@ -130,8 +138,9 @@ TEST(LocalizerCore, ScanFuseLocalize) {
   EXPECT_EQ(h.out.poses[0].request_id, 7);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
   EXPECT_EQ(h.engine.seen, std::vector<std::size_t>{6});
-  EXPECT_EQ(h.out.states(), (std::vector<State>{State::kScanning, State::kFusing,
-                                                State::kValidating, State::kDone}));
+  EXPECT_EQ(h.out.states(), (std::vector<State>{State::kScanning, State::kFusing, State::kPruning,
+                                                State::kGenerating, State::kValidating,
+                                                State::kRefining, State::kDone}));
   EXPECT_DOUBLE_EQ(h.out.statuses.back().progress, 1.0);
   EXPECT_EQ(h.out.statuses.back().num_fused_percepts, 6);
   // "step k of N" while in progress.
@@ -191,9 +200,11 @@ TEST(LocalizerCore, AmbiguousRunsActiveValidationUntilLocalized) {
   ASSERT_EQ(h.out.poses.size(), 1u);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
   EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 3.0);
-  EXPECT_EQ(h.out.states(), (std::vector<State>{State::kScanning, State::kFusing,
-                                                State::kValidating, State::kActiveValidation,
-                                                State::kFusing, State::kValidating, State::kDone}));
+  EXPECT_EQ(h.out.states(),
+            (std::vector<State>{State::kScanning, State::kFusing, State::kPruning,
+                                State::kGenerating, State::kValidating, State::kActiveValidation,
+                                State::kFusing, State::kPruning, State::kGenerating,
+                                State::kValidating, State::kRefining, State::kDone}));
 }
 
 TEST(LocalizerCore, AmbiguousAfterTheLookLimit) {

@@ -3,6 +3,7 @@
 // No middleware: the localizer daemon and vsl-localize drive it.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -153,6 +154,15 @@ struct LookLimits {
   double cap_m = 1.0;                 // discrimination beyond this counts as this
 };
 
+// The stages of one localize() call (paper §2.3-2.4), in the order they are first reached:
+// pruning the world graph (proximity and orientation filters), generating hypotheses by sphere
+// intersections, validating them with the unused associations, refining the winner with its
+// covariance. The search interleaves the first three per seed; a stage is reported once, when it
+// is first reached, and never after a later one. A call that stops early (too few percepts, no
+// hypothesis, no LOCALIZED decision) reports only the stages it reached.
+enum class LocalizationStage { kPruning, kGenerating, kValidating, kRefining };
+using StageObserver = std::function<void(LocalizationStage)>;
+
 class Localizer {
  public:
   Localizer(const world::WorldModel& world, LocalizerOptions options);
@@ -165,7 +175,9 @@ class Localizer {
   const LocalizerOptions& options() const;
 
   // Localizes from fused percepts (ego frame). Thread-safe (const, no shared mutable state).
-  LocalizationResult localize(const std::vector<FusedPercept>& percepts) const;
+  // `on_stage`, when set, is called on this thread as each stage is first reached.
+  LocalizationResult localize(const std::vector<FusedPercept>& percepts,
+                              const StageObserver& on_stage = {}) const;
 
   // For an ambiguous result: the model object that best discriminates its hypotheses and the
   // ego-frame point to look at; nullopt when fewer than two hypotheses or nothing discriminates.
