@@ -48,19 +48,25 @@ target_precompile_headers(vsl_test_pch PRIVATE <gtest/gtest.h> <Eigen/Core> <Eig
   <opencv2/core.hpp> <algorithm> <array> <cmath> <filesystem> <fstream> <functional> <limits>
   <memory> <random> <sstream> <stdexcept> <string> <vector>)
 
-# vsl_test(NAME <target> SOURCES ... DEPS ... [LABELS ...]): one GoogleTest executable, its tests
-# registered with CTest one by one. Tests run from the source tree root so that shipped files
-# (config/, calib/) are found by their project-relative paths.
+# vsl_test(NAME <target> SOURCES ... DEPS ... [LABELS ...] [SERIAL]): one GoogleTest executable,
+# its tests registered with CTest one by one. Tests run from the source tree root so that shipped
+# files (config/, calib/) are found by their project-relative paths. SERIAL: ctest runs each of
+# them alone (RUN_SERIAL), for the real-time pipeline whose daemons must not be starved of the
+# cores by other tests, as on a robot PC they are not.
 function(vsl_test)
-  cmake_parse_arguments(ARG "" "NAME" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "SERIAL" "NAME" "SOURCES;DEPS;LABELS" ${ARGN})
   add_executable(${ARG_NAME} ${ARG_SOURCES})
   target_link_libraries(${ARG_NAME} PRIVATE vsl_warnings GTest::gtest GTest::gtest_main ${ARG_DEPS})
   target_compile_definitions(${ARG_NAME} PRIVATE ${VSL_TEST_DEFINITIONS})
   target_include_directories(${ARG_NAME} SYSTEM PRIVATE ${VSL_TEST_PCH_INCLUDES})
   target_compile_options(${ARG_NAME} PRIVATE -Winvalid-pch)
   target_precompile_headers(${ARG_NAME} REUSE_FROM vsl_test_pch)
+  set(serial FALSE)
+  if(ARG_SERIAL)
+    set(serial TRUE)
+  endif()
   gtest_discover_tests(${ARG_NAME} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-                       PROPERTIES LABELS "${ARG_LABELS}" DISCOVERY_TIMEOUT 60)
+                       PROPERTIES LABELS "${ARG_LABELS}" RUN_SERIAL ${serial} DISCOVERY_TIMEOUT 60)
 endfunction()
 
 # vsl_benchmark(NAME <target> SOURCES ... DEPS ...)
