@@ -201,7 +201,9 @@ TEST_P(FullPipeline, LocalizesWithinFiveCentimetresAndTwoDegrees) {
   const PoseCase& c = GetParam();
   Pipeline pipeline(Pipeline::live(c.port, c.pose));
   const auto request = pipeline.request();
-  expect_localized_near_truth(Pipeline::finish(*request), c.name);
+  const std::optional<RequestResult> result = Pipeline::finish(*request);
+  // On a failure, vsl-request's whole progress and pose table tell what went wrong.
+  expect_localized_near_truth(result, c.name + std::string("\n") + request->out());
 }
 
 // Poses of vsl-scenario --seed 3 (free floor, facing into the room) and the default one.
@@ -261,7 +263,8 @@ TEST(PipelineRecovery, FusionKilledDuringTheScanAndRestartedStillLocalizes) {
   }
   ASSERT_TRUE(killed) << "the scan never reached its second gaze target\n" << describe(*request);
   pipeline.start_fusion();  // adopts the request from LOCALIZER_STATUS (docs/fusion.md)
-  expect_localized_near_truth(Pipeline::finish(*request), "after fusion's restart");
+  const std::optional<RequestResult> result = Pipeline::finish(*request);
+  expect_localized_near_truth(result, "after fusion's restart\n" + request->out());
 }
 
 // --- The localizer stopped or killed mid-request: the request is still answered. ---------------
@@ -296,7 +299,8 @@ TEST(PipelineRecovery, LocalizerKilledMidRequestAndRestartedAnswersTheRequest) {
   ASSERT_TRUE(wait_for_second_gaze(*request)) << describe(*request);
   pipeline.kill("vsl-localizer");
   pipeline.start_localizer();  // a new pid: vsl-request sends the request again
-  expect_localized_near_truth(Pipeline::finish(*request), "after the localizer's restart");
+  const std::optional<RequestResult> result = Pipeline::finish(*request);
+  expect_localized_near_truth(result, "after the localizer's restart\n" + request->out());
   EXPECT_NE(request->err().find("the localizer restarted"), std::string::npos)
       << describe(*request);
 }
