@@ -15,8 +15,6 @@
 namespace vsl::sim_head {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // A stalled loop (a debugger, a suspended process) must not make the joints jump: longer gaps
 // count as this much motion time.
 constexpr double kMaxStepS = 0.25;
@@ -40,7 +38,7 @@ SimHeadDaemon::SimHeadDaemon(runtime::Daemon& daemon, SimHeadSetup setup)
       world_name_(std::filesystem::path(setup_.config.world_path).filename().string()),
       renderer_(setup_.world, setup_.config.render),
       simulator_(setup_.head, setup_.initial_state, setup_.config.gaze_tolerance_rad),
-      last_step_(Clock::now()) {
+      last_step_(daemon.clock().monotonic()) {
   const SimHeadConfig& config = setup_.config;
   daemon_.subscribe<vsl::gaze_command_t>(
       daemon_.channels().gaze_command,
@@ -81,7 +79,7 @@ void SimHeadDaemon::on_gaze_command(const vsl::gaze_command_t& command) {
 }
 
 void SimHeadDaemon::step_to_now() {
-  const Clock::time_point now = Clock::now();
+  const std::chrono::nanoseconds now = daemon_.clock().monotonic();
   const double dt_s =
       std::clamp(std::chrono::duration<double>(now - last_step_).count(), 0.0, kMaxStepS);
   last_step_ = now;
@@ -91,18 +89,19 @@ void SimHeadDaemon::step_to_now() {
 void SimHeadDaemon::control_tick() {
   step_to_now();
   daemon_.publish(daemon_.channels().head_state,
-                  head_state_message(setup_.head, simulator_.state(), runtime::wall_utime()));
+                  head_state_message(setup_.head, simulator_.state(), daemon_.now_utime()));
 }
 
 void SimHeadDaemon::frame_tick() {
   step_to_now();
-  const std::int64_t utime = runtime::wall_utime();
+  const std::int64_t utime = daemon_.now_utime();
   const Eigen::Isometry3d& world_T_ego = setup_.config.world_T_ego;
   // Each image its own noise, reproducible from the seed and the frame id.
   const std::uint64_t seed = setup_.config.noise_seed + 2 * static_cast<std::uint64_t>(frame_id_);
-  const Clock::time_point render_start = Clock::now();
+  // On the daemon's clock: in lock step on simulated time (tests) rendering takes no time.
+  const std::chrono::nanoseconds render_start = daemon_.clock().monotonic();
   render_stereo_frame(renderer_, setup_.head, simulator_, world_T_ego, seed, left_, right_);
-  report_slow_rendering(Clock::now() - render_start);
+  report_slow_rendering(daemon_.clock().monotonic() - render_start);
 
   vsl::ground_truth_pose_t truth;
   truth.utime = utime;
@@ -122,12 +121,12 @@ void SimHeadDaemon::frame_tick() {
   daemon_.publish(daemon_.channels().stereo_frame, frame);
 }
 
-void SimHeadDaemon::report_slow_rendering(Clock::duration took) {
+void SimHeadDaemon::report_slow_rendering(std::chrono::nanoseconds took) {
   // The loop is single-threaded: while a pair renders, no joint step, HEAD_STATE or command
   // runs, and frames slow down (missed ticks are skipped). Say so, but not for every frame.
   const double took_s = std::chrono::duration<double>(took).count();
   const double period_s = 1.0 / setup_.config.frame_rate_hz;
-  const Clock::time_point now = Clock::now();
+  const std::chrono::nanoseconds now = daemon_.clock().monotonic();
   if (took_s <= period_s || now < next_slow_warning_) return;
   next_slow_warning_ = now + std::chrono::seconds(30);
   daemon_.log().warn("rendering a stereo pair takes ", took_s, " s, more than the frame period of ",

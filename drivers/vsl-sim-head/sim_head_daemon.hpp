@@ -30,15 +30,15 @@ class SimHeadDaemon {
   void step_to_now();
   void control_tick();
   void frame_tick();
-  void report_slow_rendering(std::chrono::steady_clock::duration took);
+  void report_slow_rendering(std::chrono::nanoseconds took);
 
   runtime::Daemon& daemon_;
   SimHeadSetup setup_;  // before simulator_, which refers to setup_.head
   std::string world_name_;
   render::Renderer renderer_;
   HeadSimulator simulator_;
-  std::chrono::steady_clock::time_point last_step_;
-  std::chrono::steady_clock::time_point next_slow_warning_{};
+  std::chrono::nanoseconds last_step_;  // monotonic time of the daemon's clock
+  std::chrono::nanoseconds next_slow_warning_{};
   std::int64_t frame_id_ = 0;
   std::int64_t malformed_commands_ = 0;
   render::RenderedImage left_;  // reused from frame to frame

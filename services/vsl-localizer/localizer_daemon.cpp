@@ -31,7 +31,7 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
       engine_(localizer_, config_.core.look_limits) {
   CoreOptions core = config_.core;
   // Gaze ids unique across restarts: a stale frame's echo of an old id never counts as ours.
-  core.first_gaze_id = runtime::wall_utime();
+  core.first_gaze_id = daemon_.now_utime();
   core_ = std::make_unique<LocalizerCore>(core, engine_, *this);
   const runtime::Channels& ch = daemon_.channels();
 
@@ -46,7 +46,7 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
           daemon_.log().info("request ", m.request_id, " from '", m.source, "'",
                              m.reason.empty() ? "" : ": ", m.reason);
         }
-        core_->request(m.request_id, runtime::wall_utime());
+        core_->request(m.request_id, daemon_.now_utime());
       });
   daemon_.subscribe<vsl::fused_percept_list_t>(
       ch.fused_percepts, [this](const vsl::fused_percept_list_t& m, std::int64_t) {
@@ -58,7 +58,7 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
           return;
         }
         record_percepts(m.request_id, std::get<0>(percepts));
-        core_->fused(m.request_id, std::get<0>(percepts), runtime::wall_utime());
+        core_->fused(m.request_id, std::get<0>(percepts), daemon_.now_utime());
       });
   if (config_.core.passive) {
     daemon_.subscribe<vsl::localizer_status_t>(
@@ -69,7 +69,7 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
             ++malformed_;
             return;
           }
-          core_->followed_status(m.request_id, static_cast<State>(m.state), runtime::wall_utime());
+          core_->followed_status(m.request_id, static_cast<State>(m.state), daemon_.now_utime());
         });
   } else {
     daemon_.bus().subscribe(
@@ -81,16 +81,16 @@ LocalizerDaemon::LocalizerDaemon(runtime::Daemon& daemon, LocalizerSetup setup)
                                               typeid(vsl::stereo_frame_t));
             return;
           }
-          core_->frame(*header, runtime::wall_utime());
+          core_->frame(*header, daemon_.now_utime());
         },
         kFrameQueueCapacity);
     daemon_.subscribe<vsl::percept_list_t>(ch.percepts,
                                            [this](const vsl::percept_list_t& m, std::int64_t) {
-                                             core_->percepts(m.frame_id, runtime::wall_utime());
+                                             core_->percepts(m.frame_id, daemon_.now_utime());
                                            });
   }
   daemon_.every(std::chrono::milliseconds(50), [this] {
-    core_->tick(runtime::wall_utime());
+    core_->tick(daemon_.now_utime());
     if (!started_up_ && config_.localize_at_startup &&
         daemon_.uptime_s() >= config_.startup_delay_s) {
       started_up_ = true;
@@ -122,7 +122,7 @@ void LocalizerDaemon::record_percepts(std::int64_t request_id,
 
 void LocalizerDaemon::start_up_request() {
   vsl::localize_request_t request{};
-  request.utime = runtime::wall_utime();
+  request.utime = daemon_.now_utime();
   request.request_id = request.utime;
   request.source = "vsl-localizer";
   request.reason = "start-up";
@@ -134,15 +134,15 @@ void LocalizerDaemon::stopped() {
   if (config_.core.passive) return;  // a replay's requests belong to the recorded localizer
   core_->shut_down("the localizer stopped before it finished (process " + daemon_.log().process() +
                        " shut down); send the request again when it is back",
-                   runtime::wall_utime());
+                   daemon_.now_utime());
 }
 
 void LocalizerDaemon::gaze(const GazeCommand& command) {
-  daemon_.publish(daemon_.channels().gaze_command, gaze_message(command, runtime::wall_utime()));
+  daemon_.publish(daemon_.channels().gaze_command, gaze_message(command, daemon_.now_utime()));
 }
 
 void LocalizerDaemon::status(const StatusReport& report) {
-  daemon_.publish(status_channel_, status_message(report, runtime::wall_utime()));
+  daemon_.publish(status_channel_, status_message(report, daemon_.now_utime()));
   if (report.state != last_state_ || report.request_id != last_request_) {
     last_state_ = report.state;
     last_request_ = report.request_id;
@@ -153,7 +153,7 @@ void LocalizerDaemon::status(const StatusReport& report) {
 }
 
 void LocalizerDaemon::pose(const PoseReport& report) {
-  daemon_.publish(pose_channel_, pose_message(report, runtime::wall_utime()));
+  daemon_.publish(pose_channel_, pose_message(report, daemon_.now_utime()));
   const Eigen::Vector3d t = report.result.world_T_ego.translation();
   daemon_.log().info("request ", report.request_id, ": pose ",
                      localization::to_string(report.result.status), " at (", t.x(), ", ", t.y(),

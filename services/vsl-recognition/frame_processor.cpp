@@ -40,7 +40,7 @@ FrameProcessor::FrameProcessor(const recognition::StereoRecognizer& recognizer,
                                bool draw_debug_image)
     : recognizer_(recognizer), draw_debug_image_(draw_debug_image) {}
 
-FrameOutcome FrameProcessor::process(runtime::Bytes bytes) const {
+FrameOutcome FrameProcessor::process(runtime::Bytes bytes, std::int64_t now_utime) const {
   const Clock::time_point start = Clock::now();
   FrameOutcome out;
   out.message_bytes = bytes.size();
@@ -61,8 +61,7 @@ FrameOutcome FrameProcessor::process(runtime::Bytes bytes) const {
   try {
     const recognition::FrameResult result =
         recognizer_.recognize(stereo.left_bgr, stereo.right_bgr, stereo.joints_at_capture);
-    out.percepts =
-        percept_list_message(result, stereo.frame_id, stereo.utime, runtime::wall_utime());
+    out.percepts = percept_list_message(result, stereo.frame_id, stereo.utime, now_utime);
     out.segmentation_ms = result.segmentation_ms;
     out.classification_ms = result.classification_ms;
     out.stereo_ms = result.stereo_ms;

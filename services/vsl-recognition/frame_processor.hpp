@@ -42,7 +42,8 @@ class FrameProcessor {
   FrameProcessor(const recognition::StereoRecognizer& recognizer, bool draw_debug_image);
 
   // Never throws for bad input: every failure is an outcome. Const and thread-safe.
-  FrameOutcome process(runtime::Bytes bytes) const;
+  // `now_utime`: the percept list's utime (its publication).
+  FrameOutcome process(runtime::Bytes bytes, std::int64_t now_utime) const;
 
  private:
   const recognition::StereoRecognizer& recognizer_;

@@ -7,12 +7,15 @@
 
 namespace vsl::recognition_daemon {
 
-RecognitionDaemon::RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup setup)
+RecognitionDaemon::RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup setup,
+                                     Processing processing)
     : daemon_(daemon),
       setup_(std::move(setup)),
+      processing_(processing),
       processor_(*setup_.recognizer, setup_.config.debug_image),
       worker_([this](runtime::Bytes bytes, std::int64_t) {
-        finished_.push(processor_.process(bytes));
+        // The wall clock (the worker's mode) may be read from any thread.
+        finished_.push(processor_.process(bytes, daemon_.now_utime()));
       }) {
   const RecognitionConfig& config = setup_.config;
   // Raw bytes: the loop thread only copies them; the worker decodes the newest.
@@ -37,6 +40,11 @@ RecognitionDaemon::RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup s
 
 void RecognitionDaemon::on_frame_bytes(runtime::Bytes bytes, std::int64_t receive_utime) {
   ++stats_.frames_in;
+  if (processing_ == Processing::kInline) {
+    FrameOutcome outcome = processor_.process(bytes, daemon_.now_utime());
+    handle(outcome);
+    return;
+  }
   if (worker_.put(bytes, receive_utime)) {
     // Superseded before the worker took it: recognition works on the newest frame only.
     ++stats_.dropped;

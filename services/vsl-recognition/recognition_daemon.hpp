@@ -24,8 +24,14 @@ inline constexpr std::chrono::milliseconds kOutboxPollPeriod{2};
 
 class RecognitionDaemon {
  public:
+  // kWorkerThread: as above. kInline: each frame is recognized inside its handler on the loop
+  // thread and published at once, none dropped, so that daemons in lock step on simulated time
+  // (Daemon::step, tests/pipeline) see every frame's percepts before the clock moves on.
+  enum class Processing { kWorkerThread, kInline };
+
   // Subscribes and arms the timers on `daemon`; the daemon's run() then drives everything.
-  RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup setup);
+  RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup setup,
+                    Processing processing = Processing::kWorkerThread);
   // Lets the frame in progress finish (its result is not published) and stops the worker.
   ~RecognitionDaemon() = default;
   RecognitionDaemon(const RecognitionDaemon&) = delete;
@@ -41,6 +47,7 @@ class RecognitionDaemon {
 
   runtime::Daemon& daemon_;
   RecognitionSetup setup_;
+  Processing processing_;
   FrameProcessor processor_;
   RecognitionStats stats_;  // loop thread only
   Outbox<FrameOutcome> finished_;

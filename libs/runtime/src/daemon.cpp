@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <optional>
 #include <stdexcept>
 
 #include "vsl/daemon_heartbeat_t.hpp"
@@ -21,7 +22,7 @@ namespace vsl::runtime {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Nanos = std::chrono::nanoseconds;  // monotonic time of the daemon's clock
 
 // At most this many messages per drain, so that a flood (or a log replayed at speed=0) cannot
 // starve timers, the heartbeat and signals.
@@ -35,8 +36,7 @@ std::string signal_name(int signal) {
 
 // The first deadline after `now` on the grid next + k * period: ticks missed while busy are
 // skipped.
-Clock::time_point next_after(Clock::time_point next, std::chrono::nanoseconds period,
-                             Clock::time_point now) {
+Nanos next_after(Nanos next, Nanos period, Nanos now) {
   if (next > now) return next;
   return next + period * ((now - next) / period + 1);
 }
@@ -45,9 +45,9 @@ Clock::time_point next_after(Clock::time_point next, std::chrono::nanoseconds pe
 
 struct Daemon::Impl {
   struct Timer {
-    std::chrono::nanoseconds period;
-    Clock::time_point next;
-    bool armed = false;  // next is set (at run() start for timers added before)
+    Nanos period;
+    Nanos next{};
+    bool armed = false;  // next is set (at start() for timers added before)
     std::function<void()> tick;
   };
   struct Newest {
@@ -56,28 +56,35 @@ struct Daemon::Impl {
     RawHandler process;
   };
 
-  Impl(RuntimeConfig config_in, Logger log_in)
-      : signals({SIGINT, SIGTERM}), config(std::move(config_in)), log(std::move(log_in)) {
+  Impl(RuntimeConfig config_in, Logger log_in, const Clock* clock_in)
+      : signals({SIGINT, SIGTERM}),
+        config(std::move(config_in)),
+        log(std::move(log_in)),
+        clock(clock_in != nullptr ? clock_in : &wall_clock),
+        constructed(clock->monotonic()) {
     if (!(config.heartbeat_period_s >= kMinHeartbeatPeriodS &&
           config.heartbeat_period_s <= kMaxHeartbeatPeriodS)) {
       throw std::invalid_argument("heartbeat_period_s must be within [0.01, 60] s");
     }
-    heartbeat_period = std::chrono::duration_cast<std::chrono::nanoseconds>(
-        std::chrono::duration<double>(config.heartbeat_period_s));
+    heartbeat_period =
+        std::chrono::duration_cast<Nanos>(std::chrono::duration<double>(config.heartbeat_period_s));
   }
 
   // First: blocks the signals before the bus can start threads.
   SignalFd signals;
   RuntimeConfig config;
   Logger log;
+  WallClock wall_clock;
+  const Clock* clock;
   std::unique_ptr<Bus> bus;
   std::deque<Timer> timers;   // deque: references stay valid when a tick adds a timer
   std::deque<Newest> newest;  // the subscriptions keep pointers to these
   std::string state = "running";
-  Clock::time_point constructed = Clock::now();
-  std::chrono::nanoseconds heartbeat_period{};
-  Clock::time_point next_heartbeat{};
+  Nanos constructed;
+  Nanos heartbeat_period{};
+  Nanos next_heartbeat{};
   bool running = false;
+  bool finished = false;
   bool stop_requested = false;
   bool end_of_log = false;
   int exit_code = 0;
@@ -85,12 +92,12 @@ struct Daemon::Impl {
 
 Daemon::Daemon(std::string process, RuntimeConfig config) {
   Logger log(std::move(process), config.log_level);
-  impl_ = std::make_unique<Impl>(std::move(config), log);
+  impl_ = std::make_unique<Impl>(std::move(config), log, nullptr);
   impl_->bus = std::make_unique<LcmBus>(impl_->config.lcm_url, std::move(log));
 }
 
-Daemon::Daemon(RuntimeConfig config, Logger log, std::unique_ptr<Bus> bus)
-    : impl_(std::make_unique<Impl>(std::move(config), std::move(log))) {
+Daemon::Daemon(RuntimeConfig config, Logger log, std::unique_ptr<Bus> bus, const Clock* clock)
+    : impl_(std::make_unique<Impl>(std::move(config), std::move(log), clock)) {
   if (!bus) throw std::invalid_argument("Daemon needs a bus");
   impl_->bus = std::move(bus);
 }
@@ -105,6 +112,9 @@ const Logger& Daemon::log() const {
 }
 const RuntimeConfig& Daemon::config() const {
   return impl_->config;
+}
+const Clock& Daemon::clock() const {
+  return *impl_->clock;
 }
 
 void Daemon::subscribe_newest_raw(const std::string& channel, RawHandler process,
@@ -127,7 +137,7 @@ void Daemon::every(std::chrono::nanoseconds period, std::function<void()> tick) 
   timer.period = period;
   timer.tick = std::move(tick);
   if (impl_->running) {
-    timer.next = Clock::now() + period;
+    timer.next = impl_->clock->monotonic() + period;
     timer.armed = true;
   }
 }
@@ -144,7 +154,7 @@ void Daemon::every_seconds(double period_s, std::function<void()> tick) {
 void Daemon::set_state(std::string state) {
   if (state == impl_->state) return;
   impl_->state = std::move(state);
-  impl_->next_heartbeat = Clock::now();  // announce the change at once
+  impl_->next_heartbeat = impl_->clock->monotonic();  // announce the change at once
 }
 
 const std::string& Daemon::state() const {
@@ -162,7 +172,7 @@ bool Daemon::stopping() const {
 }
 
 double Daemon::uptime_s() const {
-  return std::chrono::duration<double>(Clock::now() - impl_->constructed).count();
+  return std::chrono::duration<double>(impl_->clock->monotonic() - impl_->constructed).count();
 }
 
 void Daemon::callback_failed(const std::string& where) noexcept {
@@ -177,27 +187,27 @@ void Daemon::callback_failed(const std::string& where) noexcept {
   stop(1);
 }
 
-int Daemon::run() {
+void Daemon::publish_heartbeat() {
   Impl& s = *impl_;
-  if (s.running) throw std::logic_error("Daemon::run() called twice");
+  const BusCounters& counters = s.bus->counters();
+  vsl::daemon_heartbeat_t heartbeat;
+  heartbeat.utime = s.clock->utime();
+  heartbeat.process = s.log.process();
+  heartbeat.pid = static_cast<std::int32_t>(::getpid());
+  heartbeat.state = s.state;
+  heartbeat.uptime_s = uptime_s();
+  heartbeat.messages_received = counters.messages_received;
+  heartbeat.messages_published = counters.messages_published;
+  heartbeat.messages_dropped = counters.messages_dropped;
+  heartbeat.decode_errors = counters.decode_errors;
+  runtime::publish(*s.bus, s.config.channels.heartbeat, heartbeat);
+}
+
+void Daemon::start() {
+  Impl& s = *impl_;
+  if (s.running) throw std::logic_error("Daemon started twice");
   s.running = true;
-
-  const auto publish_heartbeat = [&] {
-    const BusCounters& counters = s.bus->counters();
-    vsl::daemon_heartbeat_t heartbeat;
-    heartbeat.utime = wall_utime();
-    heartbeat.process = s.log.process();
-    heartbeat.pid = static_cast<std::int32_t>(::getpid());
-    heartbeat.state = s.state;
-    heartbeat.uptime_s = uptime_s();
-    heartbeat.messages_received = counters.messages_received;
-    heartbeat.messages_published = counters.messages_published;
-    heartbeat.messages_dropped = counters.messages_dropped;
-    heartbeat.decode_errors = counters.decode_errors;
-    runtime::publish(*s.bus, s.config.channels.heartbeat, heartbeat);
-  };
-
-  const Clock::time_point start = Clock::now();
+  const Nanos start = s.clock->monotonic();
   for (Impl::Timer& timer : s.timers) {
     if (!timer.armed) timer.next = start + timer.period;
     timer.armed = true;
@@ -205,34 +215,123 @@ int Daemon::run() {
   s.next_heartbeat = start;
   s.log.info("running on ", s.bus->url(), " (pid ", ::getpid(), ", heartbeat on ",
              s.config.channels.heartbeat, " every ", s.config.heartbeat_period_s, " s)");
+}
 
+bool Daemon::run_due_timers() {
+  Impl& s = *impl_;
+  bool ran = false;
+  const Nanos now = s.clock->monotonic();
+  for (std::size_t i = 0; i < s.timers.size() && !s.stop_requested; ++i) {
+    Impl::Timer& timer = s.timers[i];
+    if (now < timer.next) continue;
+    timer.next = next_after(timer.next, timer.period, now);
+    ran = true;
+    try {
+      timer.tick();
+    } catch (...) {
+      callback_failed("timer");
+    }
+  }
+  if (now >= s.next_heartbeat && !s.stop_requested) {
+    publish_heartbeat();
+    s.log.flush_suppressed();  // the summary of warnings held back, once their interval is over
+    s.next_heartbeat = next_after(s.next_heartbeat, s.heartbeat_period, now);
+    ran = true;
+  }
+  return ran;
+}
+
+int Daemon::drain_bus() {
+  Impl& s = *impl_;
+  int dispatched = 0;
+  for (int n = 0; n < kMaxDrain && !s.stop_requested; ++n) {
+    HandleResult result = HandleResult::kError;
+    try {
+      result = s.bus->handle(std::chrono::milliseconds(0));
+    } catch (...) {
+      callback_failed("message handler");
+      break;
+    }
+    if (result == HandleResult::kMessage) {
+      ++dispatched;
+      continue;
+    }
+    if (result == HandleResult::kEndOfLog) s.end_of_log = true;
+    if (result == HandleResult::kError) {
+      s.log.error("cannot receive from ", s.bus->url());
+      stop(1);
+    }
+    break;
+  }
+  return dispatched;
+}
+
+int Daemon::run_newest() {
+  Impl& s = *impl_;
+  int ran = 0;
+  for (std::size_t i = 0; i < s.newest.size() && !s.stop_requested; ++i) {
+    Impl::Newest& slot = s.newest[i];
+    try {
+      if (slot.box.take(slot.process)) ++ran;
+    } catch (...) {
+      callback_failed("handler of " + slot.channel);
+    }
+  }
+  if (s.end_of_log && !s.stop_requested) {
+    s.log.info("end of log ", s.bus->url(), ", shutting down");
+    stop(0);
+  }
+  return ran;
+}
+
+bool Daemon::step() {
+  if (!impl_->running) start();
+  if (impl_->stop_requested || impl_->finished) return false;
+  bool did = run_due_timers();
+  did = drain_bus() > 0 || did;
+  did = run_newest() > 0 || did;
+  return did;
+}
+
+std::optional<std::int64_t> Daemon::next_deadline_utime() const {
+  const Impl& s = *impl_;
+  if (!s.running || s.finished || s.stop_requested) return std::nullopt;
+  Nanos deadline = s.next_heartbeat;
+  for (const Impl::Timer& timer : s.timers) deadline = std::min(deadline, timer.next);
+  const Nanos until = std::max(Nanos(0), deadline - s.clock->monotonic());
+  // Rounded up: at the returned time the deadline has passed.
+  return s.clock->utime() + (until.count() + 999) / 1000;
+}
+
+int Daemon::finish() {
+  Impl& s = *impl_;
+  if (s.finished) return s.exit_code;
+  s.finished = true;
+  s.state = "stopped";
+  publish_heartbeat();
+  s.log.flush_suppressed(true);
+  const BusCounters& counters = s.bus->counters();
+  s.log.log(s.exit_code == 0 ? Level::kInfo : Level::kError,
+            s.exit_code == 0 ? "clean shutdown" : "shutdown after an error", ", exit code ",
+            s.exit_code, " (received ", counters.messages_received, ", published ",
+            counters.messages_published, ", dropped ", counters.messages_dropped,
+            ", decode errors ", counters.decode_errors, ")");
+  return s.exit_code;
+}
+
+int Daemon::run() {
+  Impl& s = *impl_;
+  start();
   const int bus_fd = s.bus->fileno();
   while (!s.stop_requested) {
-    // Due timers and heartbeat.
-    Clock::time_point now = Clock::now();
-    for (std::size_t i = 0; i < s.timers.size() && !s.stop_requested; ++i) {
-      Impl::Timer& timer = s.timers[i];
-      if (now < timer.next) continue;
-      timer.next = next_after(timer.next, timer.period, now);
-      try {
-        timer.tick();
-      } catch (...) {
-        callback_failed("timer");
-      }
-    }
-    if (now >= s.next_heartbeat) {
-      publish_heartbeat();
-      s.log.flush_suppressed();  // the summary of warnings held back, once their interval is over
-      s.next_heartbeat = next_after(s.next_heartbeat, s.heartbeat_period, now);
-    }
+    run_due_timers();
     if (s.stop_requested) break;
 
     // Wait for the bus, a signal or the next deadline.
-    Clock::time_point deadline = s.next_heartbeat;
+    Nanos deadline = s.next_heartbeat;
     for (const Impl::Timer& timer : s.timers) deadline = std::min(deadline, timer.next);
-    now = Clock::now();
-    const std::chrono::nanoseconds wait =
-        deadline > now ? std::chrono::nanoseconds(deadline - now) : std::chrono::nanoseconds(0);
+    const Nanos now = s.clock->monotonic();
+    const Nanos wait = deadline > now ? deadline - now : Nanos(0);
     const timespec timeout{static_cast<time_t>(wait.count() / 1000000000),
                            static_cast<long>(wait.count() % 1000000000)};
     pollfd fds[2] = {{s.signals.fd(), POLLIN, 0}, {bus_fd, POLLIN, 0}};
@@ -252,53 +351,12 @@ int Daemon::run() {
         break;
       }
     }
-
-    // Drain everything pending; plain handlers run now, newest-only ones fill their mailbox.
-    if (bus_fd >= 0 && fds[1].revents != 0) {
-      for (int n = 0; n < kMaxDrain && !s.stop_requested; ++n) {
-        HandleResult result = HandleResult::kError;
-        try {
-          result = s.bus->handle(std::chrono::milliseconds(0));
-        } catch (...) {
-          callback_failed("message handler");
-          break;
-        }
-        if (result == HandleResult::kMessage) continue;
-        if (result == HandleResult::kEndOfLog) s.end_of_log = true;
-        if (result == HandleResult::kError) {
-          s.log.error("cannot receive from ", s.bus->url());
-          stop(1);
-        }
-        break;
-      }
-    }
-
-    // Then each slow handler once, on its newest message.
-    for (std::size_t i = 0; i < s.newest.size() && !s.stop_requested; ++i) {
-      Impl::Newest& slot = s.newest[i];
-      try {
-        slot.box.take(slot.process);
-      } catch (...) {
-        callback_failed("handler of " + slot.channel);
-      }
-    }
-
-    if (s.end_of_log && !s.stop_requested) {
-      s.log.info("end of log ", s.bus->url(), ", shutting down");
-      stop(0);
-    }
+    // Drain everything pending (plain handlers run now, newest-only ones fill their mailbox),
+    // then each slow handler once, on its newest message.
+    if (bus_fd >= 0 && fds[1].revents != 0) drain_bus();
+    run_newest();
   }
-
-  s.state = "stopped";
-  publish_heartbeat();
-  s.log.flush_suppressed(true);
-  const BusCounters& counters = s.bus->counters();
-  s.log.log(s.exit_code == 0 ? Level::kInfo : Level::kError,
-            s.exit_code == 0 ? "clean shutdown" : "shutdown after an error", ", exit code ",
-            s.exit_code, " (received ", counters.messages_received, ", published ",
-            counters.messages_published, ", dropped ", counters.messages_dropped,
-            ", decode errors ", counters.decode_errors, ")");
-  return s.exit_code;
+  return finish();
 }
 
 }  // namespace vsl::runtime

@@ -41,14 +41,14 @@ TEST_F(RecognitionFrameProcessor, RecognizesAFrameIntoItsPerceptList) {
   const FrameProcessor processor(recognizer_, true);
   const vsl::stereo_frame_t frame =
       testing::stereo_frame(recognizer_.head(), left_, right_, 42, 123456);
-  const FrameOutcome outcome = processor.process(encode(frame));
+  const FrameOutcome outcome = processor.process(encode(frame), 42);
   ASSERT_EQ(outcome.kind, FrameOutcome::Kind::kRecognized) << outcome.problem;
   EXPECT_EQ(outcome.frame_id, 42);
   EXPECT_GT(outcome.total_ms, 0.0);
   const vsl::percept_list_t& list = outcome.percepts;
   EXPECT_EQ(list.frame_id, 42);
   EXPECT_EQ(list.frame_utime, 123456);
-  EXPECT_GT(list.utime, 123456);  // the wall clock when it finished
+  EXPECT_EQ(list.utime, 42);  // the time it was given: its publication
   // The left camera at the rest posture (docs: (0.05, 0.045, 1.50) m in ego).
   EXPECT_NEAR(list.ego_T_left_camera.position_m[0], 0.05, 1e-9);
   EXPECT_NEAR(list.ego_T_left_camera.position_m[1], 0.045, 1e-9);
@@ -81,7 +81,7 @@ TEST_F(RecognitionFrameProcessor, EveryPixelFormatGivesTheSamePercepts) {
     vsl::stereo_frame_t frame = testing::stereo_frame(recognizer_.head(), left_, right_, 1);
     frame.left = testing::image_in_format(left_, format, 8);
     frame.right = testing::image_in_format(right_, format, 0);
-    const FrameOutcome outcome = processor.process(encode(frame));
+    const FrameOutcome outcome = processor.process(encode(frame), 42);
     ASSERT_EQ(outcome.kind, FrameOutcome::Kind::kRecognized) << outcome.problem;
     EXPECT_FALSE(outcome.debug_image.has_value());
     ASSERT_EQ(outcome.percepts.num_percepts, 1);
@@ -93,7 +93,7 @@ TEST_F(RecognitionFrameProcessor, AFrameWithNothingInItStillGivesAList) {
   const FrameProcessor processor(recognizer_, false);
   const cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(200, 200, 200));
   const FrameOutcome outcome =
-      processor.process(encode(testing::stereo_frame(recognizer_.head(), grey, grey, 9)));
+      processor.process(encode(testing::stereo_frame(recognizer_.head(), grey, grey, 9)), 42);
   ASSERT_EQ(outcome.kind, FrameOutcome::Kind::kRecognized);
   EXPECT_EQ(outcome.percepts.frame_id, 9);
   EXPECT_EQ(outcome.percepts.num_percepts, 0);
@@ -102,18 +102,18 @@ TEST_F(RecognitionFrameProcessor, AFrameWithNothingInItStillGivesAList) {
 TEST_F(RecognitionFrameProcessor, BadBytesAndBadFramesAreOutcomesNotExceptions) {
   const FrameProcessor processor(recognizer_, true);
   const std::vector<std::uint8_t> garbled(64, 0xff);
-  const FrameOutcome undecodable = processor.process(garbled);
+  const FrameOutcome undecodable = processor.process(garbled, 42);
   EXPECT_EQ(undecodable.kind, FrameOutcome::Kind::kUndecodable);
   EXPECT_EQ(undecodable.message_bytes, 64u);
 
   std::vector<std::uint8_t> truncated =
       encode(testing::stereo_frame(recognizer_.head(), left_, right_, 3));
   truncated.resize(truncated.size() / 2);
-  EXPECT_EQ(processor.process(truncated).kind, FrameOutcome::Kind::kUndecodable);
+  EXPECT_EQ(processor.process(truncated, 42).kind, FrameOutcome::Kind::kUndecodable);
 
   vsl::stereo_frame_t nan = testing::stereo_frame(recognizer_.head(), left_, right_, 4);
   nan.head.joint_positions_rad[0] = std::numeric_limits<double>::quiet_NaN();
-  const FrameOutcome invalid = processor.process(encode(nan));
+  const FrameOutcome invalid = processor.process(encode(nan), 42);
   EXPECT_EQ(invalid.kind, FrameOutcome::Kind::kInvalid);
   EXPECT_EQ(invalid.frame_id, 4);
   EXPECT_EQ(invalid.problem, "position of joint 'neck_yaw' is not finite");

@@ -18,9 +18,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "vsl/runtime/bus.hpp"
+#include "vsl/runtime/clock.hpp"
 #include "vsl/runtime/config.hpp"
 #include "vsl/runtime/logger.hpp"
 #include "vsl/runtime/typed.hpp"
@@ -35,15 +37,21 @@ class Daemon {
   // Blocks SIGINT/SIGTERM, logs to stderr at config.log_level and opens LcmBus(config.lcm_url).
   // Throws std::runtime_error when the bus cannot be opened.
   Daemon(std::string process, RuntimeConfig config);
-  // With a given logger and bus (tests: a capturing logger and memq://). The bus should be created
-  // after the daemon's signal mask is set if it starts threads; memq:// starts none.
-  Daemon(RuntimeConfig config, Logger log, std::unique_ptr<Bus> bus);
+  // With a given logger and bus (tests: a capturing logger and memq://, or an InProcessHub's
+  // bus), and optionally a clock (tests: a SimulatedClock, which must outlive the daemon; null:
+  // the wall clock). The bus should be created after the daemon's signal mask is set if it starts
+  // threads; memq:// and InProcessHub start none.
+  Daemon(RuntimeConfig config, Logger log, std::unique_ptr<Bus> bus, const Clock* clock = nullptr);
   ~Daemon();
   Daemon(const Daemon&) = delete;
   Daemon& operator=(const Daemon&) = delete;
 
   Bus& bus();
   const Logger& log() const;
+  // The time this daemon runs on: its timers, heartbeats and uptime, and the utime its handlers
+  // stamp messages with (now_utime()).
+  const Clock& clock() const;
+  std::int64_t now_utime() const { return clock().utime(); }
   const RuntimeConfig& config() const;
   const Channels& channels() const { return config().channels; }
 
@@ -99,6 +107,17 @@ class Daemon {
   // Runs until SIGINT/SIGTERM (exit code 0), stop(), the end of a replayed log (0), a failed
   // handler (1) or a bus error (1). Publishes a last heartbeat with state "stopped".
   int run();
+  // Lock step on a SimulatedClock (tests/pipeline): run() is this loop on the wall clock, with
+  // a wait between the steps. start() arms the timers; step() does, at the clock's time, the
+  // due timers and heartbeat, every pending message and each newest-only handler once, and
+  // tells whether it did anything (the driver steps every daemon until none does, then advances
+  // the clock to the earliest next_deadline_utime()); finish() publishes the last heartbeat and
+  // returns the exit code. step() starts the daemon if need be.
+  void start();
+  bool step();
+  std::optional<std::int64_t> next_deadline_utime() const;  // nullopt: stopped or not started
+  int finish();
+
   // Ends run() after the current callback. Usable from handlers, timers and before run().
   void stop(int exit_code = 0);
   bool stopping() const;
@@ -110,6 +129,10 @@ class Daemon {
   struct Impl;
 
   void subscribe_newest_raw(const std::string& channel, RawHandler process, int queue_capacity);
+  void publish_heartbeat();
+  bool run_due_timers();  // true when a timer or the heartbeat ran
+  int drain_bus();        // the messages dispatched
+  int run_newest();       // the newest-only handlers that ran
   // Logs the exception in flight in one line and stops with exit code 1.
   void callback_failed(const std::string& where) noexcept;
 
