@@ -3,7 +3,7 @@
 // 4 m, the shipped recognition config gives doors and handles a precision of at least 95% and a
 // recall of at least 80%, and doors a median 3D error of at most 3 cm around 2 m (the 1-2 m and
 // 2-3 m bands). The evaluation is deterministic (seeded poses and noise), so a change that costs
-// one of these figures fails here rather than in the next session's evaluation. The time per
+// one of these figures fails here rather than in a later evaluation run. The time per
 // stereo pair is a benchmark's (BM_FrameRecognizer), not a test's.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Running the localizer over scenarios and judging each result (issue 3, item 9).
+// Running the localizer over scenarios and judging each result (issue 3).
 #pragma once
 
 #include <Eigen/Geometry>

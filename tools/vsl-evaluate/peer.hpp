@@ -1,4 +1,4 @@
-// The peer vsl-evaluate compares the localizer with (issue 3, item 10): what a user would pick
+// The peer vsl-evaluate compares the localizer with (issue 3): what a user would pick
 // off the shelf, Open3D's correspondence-based RANSAC registration (peer_open3d.cpp), fed with
 // every same-type (percept, model object) pair. This header is narrow on purpose: no Open3D type
 // appears in it, so Open3D's heavy headers are compiled in peer_open3d.cpp only.

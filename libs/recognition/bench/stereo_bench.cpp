@@ -263,7 +263,7 @@ void BM_OccluderCutDoor(benchmark::State& state) {
   const Eigen::Isometry3d left_T_right = calibration.left_T_right();
   // A base unit's door 0.5 m x 0.716 m turned 0.5 rad, 2.2 m ahead; the table's top in front of
   // it hides all of it from 0.40 m (left side) and 0.45 m (right side) below its top edge in
-  // both images: too short for a door, placed from its top edge (Doors item 28).
+  // both images: too short for a door, placed from its top edge (occluder_cut_door.hpp).
   const Eigen::Vector3d down(0.0, 1.0, 0.0);
   const Eigen::Vector3d across(std::cos(0.5), 0.0, std::sin(0.5));
   const Eigen::Vector3d centre(0.1, 0.5, 2.2);

@@ -1,7 +1,7 @@
 // Handles on a door outline (stereo_match.cpp's gates): a door carries one handle. Several
 // inside one outline, or handles one above another, mean that the door-shaped blob holds several
 // fronts: a stack of drawer fronts, two doors, or a door and the drawer above it, merged in
-// segmentation (docs/recognition.md, Doors items 12 and 18). Internal to vsl_recognition.
+// segmentation (docs/recognition.md). Internal to vsl_recognition.
 #pragma once
 
 #include <string>

@@ -119,9 +119,9 @@ std::optional<Candidate> judge_pair_cut_along(
   // otherwise. The bound is the area ratio's own: the two views of a door differ in width, not
   // in height (its sides are at one depth for both cameras), so the whole door's area ratio is
   // its width ratio. A door turned 75 degrees away is foreshortened by cos 75 deg in one camera
-  // and cos 77.5 deg in the other at 2 m: 1.2, at the square root's 1.26 already (that bound,
-  // until session 18, lost top-cut wall-cupboard doors at 68-75 degrees; on the tuning set
-  // +2 true door percepts, no false one; doors item 26).
+  // and cos 77.5 deg in the other at 2 m: 1.2, near the square root's 1.26 already (that bound
+  // lost top-cut wall-cupboard doors at 68-75 degrees; this one gives the tuning set 2 more
+  // true door percepts and no false one).
   const double max_width_ratio = std::max(options.max_area_ratio, 1.0);
   const double left_width_px =
       (left.corners_ideal_px[edge[1]] - left.corners_ideal_px[edge[0]]).norm();

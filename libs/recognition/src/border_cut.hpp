@@ -34,7 +34,7 @@ struct BorderCutView {
   const IdealPixel& reference;
 };
 
-// The height of a cut door whose visible height is `visible_m` (metres, item 12): the least of
+// The height of a cut door whose visible height is `visible_m` (metres): the least of
 // door.typical_heights_m that it does not exceed by more than kMaxVisibleOfTypical, for at least
 // half the least; nullopt, with the refusal (StereoGate::kHeight) in `trace`, otherwise.
 std::optional<double> typical_height_of(double visible_m,

@@ -10,7 +10,7 @@
 // lies where the ray r of the image that shows it (camera centre c) meets the level plane of the
 // side's end E on that edge (u the unit up direction):
 //   P = c + w r,   w = u . (E - c) / (u . r),
-// and then, as for item 12,
+// and then, as for doors cut by the top or bottom border (border_cut.hpp),
 //   width          W   = |P - E| (level),   min_width_m <= W <= max_width_m,
 //   visible height h_v = (T - B) . u,
 //   door height    h   = the least typical height h_k with h_v <= 1.05 h_k (h_v >= h_1 / 2),
@@ -89,7 +89,8 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
   if (!(epipolar_px <= max_epipolar_px)) {
     return refuse(trace, StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
   }
-  // The side is a door's vertical edge in both images (a cut outline's bound, as item 12).
+  // The side is a door's vertical edge in both images (a cut outline's bound, as for doors cut by
+  // the top or bottom border).
   const Eigen::Vector3d& u = up_in_left_camera;
   if (door.max_side_tilt_rad > 0.0) {
     const auto tilts = triangulator.side_tilts(lc, rc, u)[static_cast<std::size_t>(side_index)];
@@ -124,7 +125,8 @@ std::optional<Candidate> judge_corner_cut_pair(int l, int r, const BorderCutView
   const double cos_viewing = std::abs(normal.dot(edge_middle.normalized()));
   if (cos_viewing < kMinCosViewing)
     return refuse(trace, StereoGate::kExtent, cos_viewing, kMinCosViewing);
-  // The visible height and the door's (item 12).
+  // The visible height and the door's typical height (as for doors cut by the top or bottom
+  // border).
   const std::optional<double> height = typical_height_of((top - bottom).dot(u), door, trace);
   if (!height) return std::nullopt;
   const Eigen::Vector3d centre = edge_middle + (top_cut ? 0.5 : -0.5) * *height * u;

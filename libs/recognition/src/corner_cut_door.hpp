@@ -1,5 +1,5 @@
 // A door cut by two borders at an image corner in one image and by the top or bottom border alone
-// in the other (Detection::border_cut kTopLeft .. kBottomRight; Doors item 22): its centre from
+// in the other (Detection::border_cut kTopLeft .. kBottomRight): its centre from
 // the side both images show, the edge the other image shows whole and the class's typical
 // height. Internal to vsl_recognition.
 #pragma once

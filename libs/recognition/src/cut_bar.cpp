@@ -1,4 +1,4 @@
-// Handles item 4 (cut_bar.hpp).
+// Handles cut at one end by the same image border in both images (cut_bar.hpp).
 //
 // Derivation. Let the span's ends be P_a, P_b = c -/+ (l / 2) a (c its centre, a its unit axis,
 // l its length: the union of the two views, each ending at the border on one side). Both images

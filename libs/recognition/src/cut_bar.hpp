@@ -1,6 +1,6 @@
 // A bar (a handle) that the same image border cuts at one end in both images (Detection::
-// border_cut; StereoMatchOptions::CutBar, Handles item 4): its centre from the end both images
-// show and the class's typical length. Internal to vsl_recognition.
+// border_cut; StereoMatchOptions::CutBar): its centre from the end both images show and the
+// class's typical length. Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

@@ -175,7 +175,8 @@ DoorCentre door_centre(const DoorOutlines& outlines, const DoorSides& sides,
     }
     if (ends) {
       // Both sides' heights, h_s = (T_s - B_s) . u (T, B: the side's top and bottom ends, u up),
-      // agree within max_side_height_mismatch of the taller (Doors item 30).
+      // agree within max_side_height_mismatch of the taller: a door's sides are equal, and an
+      // occluder that hides a corner in both images shortens one of them.
       if (options.max_side_height_mismatch > 0.0) {
         const Eigen::Vector3d& u = up_in_left_camera;
         const double a = std::abs(((*ends)[0] - (*ends)[1]).dot(u));

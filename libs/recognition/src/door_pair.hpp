@@ -1,7 +1,7 @@
 // Two door outlines, one per image (rectangles seen as quadrilaterals, quadrilateral.hpp): the
 // door gates of the cross match (stereo_match.hpp: StereoMatchOptions::max_side_tilt_rad,
 // max_edge_slope_rad, min_side_correlation) and the door's centre from its vertical sides
-// (docs/recognition.md, doors items 2 and 4-9). Internal to vsl_recognition.
+// (docs/recognition.md, "Doors: outline, centre and height"). Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

@@ -56,8 +56,8 @@ struct BorderCutOutline {
 // the left (3-0), that side moved onto the border. The cut side is the one side without support
 // (its line is only the hull's chord, not necessarily along the border, but its corners within
 // kMaxCutCornerOffBorder of the adjoining sides' length of the border row or column); with
-// `vertical_cut` (the blob touches the left or right border only) it is a left or right cut (Doors
-// item 20), else a top or bottom one (the chord's own direction says little: along a narrow
+// `vertical_cut` (the blob touches the left or right border only) it is a left or right cut,
+// else a top or bottom one (the chord's own direction says little: along a narrow
 // strip of a door it is as long as it is wide); the blob reaches
 // the border it faces (the top one when its middle is above the opposite side's, the left one
 // when it is left of it); the three other sides are seen (kMinBorderSideSupport), the two
@@ -135,7 +135,7 @@ std::optional<BorderCutOutline> border_cut_of(const BlobQuadrilateral& quad, con
 }
 
 // The image corner where two borders cut `quad` (fitted with the image's size) along two
-// adjoining sides (Doors item 22): the blob reaches one of the left and right borders and one of
+// adjoining sides: the blob reaches one of the left and right borders and one of
 // the top and bottom ones, its outline's two sides without support (kMinBorderSideSupport) are
 // adjoining, and its corners are renumbered clockwise from the top left so that their shared
 // corner is the one at that image corner (0 top left, 1 top right, 2 bottom right, 3 bottom

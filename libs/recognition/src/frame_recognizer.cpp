@@ -47,7 +47,7 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
     recognizer->recognize(left_bgr, result.left_blobs, result.left_detections);
     recognizer->recognize(right_bgr, result.right_blobs, result.right_detections);
   }
-  // Double doors merged into one outline, split between their handles (Doors item 21).
+  // Double doors merged into one outline, split between their handles (twin_handle_split.hpp).
   detail::split_at_twin_handles(result.left_detections, options_.stereo);
   detail::split_at_twin_handles(result.right_detections, options_.stereo);
   const Clock::time_point classified = Clock::now();

@@ -1,4 +1,4 @@
-// Doors item 14 (occluded_corner_door.hpp).
+// Doors with one corner hidden by an occluder in both images (occluded_corner_door.hpp).
 //
 // Derivation. Let the good side's corners be a_0 (on one horizontal edge) and a_1 (on the other)
 // and the other side's b_0, b_1, in both images. The good side's ends G_0, G_1 are where the left

@@ -2,8 +2,8 @@
 // chair's back, a table top): the outline follows the occluder's contour there in both images, so
 // one vertical side is no door edge in either image, and the position gate refuses the pair where
 // the two cameras see that contour at the occluder's depth (StereoMatchOptions::BorderCutDoor::
-// occluded_corner, docs/recognition.md, Doors item 14). The other three corners still fix the
-// rectangle. Internal to vsl_recognition.
+// occluded_corner, docs/recognition.md). The other three corners still fix the rectangle.
+// Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,4 @@
-// Doors item 28 (occluder_cut_door.hpp).
+// Doors whose lower part an occluder hides in both images (occluder_cut_door.hpp).
 #include "occluder_cut_door.hpp"
 
 #include <cmath>
@@ -9,8 +9,8 @@ namespace vsl::recognition::detail {
 namespace {
 
 // The top edge, between the sides' top ends, is level within this (radians): the door's own edge.
-// Chosen on the tuning set (door percepts true, false; 1769, 105 without item 28): 0.05 gave
-// 1786, 105; 0.08 1811, 105; 0.1 1814, 105; 0.12 1814, 106; 0.2 1819, 107 (without the drawer
+// Chosen on the tuning set (door percepts true, false; 1769, 105 without this placement): 0.05
+// gave 1786, 105; 0.08 1811, 105; 0.1 1814, 105; 0.12 1814, 106; 0.2 1819, 107 (without the drawer
 // bound below).
 constexpr double kMaxTopSlopeRad = 0.1;
 // The bottom edge slopes at least this much (radians) to be taken for an occluder's contour

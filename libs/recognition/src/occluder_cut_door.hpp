@@ -1,5 +1,5 @@
-// A door whose lower part an occluder hides in both images (Doors item 28): a chair's seat or the
-// table's top in front of a base unit's door. Internal to vsl_recognition.
+// A door whose lower part an occluder hides in both images: a chair's seat or the table's top in
+// front of a base unit's door. Internal to vsl_recognition.
 //
 // The two outlines then end at the occluder's contour rather than at the door's bottom edge: the
 // pair is too short for a door (StereoMatchOptions::height_range_m) or that edge slopes in 3D

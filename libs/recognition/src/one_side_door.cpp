@@ -80,8 +80,8 @@ std::optional<OneSideDoor> place_one_side_door(
   if (!(up_in_own_camera.norm() > 0.0) || door.typical_heights_m.empty()) return std::nullopt;
   const bool swapped = swept == SweptSide::kOuter;
   if (swapped && cut != BorderCut::kNone) return std::nullopt;
-  // An outline cut by the left or right border shows one vertical side only (Doors items 20
-  // and 22).
+  // An outline cut by the left or right border shows one vertical side only (side_cut_door.hpp
+  // and corner_cut_door.hpp place those).
   if (cut != BorderCut::kNone && cut != BorderCut::kTop && cut != BorderCut::kBottom) {
     return std::nullopt;
   }

@@ -88,8 +88,8 @@ class SideCorrelator {
   // side is shorter than 8 px, its window has no contrast, or the window leaves the right image
   // (or falls behind the right camera) over the whole search.
   // The same call twice returns the first result without sweeping again: single-view doors
-  // (item 11), doors from one side (item 13) and their swapped form (item 16) sweep the same
-  // sides of one outline over the whole depth range.
+  // (single_view.hpp), doors from one side and their swapped form (one_side_door.hpp) sweep the
+  // same sides of one outline over the whole depth range.
   std::optional<SideDepth> correlate(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                      double initial_distance_m, double search_px,
                                      double min_distance_m, double max_distance_m) const;

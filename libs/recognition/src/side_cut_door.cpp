@@ -6,10 +6,10 @@
 // (corners 0 and 3, on the border column); under a right cut the left side (0, 3) and the edges
 // up to corners 1 and 2. Triangulator::rectangle_ends places the whole side from the right
 // image's plane through it and the left rays through its corners: its ends T (top) and B
-// (bottom), in the left camera frame; item 8's correlation then refines its depth. A door's top
-// and bottom edges are level, so the point where an edge leaves the image lies on the ray r
-// through that corner at the height of the side's end on the same edge (the plane
-// u . X = u . T, u the unit up direction):
+// (bottom), in the left camera frame; the side correlation (side_correlation.hpp) then refines
+// its depth. A door's top and bottom edges are level, so the point where an edge leaves the
+// image lies on the ray r through that corner at the height of the side's end on the same edge
+// (the plane u . X = u . T, u the unit up direction):
 //   P_top = c + w r,   w = u . (T - c) / (u . r),   c the camera's centre,
 // and P_bottom likewise with B; taken in the image that sees more of the door (the left image
 // under a left cut: the right camera, further right, sees less beyond its left border), defined
@@ -117,7 +117,7 @@ std::optional<Candidate> judge_side_cut_pair(
   Eigen::Vector3d top = (*ends)[static_cast<std::size_t>(2 * whole_side)];
   Eigen::Vector3d bottom = (*ends)[static_cast<std::size_t>(2 * whole_side + 1)];
   // The side's depth where the images around it correlate, searched around the outlines' depth
-  // (item 8), when that peak is clear (a run of equal doors repeats every edge).
+  // (side_correlation.hpp), when that peak is clear (a run of equal doors repeats every edge).
   if (correlator) {
     const double edges_px =
         0.5 * ((lc[at_border[0]] - lc[whole[0]]).norm() + (lc[at_border[1]] - lc[whole[1]]).norm());

@@ -1,7 +1,7 @@
 // A pair of door detections cut along the same vertical side by the left or right image border
-// (Detection::border_cut kLeft, kRight; StereoMatchOptions::BorderCutDoor::typical_width_m,
-// Doors item 20): the door's centre from the side both images show whole, the level planes of
-// its top and bottom edges and the class's typical width. Internal to vsl_recognition.
+// (Detection::border_cut kLeft, kRight; StereoMatchOptions::BorderCutDoor::typical_width_m): the
+// door's centre from the side both images show whole, the level planes of its top and bottom
+// edges and the class's typical width. Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

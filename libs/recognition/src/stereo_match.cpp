@@ -176,8 +176,8 @@ std::vector<StereoPercept> match_and_triangulate(
                : detail::judge_bars_on_outline(right, dr, max_bars_inside, options);
   };
   const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
-  // Two views of a bar that the border cuts in one or both (Handles item 4): the class's typical
-  // length, and the border when it cuts both.
+  // Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
+  // class's typical length, and the border when it cuts both.
   struct CutBarViews {
     const StereoMatchOptions::CutBar* bar = nullptr;
     BorderCut both = BorderCut::kNone;
@@ -237,7 +237,7 @@ std::vector<StereoPercept> match_and_triangulate(
                               kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px))
                    : options.max_epipolar_distance_px;
     // Two door outlines that the position or the side gate refuses may show a door with one
-    // corner hidden by an occluder in both images (occluded_corner_door.hpp, Doors item 14).
+    // corner hidden by an occluder in both images (occluded_corner_door.hpp).
     std::optional<detail::OccludedCornerDoor> occluded;
     const auto place_occluded_corner = [&]() {
       const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
@@ -389,9 +389,9 @@ std::vector<StereoPercept> match_and_triangulate(
       // by border_cut.hpp's gates when its class has a typical height.
       const bool cut =
           left[l].border_cut != BorderCut::kNone || right[r].border_cut != BorderCut::kNone;
-      // A bar cut at one end (Handles item 4): with a whole view in the other image, judged as
-      // any two views of a bar (their union is the whole bar); cut by the same border in both,
-      // placed from its own end; by different borders, not paired.
+      // A bar cut at one end by the image border (cut_bar.hpp): with a whole view in the other
+      // image, judged as any two views of a bar (their union is the whole bar); cut by the same
+      // border in both, placed from its own end; by different borders, not paired.
       if (cut && detail::is_bar_type(options, left[l].type)) {
         const bool both =
             left[l].border_cut != BorderCut::kNone && right[r].border_cut != BorderCut::kNone;
@@ -410,14 +410,14 @@ std::vector<StereoPercept> match_and_triangulate(
           cut ? border_cut_door(options, left[l].type) : nullptr;
       // A door cut by the left border in the right image only (the right camera sees less
       // beyond its left border), or by the right border in the left image only, pairs with a
-      // whole outline in the other image (item 20).
+      // whole outline in the other image (side_cut_door.hpp).
       const bool side_cut_by_one =
           (left[l].border_cut == BorderCut::kNone && right[r].border_cut == BorderCut::kLeft) ||
           (left[l].border_cut == BorderCut::kRight && right[r].border_cut == BorderCut::kNone);
       const bool side_cut = side_cut_by_one || left[l].border_cut == BorderCut::kLeft ||
                             left[l].border_cut == BorderCut::kRight;
       // A door cut at an image corner in the image that sees less beyond that side pairs with
-      // one cut by the top or bottom border alone in the other (item 22).
+      // one cut by the top or bottom border alone in the other (corner_cut_door.hpp).
       const bool corner_cut = detail::is_corner_cut_pair(left[l].border_cut, right[r].border_cut);
       // Cut along the same border in both images (at the same image corner: no judge takes it),
       // or one of the two mixed cases above.
@@ -437,8 +437,8 @@ std::vector<StereoPercept> match_and_triangulate(
       if (!cut) {
         c = judge(l, r, trace);
         // Too short for a door, an edge sloping or one side shorter than the other: perhaps an
-        // occluder hides the door's lower part in both images (occluder_cut_door.hpp, Doors
-        // item 28). The first refusal stays in the trace unless the pair is so placed.
+        // occluder hides the door's lower part in both images (occluder_cut_door.hpp). The first
+        // refusal stays in the trace unless the pair is so placed.
         const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, left[l].type);
         if (!c && door && door->occluder_cut && detail::may_be_occluder_cut(trace) &&
             left_corners[l].size() == 4 && right_corners[r].size() == 4 &&
@@ -460,8 +460,8 @@ std::vector<StereoPercept> match_and_triangulate(
         // Several handles inside, or one above another: drawer fronts or doors merged into one
         // blob. A cut pair is two views, as a whole pair is: a double door's second handle, a
         // few centimetres past the reveal, may lie inside the outline, and the bound is the
-        // pairs' (until session 18 the single views' 1, which lost 16 true door percepts of the
-        // tuning set's cut doors, no false one kept out; doors item 27).
+        // pairs' (the single views' 1 lost 16 true door percepts of the tuning set's cut doors
+        // and kept no false one out).
         trace.refused_by = bars.gate;
         trace.value = bars.value;
         trace.limit = bars.limit;
@@ -546,9 +546,10 @@ std::vector<StereoPercept> match_and_triangulate(
       right_paired[static_cast<std::size_t>(c.right)] = 1;
     }
     const detail::StereoRig rig{left_intrinsics, right_intrinsics, left_T_right, up_in_left_camera};
-    // Pass 0 places whole outlines from both sides (item 11) in both images; pass 1 then places
-    // what is left from one side (item 13), so that a one-side percept, less exact, never
-    // displaces the other image's two-sided one of the same door (single_view_min_separation_m).
+    // Pass 0 places whole outlines from both sides (single_view.hpp) in both images; pass 1 then
+    // places what is left from one side (one_side_door.hpp), so that a one-side percept, less
+    // exact, never displaces the other image's two-sided one of the same door
+    // (single_view_min_separation_m).
     std::array<std::vector<char>, 2> placed{std::vector<char>(left.size(), 0),
                                             std::vector<char>(right.size(), 0)};
     for (int pass = 0; pass < 2; ++pass) {

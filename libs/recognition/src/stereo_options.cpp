@@ -175,7 +175,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       }
       if (const auto v = door.find("from_one_side")) {
         parsed.from_one_side = v->as_bool();
-        // It sweeps as item 11 does, with its thresholds.
+        // It sweeps as single-view doors do, with their thresholds.
         if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
           v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
         }

@@ -26,7 +26,7 @@ namespace vsl::recognition::detail {
 namespace {
 
 // The handles' heights along the outline differ by at most this fraction of its height: a
-// double door's stand at one height (handles one above another are drawers, item 18).
+// double door's stand at one height (handles one above another are drawers).
 constexpr double kMaxHeightDifference = 0.1;
 // Each half is at least this fraction of the outline's width: a double door's two doors are as
 // wide as each other (their images differ by the perspective, a few tens of per cent at a

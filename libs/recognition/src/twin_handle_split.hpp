@@ -1,7 +1,6 @@
 // Door outlines that hold the two handles of a double door side by side: two doors that
 // segmentation merged into one blob (the reveal between them unseen at a grazing angle), split
-// between the handles (StereoMatchOptions::max_twin_handle_gap, Doors item 21). Internal to
-// vsl_recognition.
+// between the handles (StereoMatchOptions::max_twin_handle_gap). Internal to vsl_recognition.
 #pragma once
 
 #include <vector>

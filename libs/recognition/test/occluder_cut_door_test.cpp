@@ -1,6 +1,6 @@
 // Doors whose lower part an occluder hides in both images (BorderCutDoor::occluder_cut,
-// occluder_cut_door.hpp, Doors item 28): a whole pair too short for a door, its top edge level,
-// placed from that edge and the typical height; and what keeps drawer fronts out.
+// occluder_cut_door.hpp): a whole pair too short for a door, its top edge level, placed from
+// that edge and the typical height; and what keeps drawer fronts out.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -123,7 +123,7 @@ TEST_F(OccluderCutDoorTest, ALevelCutMustShowMoreThanADrawerFront) {
 TEST_F(OccluderCutDoorTest, SidesOfUnequalHeightAreNoWholeDoor) {
   // The contour crosses the right side 0.15 m above its bottom corner: the bottom edge slopes by
   // 0.29 rad (the level-edge gate's 0.3 passes it), the sides are 0.716 and 0.566 m tall, 0.21
-  // of the taller apart (Doors item 30).
+  // of the taller apart (max_side_height_mismatch refuses more than 0.2).
   const Pair p = occluded_door(kHeightM, kHeightM - 0.15);
   std::vector<StereoPairTrace> trace;
   // Without the gate, a pair whose centre is the visible part's, centimetres off.

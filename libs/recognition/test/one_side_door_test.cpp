@@ -136,7 +136,8 @@ TEST_F(OneSideDoorTest, AWholeDoorPlacedFromItsInnerSideAndTheLevelEdges) {
   // A whole door: the pixel noise's covariance alone (its depth's share along up at 0.24 rad
   // below the axis: 2.5 cm), not the class's spread of heights (6 cm and more, below).
   EXPECT_LT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.04 * 0.04);
-  // Off: item 11 alone cannot place it (its left side has nothing to correlate with).
+  // Off: the single-view sweep of both sides cannot place it (its left side has nothing to
+  // correlate with).
   options_.border_cut[0].from_one_side = false;
   EXPECT_TRUE(match({door}, {}).empty());
 }
@@ -172,8 +173,9 @@ TEST_F(OneSideDoorTest, FromTheRightImageNearItsRightBorder) {
 
 TEST_F(OneSideDoorTest, AnOuterSideTheOtherImageShowsMustBeFoundThere) {
   // A door cut by the bottom border of both images, 80 px right of kNearLeftBorder's: the right
-  // image shows both its sides, and only the left image's outline was detected. Item 11 does not
-  // sweep cut outlines; the level planes put its left side where the right image shows it.
+  // image shows both its sides, and only the left image's outline was detected. Single-view
+  // doors do not sweep cut outlines; the level planes put its left side where the right image
+  // shows it.
   const Eigen::Vector3d centre(-0.68, 0.7, 2.3);
   const auto corners = door_corners(centre, 0.2);
   render(corners);
@@ -242,8 +244,9 @@ TEST_F(OneSideDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOn
 TEST_F(OneSideDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
   // A door in the middle of both images; in the right image a neighbour of the door's colour
   // continues past its right side, with no reveal between them (segmentation merged the two
-  // there). Item 11 and item 13 sweep the right side and find nothing; swept from its left side,
-  // with its right side on the level planes where the right image shows no edge, it is placed.
+  // there). The single-view and the one-side placements sweep the right side and find nothing;
+  // swept from its left side, with its right side on the level planes where the right image
+  // shows no edge, it is placed.
   const Eigen::Vector3d centre(-0.3, 0.55, 2.3);
   const auto corners = door_corners(centre, 0.2);
   options_.border_cut[0].merged_side = true;

@@ -305,7 +305,7 @@ TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   EXPECT_EQ(cut[1].border_cut, BorderCut::kBottom);
   EXPECT_DOUBLE_EQ(cut[1].corners_px[2].y(), 239.5);
   EXPECT_NEAR(cut[1].reference_px.y(), 129.5, 1.0);
-  // Left cut (Doors item 20): the right side is the whole one, the corners on the cut side where
+  // Left cut: the right side is the whole one, the corners on the cut side where
   // the top and bottom edges leave the image (the outer edge of column 0).
   EXPECT_EQ(cut[2].blob_index, 2);
   EXPECT_EQ(cut[2].border_cut, BorderCut::kLeft);
@@ -386,9 +386,9 @@ TEST(CornerVerification, ABarCutByTheBorderHasACornerAtItsOwnEndOnly) {
 }
 
 TEST(Recognizers, DoorsCutAtAnImageCornerAreCornerCutDetections) {
-  // A door panel that the bottom and the left border cut (Doors item 22): its one real corner is
-  // the top right; the corners on the cut sides where its top edge and right side leave the
-  // image, the last the image's corner.
+  // A door panel that the bottom and the left border cut: its one real corner is the top right;
+  // the corners on the cut sides where its top edge and right side leave the image, the last the
+  // image's corner.
   cv::Mat image(240, 320, CV_8UC3, kWallBgr);
   const cv::Scalar door_bgr = kDoorBgr * 0.62;
   const cv::Rect corner(0, 130, 70, 110);

@@ -419,7 +419,7 @@ TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
   EXPECT_EQ(match({left, upper}, {}, images).size(), 1u);
   options.max_bar_height_spread = 0.0;
   // Two handles at one height by one side: the door's own by its closing edge and its double-
-  // door neighbour's beyond the reveal, inside the outline's slack (Doors item 29). Kept with
+  // door neighbour's beyond the reveal, inside the outline's slack. Kept with
   // neighbour_handle_side_band; two in the middle are two doors merged, and one by each side is
   // no door either. The outline is c[0]..c[3] (top left clockwise); `at` places a handle at a
   // fraction of the width across, at mid-height.

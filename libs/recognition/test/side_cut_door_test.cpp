@@ -1,7 +1,7 @@
 // Doors cut along a whole vertical side by the left or right image border
-// (StereoMatchOptions::BorderCutDoor::typical_width_m, side_cut_door.hpp, Doors item 20): the
-// centre from the whole side, the level planes of the edges and the typical width, and the gates;
-// and doors cut at an image corner in one image (corner_cut_door.hpp, Doors item 22).
+// (StereoMatchOptions::BorderCutDoor::typical_width_m, side_cut_door.hpp): the centre from the
+// whole side, the level planes of the edges and the typical width, and the gates; and doors cut
+// at an image corner in one image (corner_cut_door.hpp).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -95,8 +95,8 @@ class SideCutDoorTest : public ::testing::Test {
   }
 
   // The same door with its bottom below the image, near the left border: cut by the bottom
-  // border in the left image, by the bottom and the left border in the right one (Doors item
-  // 22), as DoorRecognizer reports them.
+  // border in the left image, by the bottom and the left border in the right one, as
+  // DoorRecognizer reports them.
   Pair corner_cut_door(const Eigen::Vector3d& centre_m, const Eigen::Vector3d& across) const {
     const std::array<Eigen::Vector3d, 4> corners = door_corners(centre_m, across);
     const auto at_row = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, double v) {

@@ -781,7 +781,7 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                 .find("s.yaml:2: stereo.single_view_max_bars_inside"),
             std::string::npos)
       << stereo_error("  single_view_max_bars_inside: 1.5\n");
-  // The two sides' bands must not meet (Doors item 29).
+  // The two sides' bands must not meet (each under half the outline's width).
   EXPECT_NE(stereo_error("  neighbour_handle_side_band: 0.5\n")
                 .find("s.yaml:2: stereo.neighbour_handle_side_band"),
             std::string::npos)
@@ -845,7 +845,7 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       << cut_door_error("from_one_side: true");
   EXPECT_NE(cut_door_error("from_one_side: 2").find("stereo.border_cut.door.from_one_side"),
             std::string::npos);
-  // A merged side is item 13 with the roles swapped.
+  // A merged side is the one-side placement (from_one_side) with the sides' roles swapped.
   EXPECT_NE(cut_door_error("merged_side: true")
                 .find("s.yaml:2: stereo.border_cut.door.merged_side: needs from_one_side"),
             std::string::npos);
@@ -855,7 +855,7 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
                       "max_side_tilt_rad > 0"),
             std::string::npos);
   EXPECT_EQ(cut_door_error("occluded_corner: true", "  max_side_tilt_rad: 0.03\n"), "");
-  // A door cut by an occluder (item 28) is judged by the cut doors' side gate.
+  // A door cut by an occluder is judged by the cut doors' side gate.
   EXPECT_NE(cut_door_error("occluder_cut: true")
                 .find("s.yaml:2: stereo.border_cut.door.occluder_cut: needs "
                       "max_side_tilt_rad > 0"),
@@ -865,7 +865,7 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_NE(cut_door_error("occluder_cut_min_level_visible_m: -1")
                 .find("stereo.border_cut.door.occluder_cut_min_level_visible_m"),
             std::string::npos);
-  // Doors cut by the left or right border (item 20): a door's width, the whole side judged by
+  // Doors cut by the left or right border: a door's width, the whole side judged by
   // the whole outlines' side gate.
   EXPECT_NE(cut_door_error("typical_width_m: 0.2", "  max_side_tilt_rad: 0.03\n")
                 .find("s.yaml:3: stereo.border_cut.door.typical_width_m: must be 0 (off) or within "

@@ -1,5 +1,5 @@
 // Double doors merged into one outline, split between their two handles
-// (StereoMatchOptions::max_twin_handle_gap, twin_handle_split.hpp, Doors item 21).
+// (StereoMatchOptions::max_twin_handle_gap, twin_handle_split.hpp).
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -87,7 +87,7 @@ TEST(TwinHandleSplit, OtherOutlinesAreLeftWhole) {
   // A door's handle and its neighbour's, seen through a strip of the neighbour at the outline's
   // side: their middle is not in the outline's middle 40%.
   EXPECT_EQ(after({door_outline(), handle_at(110.0, 150.0), handle_at(130.0, 150.0)}, options), 3u);
-  // One above the other (drawer fronts, item 18).
+  // One above the other (drawer fronts).
   EXPECT_EQ(after({door_outline(), handle_at(195.0, 100.0), handle_at(215.0, 300.0)}, options), 3u);
   // Too far apart for a double door's (60 px: 0.3 of the width).
   EXPECT_EQ(after({door_outline(), handle_at(170.0, 150.0), handle_at(230.0, 150.0)}, options), 3u);

@@ -1,6 +1,6 @@
 // A handle detection whose visible segment runs between two image points, 4 px wide, as the
 // handle recognizer reports it (the middle of the ends, the axis angle in [0, pi), the length),
-// cut by `cut` at one end (Handles item 4) or whole: for the bar-match and cut-bar tests.
+// cut by the image border `cut` at one end or whole: for the bar-match and cut-bar tests.
 #pragma once
 
 #include <Eigen/Core>

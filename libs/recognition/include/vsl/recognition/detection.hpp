@@ -58,18 +58,18 @@ struct Detection {
   // bottom edge for kTop). The stereo match pairs it only with a detection cut along the same
   // border and places its centre from that edge and the class's typical height
   // (StereoMatchOptions::border_cut); its mahalanobis2 is its colour's alone.
-  // kLeft and kRight (Doors item 20): the left or right border cuts it along a whole side; its
+  // kLeft and kRight: the left or right border cuts it along a whole side; its
   // corners_px on the cut side are where the top and bottom edges leave the image, its height_px
   // is the length of the vertical side it shows whole and its reference_px that side's middle.
   // The stereo match places it from that side, the edges' level planes and the class's typical
   // width (StereoMatchOptions::BorderCutDoor::typical_width_m).
-  // kTopLeft .. kBottomRight (Doors item 22): two borders cut it, and the outline's corner at
+  // kTopLeft .. kBottomRight: two borders cut it, and the outline's corner at
   // that image corner is the image's; the two corners on the cut sides are where the door's
   // edge and side leave the image, the opposite corner (the one real corner) is its
   // reference_px, and its height_px is the visible length of the side through it. The stereo
   // match pairs it with a detection cut by the top or bottom border alone in the other image
   // (which sees more beyond the left or right border).
-  // Handles (Handles item 4, HandleRecognizerParameters::detect_border_cut): kTop .. kRight, the
+  // Handles (HandleRecognizerParameters::detect_border_cut): kTop .. kRight, the
   // border cuts the bar at one end; reference_px and major_extent_px are the visible segment's.
   BorderCut border_cut = BorderCut::kNone;
 };

@@ -46,7 +46,7 @@ struct HandleRecognizerParameters {
   int min_border_distance_px = 1;  // as DoorRecognizerParameters
   bool verify_corners = true;
   CornerVerificationParameters corners;
-  // Handles item 4: a bar that one image border cuts at one end (the blob reaches that border
+  // A bar that one image border cuts at one end (the blob reaches that border
   // only, within min_border_distance_px; its major axis crosses it within 60 deg of square; its
   // other end lies inside the image) is detected too, with Detection::border_cut naming the
   // border; corner verification skips the cut end. Off: blobs at the border are skipped.

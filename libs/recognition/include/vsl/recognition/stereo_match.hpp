@@ -72,7 +72,7 @@ struct StereoMatchOptions {
   // by more than this fraction of the taller: a door's sides are equal, and an occluder (a
   // chair's seat, the table's top) that hides a corner in both images shortens one side in both,
   // where the side gate and the level-edge gate can pass it and the centre lands tens of
-  // centimetres off (Doors item 30). Such a pair may still be a door whose lower part is hidden
+  // centimetres off. Such a pair may still be a door whose lower part is hidden
   // (BorderCutDoor::occluder_cut). Needs the up direction; 0 turns it off.
   double max_side_height_mismatch = 0.0;
   // Types whose detections are bars (handles): a pair of such elongated detections (both at
@@ -127,7 +127,7 @@ struct StereoMatchOptions {
   // neighbour's a few centimetres beyond the reveal, inside the outline's slack. Two doors merged
   // into one blob hold their handles in the middle, a drawer stack one above another
   // (max_bar_height_spread). Applies wherever single_view_max_bars_inside does (single views and
-  // occluded-corner pairs; Doors item 29); 0 turns it off.
+  // occluded-corner pairs); 0 turns it off.
   double neighbour_handle_side_band = 0.0;
   // A pair of whole door outlines (detections with corners) is refused when more than this many
   // detections of a bar type (handles) lie inside either outline: a door carries one handle, and
@@ -151,7 +151,7 @@ struct StereoMatchOptions {
   // by its two halves either side of the line between them: the two doors of a double door that
   // segmentation merged where the reveal between them is unseen (at a grazing angle it is under
   // a pixel wide and shows the doors' own colour). A door carries one handle, and a double
-  // door's two stand 3-6 cm either side of the reveal (twin_handle_split.hpp, Doors item 21).
+  // door's two stand 3-6 cm either side of the reveal (twin_handle_split.hpp).
   // Needs bar_types; 0 turns it off.
   double max_twin_handle_gap = 0.0;
   // Optional, per class: doors cut by the top or bottom image border along a whole side
@@ -181,8 +181,8 @@ struct StereoMatchOptions {
     double height_sigma_m = 0.0;  // the spread of the class's heights about them, metres
     double min_width_m = 0.0;     // of the whole edge
     // Also the class's greatest width for whole outlines: a pair whose sides' correlated depths
-    // make the door wider keeps the outlines' depths, and a single view is refused (Doors item
-    // 19).
+    // make the door wider keeps the outlines' depths, and a single view is refused: a side's
+    // correlation peak on another door's edge can move it a metre, and no door is that wide.
     double max_width_m = 0.0;
     // The sides' tilt from vertical (as StereoMatchOptions::max_side_tilt_rad; 0 turns the test
     // off). A cut outline's sides are shorter and end at the border rather than at a corner, so
@@ -192,11 +192,11 @@ struct StereoMatchOptions {
     // its second-best distinct peak by this (SideCorrelator::SideDepth::second_correlation; a run
     // of equal doors repeats every edge), else it keeps the outlines' depth. 0: any best peak.
     double min_peak_margin = 0.0;
-    // With min_single_view_correlation: a door outline that no pair took and item 11 did not
-    // place (whole, or cut by its own image's top or bottom border) is placed from one vertical
+    // With min_single_view_correlation: a door outline that neither a pair nor a single view
+    // placed (whole, or cut by its own image's top or bottom border) is placed from one vertical
     // side and the level planes of its top and bottom edges (one_side_door.hpp): the side the
     // other image shows even near its border (the right side of a left-image outline) is swept
-    // as in item 11 (min_single_view_correlation; a second peak within
+    // as for single views (min_single_view_correlation; a second peak within
     // single_view_min_peak_margin is tried too, and exactly one must pass), and the other side's
     // corners are where the own rays meet the planes of the swept side's ends. Kept when those
     // corners project beyond the other image's left or right border, or the other image shows
@@ -204,15 +204,15 @@ struct StereoMatchOptions {
     // within about 78 deg of head-on; a whole outline's other side is vertical and the swept one a
     // door's height (height_range_m; the other's corners are at its ends' heights), a cut one's
     // visible height as for pairs above; at most single_view_max_bars_inside handles inside, no
-    // percept of its type within single_view_min_separation_m. The covariance is item 11's, plus
-    // (height_sigma_m / 2)^2 along the up direction for a cut door.
+    // percept of its type within single_view_min_separation_m. The covariance is a single view's,
+    // plus (height_sigma_m / 2)^2 along the up direction for a cut door.
     bool from_one_side = false;
-    // With from_one_side: a whole door outline that item 13 did not place is tried once more
+    // With from_one_side: a whole door outline that it did not place is tried once more
     // with the roles swapped: its outer side swept, its inner side placed on the level planes,
     // and kept when the other image shows the inner side there or shows no edge at all there
     // (its window's contrast under 0.3 of the own image's: the reveal between the door and a
     // neighbour of its colour, unseen in the other image, where segmentation merged the two).
-    // The other tests are item 13's.
+    // The other tests are from_one_side's.
     bool merged_side = false;
     // A pair of whole door outlines that the position or the side gate refused, placed from
     // three corners when an occluder in front of the door (a chair's back, a table top) hides
@@ -234,14 +234,14 @@ struct StereoMatchOptions {
     // max_width_m long, the visible height at least half the least typical height, the centre
     // from a typical height): an occluder in front of the door (a chair's seat, the table's top)
     // hides its lower part in both images, and the outlines end at the occluder's contour
-    // (occluder_cut_door.hpp, Doors item 28).
+    // (occluder_cut_door.hpp).
     bool occluder_cut = false;
     // With occluder_cut: a pair whose cut edge is level too (within 0.05 rad, as a table's
     // edge along the cupboards is) shows at least this much of the door, metres: a drawer front
     // of the door's colour, both edges level, is at most this tall.
     double occluder_cut_min_level_visible_m = 0.0;
     // Doors cut along a whole vertical side by the left or right image border (Detection::
-    // border_cut kLeft, kRight; side_cut_door.hpp, Doors item 20), placed from the side they
+    // border_cut kLeft, kRight; side_cut_door.hpp), placed from the side they
     // show whole and this width: two detections cut along the same border pair when that side's
     // ends lie on each other's epipolar lines, it is about as long in both images, vertical in 3D
     // (max_side_tilt_rad of whole outlines) and a door's height (height_range_m); the visible
@@ -260,7 +260,7 @@ struct StereoMatchOptions {
     double width_sigma_m = 0.0;  // the spread of the class's widths about it, metres
   };
   std::vector<BorderCutDoor> border_cut;
-  // Handles item 4: bars of a bar type (bar_types) cut at one end by the image border
+  // Bars of a bar type (bar_types) cut at one end by the image border
   // (HandleRecognizerParameters::detect_border_cut). A cut detection pairs with a whole one in
   // the other image as any two views of a bar (their union is the whole bar); with one cut by the
   // same border, the bar's span is the union of the two views as for whole bars, its end away
@@ -347,7 +347,7 @@ struct StereoPairTrace {
   double cost = 0.0;      // a candidate's normalized cost
   bool assigned = false;  // a candidate the assignment kept (a percept)
   // A candidate placed by the occluded-corner construction after the position or side gate
-  // refused it (BorderCutDoor::occluded_corner, docs/recognition.md Doors item 14).
+  // refused it (BorderCutDoor::occluded_corner, docs/recognition.md).
   bool occluded_corner = false;
 };
 

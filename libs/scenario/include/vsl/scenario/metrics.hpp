@@ -1,4 +1,4 @@
-// Scoring localization results against the ground truth of scenarios (issue 3, item 9): correct,
+// Scoring localization results against the ground truth of scenarios (issue 3): correct,
 // ambiguous (with or without the truth among the hypotheses), failed, wrong-confident, and the
 // distributions of errors and times.
 #pragma once
