@@ -183,7 +183,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       if (const auto v = door.find("merged_side")) {
         parsed.merged_side = v->as_bool();
         if (parsed.merged_side && !parsed.from_one_side) {
-          v->fail("needs from_one_side (it is item 13 with the sides' roles swapped)");
+          v->fail("needs from_one_side (a merged side is placed as from one side, roles swapped)");
         }
       }
       if (const auto v = door.find("occluded_corner")) {
