@@ -214,15 +214,225 @@ const LocalizerOptions& Localizer::options() const {
   return state_->options;
 }
 
+namespace {
+
+// Reports each stage once, when first reached, and never one before a later one.
+class StageReporter {
+ public:
+  explicit StageReporter(const StageObserver& observer) : observer_(observer) {}
+  void enter(LocalizationStage stage) {
+    if (reached_ && *reached_ >= stage) return;
+    reached_ = stage;
+    if (observer_) observer_(stage);
+  }
+
+ private:
+  const StageObserver& observer_;
+  std::optional<LocalizationStage> reached_;
+};
+
+using PoseWithAssociations = std::pair<Eigen::Isometry3d, std::vector<NodeAssociation>>;
+
+// The seed loop (header comment): what every seed so far found, and the next seed's turn of
+// orientation filtering (Eq. 10), hypothesis generation (Eqs. 11-16) and validation.
+class SeedSearch {
+ public:
+  SeedSearch(const LocalizationContext& context, const TypedAdjacency& adjacency,
+             std::size_t usable, StageTimes& times, StageReporter& stages)
+      : context_(context),
+        adjacency_(adjacency),
+        options_(context.options),
+        times_(times),
+        stages_(stages),
+        validated_(context.options.hypotheses),
+        // Interpretations worth extending must be able to compete: reach the explained
+        // fraction and come within the ambiguity margin of the best so far. The slack covers
+        // what validation's re-estimate adds over the seed's pose.
+        slack_(std::max(2.0, 0.15 * static_cast<double>(usable))),
+        floor_count_(std::max<double>(
+            options_.hypotheses.min_associations,
+            options_.validation.min_explained_fraction * static_cast<double>(usable))),
+        usable_(usable),
+        budget_(static_cast<std::size_t>(std::max(options_.hypotheses.max_interpretations, 1))) {}
+
+  // Seeds in turn until the best hypothesis is confirmed or the seeds or the budget are spent.
+  void run(SeedChooser& chooser) {
+    const auto max_seeds = static_cast<std::size_t>(std::max(options_.hypotheses.max_seeds, 1));
+    while (tried_.size() < max_seeds && budget_ > 0) {
+      PerceptTriple seed;
+      OrientationFilterResult subgraphs;
+      {
+        StageTimer timer(times_.orientation_filter_ms);
+        const auto next = chooser.next();
+        if (!next) break;
+        seed = *next;
+        tried_.push_back(seed);
+        subgraphs =
+            orientation_filter(context_.graph, adjacency_, context_.percepts, context_.noise,
+                               context_.candidates, seed, options_.pruning, budget_);
+        budget_ -= std::min(budget_, subgraphs.subgraphs.size());
+        if (subgraphs.subgraphs.empty()) {
+          chooser.report_empty(seed);
+          continue;
+        }
+      }
+      stages_.enter(LocalizationStage::kGenerating);
+      const std::vector<PoseWithAssociations> poses = generate(seed, subgraphs);
+      if (!poses.empty()) stages_.enter(LocalizationStage::kValidating);
+      if (validate(poses)) break;
+    }
+  }
+
+  const HypothesisSet& validated() const { return validated_; }
+
+ private:
+  // The bar an interpretation must reach, relative to the best count so far (validated, or
+  // found by this seed): an interpretation that explains a quarter fewer percepts cannot come
+  // within the margin unless its fits are far tighter, which the slack allows for. Raising the
+  // bar as better interpretations appear lets the search abandon the rest after a few misses.
+  int bar(double best) const {
+    return static_cast<int>(
+        std::ceil(std::max({3.0, floor_count_ - slack_, best - std::max(slack_, 0.25 * best)})));
+  }
+
+  // Hypotheses from the seed's subgraphs (Eqs. 11-16), with the associations that made them.
+  std::vector<PoseWithAssociations> generate(const PerceptTriple& seed,
+                                             const OrientationFilterResult& subgraphs) {
+    StageTimer timer(times_.hypothesis_generation_ms);
+    const ValidatedHypothesis* leader = validated_.best();
+    std::size_t best_count = leader ? leader->explained() : 0;
+    struct Candidate {
+      Eigen::Isometry3d pose;
+      std::size_t interpretation;
+    };
+    std::vector<Candidate> found;
+    for (const ModelTriple& subgraph : subgraphs.subgraphs) {
+      const auto start = seed_pose(context_, seed, subgraph);
+      if (!start) continue;
+      // A place an earlier seed already found and validated, with these three percepts given
+      // these three objects, would only be found again. The tolerance is tight (at most
+      // 10 cm, 3 degrees) so that a hypothesis that converged near, but not onto, this one
+      // never hides it.
+      const double tolerance_m =
+          std::min(3.0 * start->uncertainty.sigma_at_m(Eigen::Vector3d::Zero()), 0.1);
+      const double tolerance_rad = std::min(3.0 * start->uncertainty.sigma_rotation_rad, 0.05);
+      if (validated_.covers(start->world_T_ego, tolerance_m, tolerance_rad, seed, subgraph)) {
+        continue;
+      }
+      auto interpretation = extend_interpretation(context_, seed, subgraph, *start,
+                                                  bar(static_cast<double>(best_count)));
+      if (!interpretation || known(interpretation->world_T_ego)) continue;
+      const std::vector<Eigen::Isometry3d> located = hypothesis_poses(context_, *interpretation);
+      // Only an interpretation that stands as a hypothesis raises the bar.
+      if (!located.empty()) {
+        best_count = std::max(best_count, interpretation->associations.size());
+      }
+      for (const Eigen::Isometry3d& p : located) found.push_back({p, interpreted_.size()});
+      interpreted_at_.add(interpretation->world_T_ego.translation(), interpreted_.size());
+      interpreted_.push_back(std::move(*interpretation));
+    }
+    // Hypotheses found before the bar rose may now be below it.
+    const int final_bar = bar(static_cast<double>(best_count));
+    std::vector<PoseWithAssociations> poses;
+    for (const Candidate& c : found) {
+      const auto& associations = interpreted_[c.interpretation].associations;
+      if (static_cast<int>(associations.size()) >= final_bar) {
+        poses.emplace_back(c.pose, associations);
+      }
+    }
+    return poses;
+  }
+
+  // The same place found again (from this seed or an earlier one; Eq. 16 over all its
+  // associations is as precise as the data) needs no second validation.
+  bool known(const Eigen::Isometry3d& pose) const {
+    bool found = false;
+    interpreted_at_.for_each_near(
+        pose.translation(), options_.hypotheses.same_position_m, [&](std::size_t id) {
+          found = found || same_hypothesis(interpreted_[id].world_T_ego, pose, options_.hypotheses);
+        });
+    return found;
+  }
+
+  // Validates the poses against every percept; true when the best hypothesis now explains every
+  // percept of enough seeds (confirming_seeds, or one when it explains nearly every percept).
+  bool validate(const std::vector<PoseWithAssociations>& poses) {
+    StageTimer timer(times_.validation_ms);
+    for (const auto& [pose, generating] : poses) {
+      auto v = validate_hypothesis(context_, pose, generating);
+      if (v) validated_.add(std::move(*v));
+    }
+    const ValidatedHypothesis* leader = validated_.best();
+    if (leader == nullptr) return false;
+    const auto confirmed = std::count_if(tried_.begin(), tried_.end(), [&](const PerceptTriple& t) {
+      const auto& p = t.percepts;
+      return leader->explains(p[0]) && leader->explains(p[1]) && leader->explains(p[2]);
+    });
+    const bool clear_leader =
+        static_cast<double>(leader->explained()) >=
+        options_.hypotheses.single_seed_explained_fraction * static_cast<double>(usable_);
+    const int needed = clear_leader ? std::min(options_.hypotheses.confirming_seeds, 1)
+                                    : options_.hypotheses.confirming_seeds;
+    return confirmed >= needed;
+  }
+
+  const LocalizationContext& context_;
+  const TypedAdjacency& adjacency_;
+  const LocalizerOptions& options_;
+  StageTimes& times_;
+  StageReporter& stages_;
+  HypothesisSet validated_;
+  const double slack_;
+  const double floor_count_;
+  const std::size_t usable_;
+  std::size_t budget_;
+  std::vector<PerceptTriple> tried_;  // seeds processed
+  // Where the interpretations of every seed so far put the robot (ids into `interpreted_`).
+  PoseIndex interpreted_at_{0.25};
+  std::vector<Interpretation> interpreted_;
+};
+
+// A LOCALIZED decision's pose refined with Ceres over all its associations (Eq. 16 and the
+// refinement's covariance), and the precision requirement: 3 sigma within the required position
+// and angle, otherwise FAILED "too uncertain" with the pose and covariance still reported.
+void refine_localized(const LocalizationContext& context, const ValidatedHypothesis& best,
+                      std::size_t usable, LocalizationResult& result) {
+  const LocalizerOptions& options = context.options;
+  std::vector<PointCorrespondence> points;
+  for (const NodeAssociation& a : best.explanation.associations) {
+    points.push_back(context.correspondence(a.percept, a.node));
+  }
+  RefinedPose refined = refine_pose(best.world_T_ego, points, options.refinement);
+  // Reported (and checked against required_position_m below) as the residuals support it.
+  scale_covariance_by_residuals(refined, points.size(), options.refinement.planar_prior);
+  if (refined.world_T_ego.matrix().allFinite()) {
+    result.world_T_ego = refined.world_T_ego;
+    result.hypotheses.front().world_T_ego = refined.world_T_ego;
+  }
+  if (refined.covariance_valid) result.covariance = refined.covariance;
+  result.message =
+      "explains " + std::to_string(points.size()) + " of " + std::to_string(usable) + " percepts";
+  const ValidationOptions& v = options.validation;
+  if (v.precision_sigmas <= 0.0) return;
+  const Precision p = precision_of(refined);
+  if (refined.covariance_valid && !(v.precision_sigmas * p.position_m > v.required_position_m) &&
+      !(v.precision_sigmas * p.angle_rad > v.required_angle_rad)) {
+    return;
+  }
+  result.status = Status::kFailed;
+  result.too_uncertain = refined.covariance_valid;
+  result.message += refined.covariance_valid
+                        ? "; pose too uncertain (sigma " + format_cm(p.position_m) + " cm, " +
+                              format_deg(p.angle_rad) + " deg)"
+                        : "; pose covariance unavailable";
+}
+
+}  // namespace
+
 LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts,
                                        const StageObserver& on_stage) const {
   const auto start = Clock::now();
-  std::optional<LocalizationStage> reached;
-  const auto enter = [&](LocalizationStage stage) {
-    if (reached && *reached >= stage) return;
-    reached = stage;
-    if (on_stage) on_stage(stage);
-  };
+  StageReporter stages(on_stage);
   const LocalizerOptions& options = state_->options;
   const world::WorldGraph& graph = state_->graph;
   LocalizationResult result;
@@ -232,6 +442,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     return result;
   };
 
+  // Inputs: within the limits, with Eq. 7 noise, at least three.
   if (percepts.size() > static_cast<std::size_t>(options.pruning.max_percepts)) {
     result.message = "too many percepts: " + std::to_string(percepts.size()) + " (limit " +
                      std::to_string(options.pruning.max_percepts) + ", pruning.max_percepts)";
@@ -249,8 +460,9 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     return finish();
   }
 
+  // Pruning: proximity filtering (Eqs. 8-9), then the seeds' order.
+  stages.enter(LocalizationStage::kPruning);
   CandidateSets candidates;
-  enter(LocalizationStage::kPruning);
   {
     StageTimer timer(times.proximity_filter_ms);
     candidates = proximity_filter(graph, state_->adjacency, percepts, noise, options.pruning);
@@ -260,133 +472,18 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
                                              [](const auto& type) { return type.has_value(); }));
   const LocalizationContext context{graph, state_->adjacency, state_->grid, percepts,
                                     noise, candidates,        options};
-
   std::optional<SeedChooser> chooser;
   {
     StageTimer timer(times.orientation_filter_ms);
     chooser.emplace(graph, percepts, noise, candidates, options.pruning);
   }
 
-  // Interpretations worth extending must be able to compete: reach the explained fraction and
-  // come within the ambiguity margin of the best so far. The slack covers what validation's
-  // re-estimate adds over the seed's pose.
-  const double slack = std::max(2.0, 0.15 * static_cast<double>(usable));
-  const double floor_count =
-      std::max<double>(options.hypotheses.min_associations,
-                       options.validation.min_explained_fraction * static_cast<double>(usable));
-  HypothesisSet validated_set(options.hypotheses);
-  // Where the interpretations of every seed so far put the robot (ids into `interpreted`).
-  PoseIndex interpreted_at(0.25);
-  std::vector<Interpretation> interpreted;
-  std::size_t budget =
-      static_cast<std::size_t>(std::max(options.hypotheses.max_interpretations, 1));
-  std::vector<PerceptTriple> tried;  // seeds processed
-  const auto max_seeds = static_cast<std::size_t>(std::max(options.hypotheses.max_seeds, 1));
-  while (tried.size() < max_seeds && budget > 0) {
-    OrientationFilterResult subgraphs;
-    PerceptTriple seed;
-    {
-      StageTimer timer(times.orientation_filter_ms);
-      const auto next = chooser->next();
-      if (!next) break;
-      seed = *next;
-      tried.push_back(seed);
-      subgraphs = orientation_filter(graph, state_->adjacency, percepts, noise, candidates, seed,
-                                     options.pruning, budget);
-      budget -= std::min(budget, subgraphs.subgraphs.size());
-      if (subgraphs.subgraphs.empty()) {
-        chooser->report_empty(seed);
-        continue;
-      }
-    }
+  // Per seed: orientation filtering, hypothesis generation, validation.
+  SeedSearch search(context, state_->adjacency, usable, times, stages);
+  search.run(*chooser);
 
-    std::vector<std::pair<Eigen::Isometry3d, std::vector<NodeAssociation>>> poses;
-    enter(LocalizationStage::kGenerating);
-    {
-      StageTimer timer(times.hypothesis_generation_ms);
-      // Relative to the best so far (validated, or found by this seed): an interpretation that
-      // explains a quarter fewer percepts cannot come within the margin unless its fits are far
-      // tighter, which the slack allows for. Raising the bar as better interpretations appear lets
-      // the search abandon the rest after a few misses.
-      const auto bar = [&](double best) {
-        return static_cast<int>(
-            std::ceil(std::max({3.0, floor_count - slack, best - std::max(slack, 0.25 * best)})));
-      };
-      const ValidatedHypothesis* leader = validated_set.best();
-      std::size_t best_count = leader ? leader->explained() : 0;
-      struct Candidate {
-        Eigen::Isometry3d pose;
-        std::size_t interpretation;
-      };
-      std::vector<Candidate> found;
-      for (const ModelTriple& subgraph : subgraphs.subgraphs) {
-        const auto start = seed_pose(context, seed, subgraph);
-        if (!start) continue;
-        // A place an earlier seed already found and validated, with these three percepts given
-        // these three objects, would only be found again. The tolerance is tight (at most
-        // 10 cm, 3 degrees) so that a hypothesis that converged near, but not onto, this one
-        // never hides it.
-        const double tolerance_m =
-            std::min(3.0 * start->uncertainty.sigma_at_m(Eigen::Vector3d::Zero()), 0.1);
-        const double tolerance_rad = std::min(3.0 * start->uncertainty.sigma_rotation_rad, 0.05);
-        if (validated_set.covers(start->world_T_ego, tolerance_m, tolerance_rad, seed, subgraph)) {
-          continue;
-        }
-        auto interpretation = extend_interpretation(context, seed, subgraph, *start,
-                                                    bar(static_cast<double>(best_count)));
-        if (!interpretation) continue;
-        // The same place found again (from this seed or an earlier one; Eq. 16 over all its
-        // associations is as precise as the data) needs no second validation.
-        bool known = false;
-        const Eigen::Isometry3d& pose = interpretation->world_T_ego;
-        interpreted_at.for_each_near(
-            pose.translation(), options.hypotheses.same_position_m, [&](std::size_t id) {
-              known =
-                  known || same_hypothesis(interpreted[id].world_T_ego, pose, options.hypotheses);
-            });
-        if (known) continue;
-        const std::vector<Eigen::Isometry3d> located = hypothesis_poses(context, *interpretation);
-        // Only an interpretation that stands as a hypothesis raises the bar.
-        if (!located.empty())
-          best_count = std::max(best_count, interpretation->associations.size());
-        for (const Eigen::Isometry3d& p : located) found.push_back({p, interpreted.size()});
-        interpreted_at.add(interpretation->world_T_ego.translation(), interpreted.size());
-        interpreted.push_back(std::move(*interpretation));
-      }
-      // Hypotheses found before the bar rose may now be below it.
-      const int final_bar = bar(static_cast<double>(best_count));
-      for (const Candidate& c : found) {
-        if (static_cast<int>(interpreted[c.interpretation].associations.size()) < final_bar)
-          continue;
-        poses.emplace_back(c.pose, interpreted[c.interpretation].associations);
-      }
-    }
-
-    if (!poses.empty()) enter(LocalizationStage::kValidating);
-    {
-      StageTimer timer(times.validation_ms);
-      for (const auto& [pose, generating] : poses) {
-        auto v = validate_hypothesis(context, pose, generating);
-        if (v) validated_set.add(std::move(*v));
-      }
-      if (const ValidatedHypothesis* leader = validated_set.best()) {
-        const ValidatedHypothesis& top = *leader;
-        const auto confirmed =
-            std::count_if(tried.begin(), tried.end(), [&](const PerceptTriple& t) {
-              const auto& p = t.percepts;
-              return top.explains(p[0]) && top.explains(p[1]) && top.explains(p[2]);
-            });
-        const bool clear_leader =
-            static_cast<double>(top.explained()) >=
-            options.hypotheses.single_seed_explained_fraction * static_cast<double>(usable);
-        const int needed = clear_leader ? std::min(options.hypotheses.confirming_seeds, 1)
-                                        : options.hypotheses.confirming_seeds;
-        if (confirmed >= needed) break;
-      }
-    }
-  }
-
-  const std::vector<ValidatedHypothesis> validated = validated_set.ranked();
+  // The decision over every validated hypothesis, and what is reported.
+  const std::vector<ValidatedHypothesis> validated = search.validated().ranked();
   Decision decision;
   {
     StageTimer timer(times.validation_ms);
@@ -405,35 +502,9 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     result.associations = result.hypotheses.front().associations;
   }
   if (decision.status == Status::kLocalized) {
-    enter(LocalizationStage::kRefining);
+    stages.enter(LocalizationStage::kRefining);
     StageTimer timer(times.refinement_ms);
-    std::vector<PointCorrespondence> points;
-    for (const NodeAssociation& a : validated.front().explanation.associations) {
-      points.push_back(context.correspondence(a.percept, a.node));
-    }
-    RefinedPose refined = refine_pose(validated.front().world_T_ego, points, options.refinement);
-    // Reported (and checked against required_position_m below) as the residuals support it.
-    scale_covariance_by_residuals(refined, points.size(), options.refinement.planar_prior);
-    if (refined.world_T_ego.matrix().allFinite()) {
-      result.world_T_ego = refined.world_T_ego;
-      result.hypotheses.front().world_T_ego = refined.world_T_ego;
-    }
-    if (refined.covariance_valid) result.covariance = refined.covariance;
-    result.message =
-        "explains " + std::to_string(points.size()) + " of " + std::to_string(usable) + " percepts";
-    const ValidationOptions& v = options.validation;
-    if (v.precision_sigmas > 0.0) {
-      const Precision p = precision_of(refined);
-      if (!refined.covariance_valid || v.precision_sigmas * p.position_m > v.required_position_m ||
-          v.precision_sigmas * p.angle_rad > v.required_angle_rad) {
-        result.status = Status::kFailed;
-        result.too_uncertain = refined.covariance_valid;
-        result.message += refined.covariance_valid
-                              ? "; pose too uncertain (sigma " + format_cm(p.position_m) + " cm, " +
-                                    format_deg(p.angle_rad) + " deg)"
-                              : "; pose covariance unavailable";
-      }
-    }
+    refine_localized(context, validated.front(), usable, result);
   }
   return finish();
 }
