@@ -56,13 +56,13 @@ int allowed_unsupported(std::size_t partners, double fraction) {
   return std::min(f, static_cast<int>(partners) - 1);
 }
 
-// One run of the filter with the percepts in `excluded` passive: they constrain nobody, but their
-// own candidates are still filtered against the others, so that a true percept excluded in an
-// earlier round (its partners then included false positives) gets its candidates back. Fills
-// out.nodes, out.constrained, out.outlier.
-void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacency,
-                  const std::vector<PerceptPair>& linkable, const std::vector<bool>& excluded,
-                  const PruningOptions& options, CandidateSets& out) {
+using PartnerLists = std::vector<std::vector<Partner>>;
+
+// Each percept's partners: the linkable pairs with the percepts not excluded.
+PartnerLists choose_partners(const world::WorldGraph& graph,
+                             const std::vector<PerceptPair>& linkable,
+                             const std::vector<bool>& excluded, const PruningOptions& options,
+                             const CandidateSets& out) {
   const std::size_t m = out.types.size();
   // Each percept is filtered against its max_partners most precise partners (smallest tau), not
   // the smallest link sets: an empty link set is the mark of a false positive, and choosing by it
@@ -73,7 +73,7 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     if (!excluded[pair.a]) mine[pair.b].push_back(&pair);
   }
   const auto per_percept = static_cast<std::size_t>(std::max(options.max_partners, 1));
-  std::vector<std::vector<Partner>> partners(m);
+  PartnerLists partners(m);
   for (std::size_t a = 0; a < m; ++a) {
     std::stable_sort(
         mine[a].begin(), mine[a].end(),
@@ -89,6 +89,11 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     }
   }
 
+  return partners;
+}
+
+void drop_unselective(PartnerLists& partners, const PruningOptions& options) {
+  const std::size_t m = partners.size();
   // Unselective percepts (a link set of theirs above max_link_set: reading it costs more than the
   // pruning saves) are left unconstrained and constrain nobody; dropping them as partners can
   // change others' lists, so repeat until stable.
@@ -114,7 +119,12 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
       dropped = dropped || list.size() != before;
     }
   }
+}
 
+// Fills out.nodes and out.constrained; returns required_a per percept.
+std::vector<int> collect_candidates(const world::WorldGraph& graph, PartnerLists& partners,
+                                    const PruningOptions& options, CandidateSets& out) {
+  const std::size_t m = out.types.size();
   // Pass 1: a node of percept a's type is a candidate when the link sets of at least
   // required_a = |partners| - f_a partners contain it. Such a node lies in at least one of any
   // f_a + 1 of those link sets, so collecting from the f_a + 1 smallest sees every candidate.
@@ -160,6 +170,14 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
     std::sort(out.nodes[a].begin(), out.nodes[a].end());
   }
 
+  return required;
+}
+
+// Removes the candidates that lose their support and fills out.outlier.
+void arc_consistency(const world::WorldGraph& graph, const TypedAdjacency& adjacency,
+                     const PartnerLists& partners, const std::vector<int>& required,
+                     CandidateSets& out) {
+  const std::size_t m = out.types.size();
   // Arc consistency (AC-4): a candidate u of a keeps the support of partner b while some
   // candidate of b is linked to u with a length in their band. Supports are counted once; then
   // every removed candidate decrements the counts of the candidates it supported (found among its
@@ -239,6 +257,19 @@ void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacenc
   for (std::size_t a = 0; a < m; ++a) {
     out.outlier[a] = !out.types[a] || (out.constrained[a] && out.nodes[a].empty());
   }
+}
+
+// One run of the filter with the percepts in `excluded` passive: they constrain nobody, but their
+// own candidates are still filtered against the others, so that a true percept excluded in an
+// earlier round (its partners then included false positives) gets its candidates back. Fills
+// out.nodes, out.constrained, out.outlier.
+void filter_round(const world::WorldGraph& graph, const TypedAdjacency& adjacency,
+                  const std::vector<PerceptPair>& linkable, const std::vector<bool>& excluded,
+                  const PruningOptions& options, CandidateSets& out) {
+  PartnerLists partners = choose_partners(graph, linkable, excluded, options, out);
+  drop_unselective(partners, options);
+  const std::vector<int> required = collect_candidates(graph, partners, options, out);
+  arc_consistency(graph, adjacency, partners, required, out);
 }
 
 }  // namespace
