@@ -54,16 +54,23 @@ void sort_by_length(std::vector<TypedLink>& links) {
   if (from != &links) links.swap(*from);
 }
 
-}  // namespace
+// A link of Eq. 6 between nodes a < b, d metres apart.
+struct Pair {
+  NodeIndex a, b;
+  float d;
+};
 
-WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& options) {
-  if (!(options.link_threshold_m > 0.0) || !std::isfinite(options.link_threshold_m)) {
-    throw std::invalid_argument("link threshold must be a positive number of metres");
-  }
-  WorldGraph graph;
-  graph.link_threshold_m_ = options.link_threshold_m;
+// The node set: objects of the selected types, types interned in order of first appearance.
+struct Nodes {
+  std::vector<std::size_t> object_index;
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<TypeId> types;
+  std::vector<std::string> type_names;
+  std::vector<std::size_t> type_counts;
+};
 
-  // Node set: objects of the selected types, types interned in order of first appearance.
+Nodes select_nodes(const WorldModel& world, const WorldGraphOptions& options) {
+  Nodes out;
   std::unordered_map<std::string, TypeId> type_ids;
   for (std::size_t i = 0; i < world.objects.size(); ++i) {
     const ObjectModel& object = world.objects[i];
@@ -74,22 +81,30 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
     }
     auto [it, inserted] = type_ids.emplace(object.type, static_cast<TypeId>(type_ids.size()));
     if (inserted) {
-      graph.type_names_.push_back(object.type);
-      graph.type_counts_.push_back(0);
+      out.type_names.push_back(object.type);
+      out.type_counts.push_back(0);
     }
-    ++graph.type_counts_[it->second];
-    graph.object_index_.push_back(i);
-    graph.positions_.push_back(object.world_position_m);
-    graph.types_.push_back(it->second);
+    ++out.type_counts[it->second];
+    out.object_index.push_back(i);
+    out.positions.push_back(object.world_position_m);
+    out.types.push_back(it->second);
   }
-  const std::size_t n = graph.positions_.size();
+  return out;
+}
 
-  // Bucket nodes by grid cell: nodes sorted by cell, and each cell's range in that order.
-  const double cell_m = options.link_threshold_m;
+// Links (Eq. 6): nodes bucketed by grid cell of edge `cell_m`; each node compared with nodes of
+// higher index in the 27 surrounding cells, so every unordered pair is measured once. Pairs come
+// out ordered by (a, b): nodes in index order, each node's new partners sorted, which later makes
+// every adjacency row sorted by construction. Node ranges are searched on separate threads and
+// concatenated in range order: the result does not depend on the number of threads.
+std::vector<Pair> find_links(const std::vector<Eigen::Vector3d>& positions, double cell_m,
+                             std::size_t threads) {
+  const std::size_t n = positions.size();
+  // Nodes sorted by cell, and each cell's range in that order.
   std::vector<Cell> cells(n);
   std::vector<std::pair<std::uint64_t, NodeIndex>> order(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d& p = graph.positions_[i];
+    const Eigen::Vector3d& p = positions[i];
     cells[i] = {static_cast<std::int64_t>(std::floor(p.x() / cell_m)),
                 static_cast<std::int64_t>(std::floor(p.y() / cell_m)),
                 static_cast<std::int64_t>(std::floor(p.z() / cell_m))};
@@ -104,14 +119,7 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
     begin = end;
   }
 
-  // Links (Eq. 6): compare each node with nodes of higher index in the 27 surrounding cells, so
-  // every unordered pair is measured once. Pairs come out ordered by (a, b): nodes in index order,
-  // each node's new partners sorted, which later makes every adjacency row sorted by construction.
   const double threshold_sq = cell_m * cell_m;
-  struct Pair {
-    NodeIndex a, b;
-    float d;
-  };
   auto find_pairs = [&](std::size_t first, std::size_t last, std::vector<Pair>& pairs) {
     std::vector<Neighbour> found;  // partners of the current node
     for (std::size_t i = first; i < last; ++i) {
@@ -137,7 +145,7 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
         for (std::size_t k = range->second.first; k < range->second.second; ++k) {
           const NodeIndex j = order[k].second;
           if (j <= i) continue;
-          const double d_sq = (graph.positions_[i] - graph.positions_[j]).squaredNorm();
+          const double d_sq = (positions[i] - positions[j]).squaredNorm();
           if (d_sq < threshold_sq) found.push_back({j, static_cast<float>(std::sqrt(d_sq))});
         }
       }
@@ -148,12 +156,6 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
       }
     }
   };
-  // Node ranges searched on separate threads, concatenated in range order: the result does not
-  // depend on the number of threads.
-  const std::size_t threads = std::max<std::size_t>(
-      1,
-      std::min<std::size_t>(options.threads ? options.threads : std::thread::hardware_concurrency(),
-                            n / 1024 + 1));
   std::vector<std::vector<Pair>> chunk_pairs(threads);
   {
     std::vector<std::jthread> workers;
@@ -168,57 +170,63 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
     pairs.insert(pairs.end(), chunk_pairs[w].begin(), chunk_pairs[w].end());
     std::vector<Pair>().swap(chunk_pairs[w]);
   }
+  return pairs;
+}
+
+// Compressed adjacency rows. Row r receives first its partners a < r (in increasing a, as pairs
+// are ordered by a), then its partners b > r (increasing, from r's own sorted batch): sorted.
+void fill_rows(const std::vector<Pair>& pairs, std::size_t n, std::vector<std::size_t>& row_start,
+               std::vector<Neighbour>& neighbours) {
   std::vector<std::uint32_t> degree(n, 0);
   for (const Pair& p : pairs) {
     ++degree[p.a];
     ++degree[p.b];
   }
-
-  // Compressed adjacency rows. Row r receives first its partners a < r (in increasing a, as pairs
-  // are ordered by a), then its partners b > r (increasing, from r's own sorted batch): sorted.
-  graph.row_start_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) graph.row_start_[i + 1] = graph.row_start_[i] + degree[i];
-  graph.neighbours_.resize(graph.row_start_[n]);
-  std::vector<std::size_t> fill(graph.row_start_.begin(), graph.row_start_.end() - 1);
+  row_start.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) row_start[i + 1] = row_start[i] + degree[i];
+  neighbours.resize(row_start[n]);
+  std::vector<std::size_t> fill(row_start.begin(), row_start.end() - 1);
   for (const Pair& p : pairs) {
-    graph.neighbours_[fill[p.a]++] = {p.b, p.d};
-    graph.neighbours_[fill[p.b]++] = {p.a, p.d};
+    neighbours[fill[p.a]++] = {p.b, p.d};
+    neighbours[fill[p.b]++] = {p.a, p.d};
   }
+}
 
-  // Typed link lists sorted by length for the range queries of Eq. 8. Sorting is by length alone
-  // (ties keep pair order: stable), once per unordered type pair; the list of (b, a) is the list
-  // of (a, b) with ends swapped, so it is copied, not sorted again.
-  const std::size_t t = graph.type_names_.size();
-  graph.typed_links_.assign(t * t, {});
+// Typed link lists sorted by length for the range queries of Eq. 8, indexed from_type * t +
+// to_type. Sorting is by length alone (ties keep pair order: stable), once per unordered type
+// pair; the list of (b, a) is the list of (a, b) with ends swapped, so it is copied, not sorted
+// again. Each unordered pair's list is sorted (and mirrored) independently: the lists are spread
+// over the threads, the largest first.
+std::vector<std::vector<TypedLink>> typed_link_lists(const std::vector<Pair>& pairs,
+                                                     const std::vector<TypeId>& types,
+                                                     std::size_t t, std::size_t threads) {
+  std::vector<std::vector<TypedLink>> typed(t * t);
   std::vector<std::size_t> typed_count(t * t, 0);
   for (const Pair& p : pairs) {
-    const std::size_t lo = std::min(graph.types_[p.a], graph.types_[p.b]);
-    const std::size_t hi = std::max(graph.types_[p.a], graph.types_[p.b]);
+    const std::size_t lo = std::min(types[p.a], types[p.b]);
+    const std::size_t hi = std::max(types[p.a], types[p.b]);
     typed_count[lo * t + hi] += lo == hi ? 2 : 1;
   }
-  for (std::size_t k = 0; k < t * t; ++k) graph.typed_links_[k].reserve(typed_count[k]);
+  for (std::size_t k = 0; k < t * t; ++k) typed[k].reserve(typed_count[k]);
   for (const Pair& p : pairs) {
-    const TypeId ta = graph.types_[p.a], tb = graph.types_[p.b];
-    if (ta <= tb) graph.typed_links_[ta * t + tb].push_back({p.d, p.a, p.b});
-    if (tb <= ta) graph.typed_links_[tb * t + ta].push_back({p.d, p.b, p.a});
+    const TypeId ta = types[p.a], tb = types[p.b];
+    if (ta <= tb) typed[ta * t + tb].push_back({p.d, p.a, p.b});
+    if (tb <= ta) typed[tb * t + ta].push_back({p.d, p.b, p.a});
   }
-  // Each unordered type pair's list is sorted (and mirrored) independently: spread the lists over
-  // the threads, the largest first.
   std::vector<std::pair<std::size_t, std::size_t>> lists;  // (lo, hi)
   for (std::size_t lo = 0; lo < t; ++lo) {
     for (std::size_t hi = lo; hi < t; ++hi) lists.emplace_back(lo, hi);
   }
   std::sort(lists.begin(), lists.end(), [&](const auto& x, const auto& y) {
-    return graph.typed_links_[x.first * t + x.second].size() >
-           graph.typed_links_[y.first * t + y.second].size();
+    return typed[x.first * t + x.second].size() > typed[y.first * t + y.second].size();
   });
   auto sort_lists = [&](std::size_t worker) {
     for (std::size_t k = worker; k < lists.size(); k += threads) {
       const auto [lo, hi] = lists[k];
-      auto& list = graph.typed_links_[lo * t + hi];
+      auto& list = typed[lo * t + hi];
       sort_by_length(list);
       if (lo == hi) continue;
-      auto& reverse = graph.typed_links_[hi * t + lo];
+      auto& reverse = typed[hi * t + lo];
       reverse.reserve(list.size());
       for (const TypedLink& link : list) reverse.push_back({link.length_m, link.to, link.from});
     }
@@ -228,6 +236,32 @@ WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& o
     for (std::size_t w = 1; w < threads; ++w) workers.emplace_back(sort_lists, w);
     sort_lists(0);
   }
+  return typed;
+}
+
+}  // namespace
+
+WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& options) {
+  if (!(options.link_threshold_m > 0.0) || !std::isfinite(options.link_threshold_m)) {
+    throw std::invalid_argument("link threshold must be a positive number of metres");
+  }
+  WorldGraph graph;
+  graph.link_threshold_m_ = options.link_threshold_m;
+  Nodes nodes = select_nodes(world, options);
+  graph.object_index_ = std::move(nodes.object_index);
+  graph.positions_ = std::move(nodes.positions);
+  graph.types_ = std::move(nodes.types);
+  graph.type_names_ = std::move(nodes.type_names);
+  graph.type_counts_ = std::move(nodes.type_counts);
+  const std::size_t n = graph.positions_.size();
+
+  const std::size_t threads = std::max<std::size_t>(
+      1,
+      std::min<std::size_t>(options.threads ? options.threads : std::thread::hardware_concurrency(),
+                            n / 1024 + 1));
+  const std::vector<Pair> pairs = find_links(graph.positions_, options.link_threshold_m, threads);
+  fill_rows(pairs, n, graph.row_start_, graph.neighbours_);
+  graph.typed_links_ = typed_link_lists(pairs, graph.types_, graph.type_names_.size(), threads);
   return graph;
 }
 
