@@ -89,11 +89,93 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
   return extend_interpretation(context, seed, subgraph, *start, min_count);
 }
 
+namespace {
+
+// The percepts an interpretation is extended with, most precise first (they decide early
+// whether the seed is hopeless): every usable percept but the seed's.
+std::vector<int> extension_order(const LocalizationContext& context, const PerceptTriple& seed) {
+  std::vector<int> rest;
+  for (std::size_t l = 0; l < context.percepts.size(); ++l) {
+    const int p = static_cast<int>(l);
+    if (p == seed.percepts[0] || p == seed.percepts[1] || p == seed.percepts[2]) continue;
+    if (context.candidates.types[l]) rest.push_back(p);
+  }
+  std::sort(rest.begin(), rest.end(),
+            [&](int a, int b) { return context.noise[a].sigma_m < context.noise[b].sigma_m; });
+  return rest;
+}
+
+// The model object percept `l` is best associated with, given the associations so far and the
+// pose they give: of its type, within the gate around where the pose puts it, every checked
+// pairwise distance within its tolerance (Eq. 8), least squared normalized distance error.
+std::optional<NodeIndex> best_object(const LocalizationContext& context,
+                                     const ModelTriple& subgraph,
+                                     const std::vector<NodeAssociation>& associations, int l,
+                                     const Eigen::Isometry3d& pose,
+                                     const PoseUncertainty& uncertainty) {
+  const FusedPercept& percept = context.percepts[l];
+  const world::TypeId type = *context.candidates.types[l];
+  const double sigma_pose = uncertainty.sigma_at_m(percept.ego_position_m);
+  const double radius_m =
+      gate_sigmas(context.options) *
+      std::sqrt(context.noise[l].sigma_m * context.noise[l].sigma_m + sigma_pose * sigma_pose);
+  const Eigen::Vector3d predicted_m = pose * percept.ego_position_m;
+  // Pairwise distance checks (Eq. 8 for each new pair) against the seed and the most precise
+  // associations found since (the first ones added): a wrong object can match three distances
+  // by chance, rarely eight.
+  const std::size_t checked = std::min(associations.size(), kPairwiseChecks);
+  std::array<PerceptPair, kPairwiseChecks> pairs;
+  int anchor = -1;
+  for (std::size_t s = 0; s < checked; ++s) {
+    pairs[s] = context.pair(l, associations[s].percept);
+    if (s < 3 && pairs[s].distance_m + pairs[s].tau_m < context.graph.link_threshold_m() &&
+        (anchor < 0 || pairs[s].distance_m < pairs[anchor].distance_m)) {
+      anchor = static_cast<int>(s);
+    }
+  }
+  double best_cost = std::numeric_limits<double>::infinity();
+  NodeIndex best_node = 0;
+  const auto consider = [&](NodeIndex node) {
+    for (const NodeAssociation& a : associations) {
+      if (a.node == node) return;
+    }
+    const Eigen::Vector3d& x = context.graph.world_position_m(node);
+    // Distances leave the mirror side of the associations' plane open; the pose picks.
+    if ((x - predicted_m).squaredNorm() > radius_m * radius_m) return;
+    double cost = 0.0;
+    for (std::size_t s = 0; s < checked; ++s) {
+      const double d = (x - context.graph.world_position_m(associations[s].node)).norm();
+      const double r = (d - pairs[s].distance_m) / pairs[s].tau_m;
+      if (std::abs(r) > 1.0) return;
+      cost += r * r;
+    }
+    if (cost < best_cost) {
+      best_cost = cost;
+      best_node = node;
+    }
+  };
+  if (anchor >= 0) {
+    // The objects at the right distance from the nearest seed object: a graph lookup.
+    const PerceptPair& p = pairs[anchor];
+    for (const world::Neighbour& n : context.adjacency.within(
+             subgraph.nodes[anchor], type, p.distance_m - p.tau_m, p.distance_m + p.tau_m)) {
+      consider(n.node);
+    }
+  } else {
+    // Farther than any link from the seed: look where the seed's pose puts it.
+    context.grid.for_each_within(type, predicted_m, radius_m,
+                                 [&](NodeIndex node, double) { consider(node); });
+  }
+  if (!std::isfinite(best_cost)) return std::nullopt;
+  return best_node;
+}
+
+}  // namespace
+
 std::optional<Interpretation> extend_interpretation(const LocalizationContext& context,
                                                     const PerceptTriple& seed,
                                                     const ModelTriple& subgraph,
                                                     const SeedPose& start, int min_count) {
-  const LocalizerOptions& options = context.options;
   Interpretation out;
   std::vector<PointCorrespondence> points;
   for (int s = 0; s < 3; ++s) {
@@ -109,80 +191,19 @@ std::optional<Interpretation> extend_interpretation(const LocalizationContext& c
     uncertainty = uncertainty_of(context, out.associations);
   };
 
-  // Percepts to extend with, most precise first (they decide early whether the seed is hopeless).
-  std::vector<int> rest;
-  for (std::size_t l = 0; l < context.percepts.size(); ++l) {
-    const int p = static_cast<int>(l);
-    if (p == seed.percepts[0] || p == seed.percepts[1] || p == seed.percepts[2]) continue;
-    if (context.candidates.types[l]) rest.push_back(p);
-  }
-  std::sort(rest.begin(), rest.end(),
-            [&](int a, int b) { return context.noise[a].sigma_m < context.noise[b].sigma_m; });
+  const std::vector<int> rest = extension_order(context, seed);
   const int max_misses = static_cast<int>(rest.size()) + 3 - min_count;
   if (max_misses < 0) return std::nullopt;
-
-  const double gate = gate_sigmas(options);
-  const double link_threshold_m = context.graph.link_threshold_m();
   int misses = 0;
   for (const int l : rest) {
-    const FusedPercept& percept = context.percepts[l];
-    const world::TypeId type = *context.candidates.types[l];
-    const double sigma_pose = uncertainty.sigma_at_m(percept.ego_position_m);
-    const double radius_m = gate * std::sqrt(context.noise[l].sigma_m * context.noise[l].sigma_m +
-                                             sigma_pose * sigma_pose);
-    const Eigen::Vector3d predicted_m = *pose * percept.ego_position_m;
-    // Pairwise distance checks (Eq. 8 for each new pair) against the seed and the most precise
-    // associations found since (the first ones added): a wrong object can match three distances
-    // by chance, rarely eight.
-    const std::size_t checked = std::min(out.associations.size(), kPairwiseChecks);
-    std::array<PerceptPair, kPairwiseChecks> pairs;
-    int anchor = -1;
-    for (std::size_t s = 0; s < checked; ++s) {
-      pairs[s] = context.pair(l, out.associations[s].percept);
-      if (s < 3 && pairs[s].distance_m + pairs[s].tau_m < link_threshold_m &&
-          (anchor < 0 || pairs[s].distance_m < pairs[anchor].distance_m)) {
-        anchor = static_cast<int>(s);
-      }
-    }
-    double best_cost = std::numeric_limits<double>::infinity();
-    NodeIndex best_node = 0;
-    const auto consider = [&](NodeIndex node) {
-      for (const NodeAssociation& a : out.associations) {
-        if (a.node == node) return;
-      }
-      const Eigen::Vector3d& x = context.graph.world_position_m(node);
-      // Distances leave the mirror side of the associations' plane open; the pose picks.
-      if ((x - predicted_m).squaredNorm() > radius_m * radius_m) return;
-      double cost = 0.0;
-      for (std::size_t s = 0; s < checked; ++s) {
-        const double d = (x - context.graph.world_position_m(out.associations[s].node)).norm();
-        const double r = (d - pairs[s].distance_m) / pairs[s].tau_m;
-        if (std::abs(r) > 1.0) return;
-        cost += r * r;
-      }
-      if (cost < best_cost) {
-        best_cost = cost;
-        best_node = node;
-      }
-    };
-    if (anchor >= 0) {
-      // The objects at the right distance from the nearest seed object: a graph lookup.
-      const PerceptPair& p = pairs[anchor];
-      for (const world::Neighbour& n : context.adjacency.within(
-               subgraph.nodes[anchor], type, p.distance_m - p.tau_m, p.distance_m + p.tau_m)) {
-        consider(n.node);
-      }
-    } else {
-      // Farther than any link from the seed: look where the seed's pose puts it.
-      context.grid.for_each_within(type, predicted_m, radius_m,
-                                   [&](NodeIndex node, double) { consider(node); });
-    }
-    if (!std::isfinite(best_cost)) {
+    const std::optional<NodeIndex> node =
+        best_object(context, subgraph, out.associations, l, *pose, uncertainty);
+    if (!node) {
       if (++misses > max_misses) return std::nullopt;
       continue;
     }
-    out.associations.push_back({l, best_node});
-    points.push_back(context.correspondence(l, best_node));
+    out.associations.push_back({l, *node});
+    points.push_back(context.correspondence(l, *node));
     // A seed of three percepts fixes the pose only roughly (its rotation to sigma / altitude),
     // and far percepts sit on long lever arms; re-estimating as precise associations join (after
     // the 2nd and the 8th) keeps the prediction, and so the choice among same-type neighbours,
