@@ -143,16 +143,8 @@ OpeningSpec opening(const Node& node, bool door) {
   return out;
 }
 
-}  // namespace
-
-KitchenLayout parse_kitchen_layout(const Node& root) {
-  root.expect_map();
-  root.expect_keys({"name", "room", "dimensions", "handles", "doors", "colours", "materials",
-                    "room_door", "windows", "runs", "table", "lights"});
-  KitchenLayout layout;
-  layout.origin = Origin::of(root);
-  layout.name = root.get("name", "kitchen");
-
+// room: size (m) and wall thickness.
+void parse_room(const Node& root, KitchenLayout& layout) {
   const Node room = root.at("room");
   room.expect_keys({"size", "wall_thickness"});
   const auto size = room.at("size").as_array<3>();
@@ -160,34 +152,34 @@ KitchenLayout parse_kitchen_layout(const Node& root) {
     if (size[i] < 2.0 || size[i] > 20.0) room.at("size").fail("each extent must be in [2, 20] m");
   }
   layout.room_size_m = {size[0], size[1], size[2]};
-  KitchenDimensions& d = layout.dimensions;
-  if (const auto t = room.find("wall_thickness")) d.wall_thickness_m = t->as_double_in(0.05, 0.6);
+  if (const auto t = room.find("wall_thickness"))
+    layout.dimensions.wall_thickness_m = t->as_double_in(0.05, 0.6);
+}
 
-  if (const auto dims = root.find("dimensions")) {
-    dims->expect_keys({"plinth_height", "base_height", "base_depth", "countertop_thickness",
-                       "countertop_depth", "upper_bottom", "upper_height", "upper_depth",
-                       "door_thickness"});
-    auto read = [&](const char* key, double& value, double lo, double hi) {
-      if (const auto node = dims->find(key)) value = node->as_double_in(lo, hi);
-    };
-    read("plinth_height", d.plinth_height_m, 0.05, 0.25);
-    read("base_height", d.base_height_m, 0.5, 0.9);
-    read("base_depth", d.base_depth_m, 0.4, 0.7);
-    read("countertop_thickness", d.countertop_thickness_m, 0.01, 0.08);
-    read("countertop_depth", d.countertop_depth_m, 0.45, 0.9);
-    read("upper_bottom", d.upper_bottom_m, 1.2, 1.8);
-    read("upper_height", d.upper_height_m, 0.3, 1.0);
-    read("upper_depth", d.upper_depth_m, 0.25, 0.45);
-    read("door_thickness", d.door_thickness_m, 0.012, 0.03);
-    if (d.countertop_depth_m < d.base_depth_m + d.door_thickness_m) {
-      dims->fail("countertop_depth must cover base_depth plus door_thickness");
-    }
+// dimensions: the cabinets' standard sizes, each within its plausible range.
+void parse_dimensions(const Node& dims, KitchenDimensions& d) {
+  dims.expect_keys({"plinth_height", "base_height", "base_depth", "countertop_thickness",
+                    "countertop_depth", "upper_bottom", "upper_height", "upper_depth",
+                    "door_thickness"});
+  auto read = [&](const char* key, double& value, double lo, double hi) {
+    if (const auto node = dims.find(key)) value = node->as_double_in(lo, hi);
+  };
+  read("plinth_height", d.plinth_height_m, 0.05, 0.25);
+  read("base_height", d.base_height_m, 0.5, 0.9);
+  read("base_depth", d.base_depth_m, 0.4, 0.7);
+  read("countertop_thickness", d.countertop_thickness_m, 0.01, 0.08);
+  read("countertop_depth", d.countertop_depth_m, 0.45, 0.9);
+  read("upper_bottom", d.upper_bottom_m, 1.2, 1.8);
+  read("upper_height", d.upper_height_m, 0.3, 1.0);
+  read("upper_depth", d.upper_depth_m, 0.25, 0.45);
+  read("door_thickness", d.door_thickness_m, 0.012, 0.03);
+  if (d.countertop_depth_m < d.base_depth_m + d.door_thickness_m) {
+    dims.fail("countertop_depth must cover base_depth plus door_thickness");
   }
+}
 
-  if (const auto handles = root.find("handles")) layout.handle = parse_handles(*handles);
-  if (const auto doors = root.find("doors")) layout.door_style = parse_doors(*doors);
-  if (const auto colours = root.find("colours")) parse_colours(*colours, layout);
-  if (const auto materials = root.find("materials")) parse_materials(*materials, layout);
+// room_door and windows.
+void parse_openings(const Node& root, KitchenLayout& layout) {
   if (const auto door = root.find("room_door")) {
     layout.room_door = opening(*door, true);
     if (const auto hinge = door->find("hinge")) {
@@ -200,7 +192,10 @@ KitchenLayout parse_kitchen_layout(const Node& root) {
     for (std::size_t i = 0; i < windows->size(); ++i)
       layout.windows.push_back(opening((*windows)[i], false));
   }
-  const Node runs = root.at("runs");
+}
+
+// runs: the cabinet runs along the walls.
+void parse_runs(const Node& runs, KitchenLayout& layout) {
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const Node node = runs[i];
     node.expect_keys({"wall", "at", "base", "upper_at", "upper", "handles"});
@@ -215,44 +210,69 @@ KitchenLayout parse_kitchen_layout(const Node& root) {
     if (const auto handles = node.find("handles")) run.handles = parse_handles(*handles);
     layout.runs.push_back(std::move(run));
   }
-  if (const auto table = root.find("table")) {
-    table->expect_keys({"centre", "size", "yaw", "chairs", "lamp"});
-    TableSpec spec;
-    spec.origin = Origin::of(*table);
-    const auto centre = table->at("centre").as_array<2>();
-    spec.centre_m = {centre[0], centre[1]};
-    if (const auto s = table->find("size")) {
-      const auto v = s->as_array<3>();
-      if (v[0] < 0.6 || v[0] > 4.0 || v[1] < 0.6 || v[1] > 2.0 || v[2] < 0.6 || v[2] > 1.1) {
-        s->fail("expected [length 0.6..4, width 0.6..2, height 0.6..1.1] m");
-      }
-      spec.size_m = {v[0], v[1], v[2]};
+}
+
+// table: centre, size, yaw, chairs, lamp.
+TableSpec parse_table(const Node& table) {
+  table.expect_keys({"centre", "size", "yaw", "chairs", "lamp"});
+  TableSpec spec;
+  spec.origin = Origin::of(table);
+  const auto centre = table.at("centre").as_array<2>();
+  spec.centre_m = {centre[0], centre[1]};
+  if (const auto s = table.find("size")) {
+    const auto v = s->as_array<3>();
+    if (v[0] < 0.6 || v[0] > 4.0 || v[1] < 0.6 || v[1] > 2.0 || v[2] < 0.6 || v[2] > 1.1) {
+      s->fail("expected [length 0.6..4, width 0.6..2, height 0.6..1.1] m");
     }
-    if (const auto yaw = table->find("yaw")) {
-      spec.yaw_deg = yaw->as_double();
-      if (std::fmod(std::abs(spec.yaw_deg), 90.0) != 0.0)
-        yaw->fail("must be a multiple of 90 (degrees)");
-    }
-    if (const auto chairs = table->find("chairs")) {
-      const std::int64_t n = chairs->as_int();
-      if (n < 0 || n > 8) chairs->fail("expected 0..8 chairs");
-      spec.chairs = static_cast<int>(n);
-    }
-    spec.lamp = table->get("lamp", true);
-    layout.table = spec;
+    spec.size_m = {v[0], v[1], v[2]};
   }
-  if (const auto lights = root.find("lights")) {
-    lights->expect_keys({"ceiling", "under_cupboards"});
-    if (const auto grid = lights->find("ceiling")) {
-      const auto v = grid->as_array<2>();
-      if (v[0] < 0 || v[0] > 10 || v[1] < 0 || v[1] > 10 || v[0] != std::floor(v[0]) ||
-          v[1] != std::floor(v[1])) {
-        grid->fail("expected [nx, ny], whole numbers in 0..10");
-      }
-      layout.ceiling_lights = {static_cast<int>(v[0]), static_cast<int>(v[1])};
-    }
-    layout.under_cupboard_lights = lights->get("under_cupboards", false);
+  if (const auto yaw = table.find("yaw")) {
+    spec.yaw_deg = yaw->as_double();
+    if (std::fmod(std::abs(spec.yaw_deg), 90.0) != 0.0)
+      yaw->fail("must be a multiple of 90 (degrees)");
   }
+  if (const auto chairs = table.find("chairs")) {
+    const std::int64_t n = chairs->as_int();
+    if (n < 0 || n > 8) chairs->fail("expected 0..8 chairs");
+    spec.chairs = static_cast<int>(n);
+  }
+  spec.lamp = table.get("lamp", true);
+  return spec;
+}
+
+// lights: the ceiling grid and the under-cupboard lights.
+void parse_lights(const Node& lights, KitchenLayout& layout) {
+  lights.expect_keys({"ceiling", "under_cupboards"});
+  if (const auto grid = lights.find("ceiling")) {
+    const auto v = grid->as_array<2>();
+    if (v[0] < 0 || v[0] > 10 || v[1] < 0 || v[1] > 10 || v[0] != std::floor(v[0]) ||
+        v[1] != std::floor(v[1])) {
+      grid->fail("expected [nx, ny], whole numbers in 0..10");
+    }
+    layout.ceiling_lights = {static_cast<int>(v[0]), static_cast<int>(v[1])};
+  }
+  layout.under_cupboard_lights = lights.get("under_cupboards", false);
+}
+
+}  // namespace
+
+KitchenLayout parse_kitchen_layout(const Node& root) {
+  root.expect_map();
+  root.expect_keys({"name", "room", "dimensions", "handles", "doors", "colours", "materials",
+                    "room_door", "windows", "runs", "table", "lights"});
+  KitchenLayout layout;
+  layout.origin = Origin::of(root);
+  layout.name = root.get("name", "kitchen");
+  parse_room(root, layout);
+  if (const auto dims = root.find("dimensions")) parse_dimensions(*dims, layout.dimensions);
+  if (const auto handles = root.find("handles")) layout.handle = parse_handles(*handles);
+  if (const auto doors = root.find("doors")) layout.door_style = parse_doors(*doors);
+  if (const auto colours = root.find("colours")) parse_colours(*colours, layout);
+  if (const auto materials = root.find("materials")) parse_materials(*materials, layout);
+  parse_openings(root, layout);
+  parse_runs(root.at("runs"), layout);
+  if (const auto table = root.find("table")) layout.table = parse_table(*table);
+  if (const auto lights = root.find("lights")) parse_lights(*lights, layout);
   return layout;
 }
 
