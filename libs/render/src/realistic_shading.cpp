@@ -84,11 +84,7 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
   const world::WorldModel casters = shadow_casters(world);
   const Scene occluders(casters, options);
   lights_ = collect_lights(world, occluders, options);
-
-  // One look per (material, colour): a primitive may override its material's colour.
-  std::map<std::pair<std::string, std::uint32_t>, std::uint16_t> look_index;
   const std::size_t count = scene.triangles.size();
-  triangles_.resize(count);
   LightMapInputs inputs;
   inputs.texel_m = options.realism.light_map_texel_m;
   inputs.indirect_light = options.realism.indirect_light;
@@ -96,6 +92,18 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
   inputs.skip.assign(count, false);
   inputs.slot_factor = scene.slot_factor;
   std::vector<bool> is_sky(count, false);
+  assign_looks(world, scene, inputs, is_sky);
+  light_map_ = std::make_unique<const LightMap>(scene, lights_, inputs);
+  set_emitters(options, is_sky);
+  choose_highlight_lights(scene);
+}
+
+void RealisticScene::assign_looks(const world::WorldModel& world, const Scene& scene,
+                                  LightMapInputs& inputs, std::vector<bool>& is_sky) {
+  // One look per (material, colour): a primitive may override its material's colour.
+  std::map<std::pair<std::string, std::uint32_t>, std::uint16_t> look_index;
+  const std::size_t count = scene.triangles.size();
+  triangles_.resize(count);
   // A primitive's triangles are consecutive in the scene: its extents are computed once, not per
   // triangle (a mesh of n triangles would cost n times its vertex count).
   const world::Primitive* extents_primitive = nullptr;
@@ -141,9 +149,11 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     is_sky[t] = object.type == "window" && look.surface.finish == world::Finish::glass;
     inputs.skip[t] = look.emissive || is_sky[t];
   }
-  light_map_ = std::make_unique<const LightMap>(scene, lights_, inputs);
-  const std::array<float, 3>& mean_e = light_map_->mean_irradiance_rgb();
+}
 
+void RealisticScene::set_emitters(const RenderOptions& options, const std::vector<bool>& is_sky) {
+  const std::size_t count = triangles_.size();
+  const std::array<float, 3>& mean_e = light_map_->mean_irradiance_rgb();
   // What a lamp or a window looks like: far brighter than what they light (they saturate).
   const float sky = static_cast<float>(options.realism.daylight * 9000.0 + 0.02 * mean_e[1]);
   const std::array<float, 3> sky_rgb =
@@ -177,7 +187,10 @@ RealisticScene::RealisticScene(const world::WorldModel& world, const Scene& scen
     room_below_rgb_[k] = 0.25f * mean_e[k] * kInversePi;
     room_above_rgb_[k] = 0.75f * mean_e[k] * kInversePi;
   }
+}
 
+void RealisticScene::choose_highlight_lights(const Scene& scene) {
+  const std::size_t count = triangles_.size();
   // The light whose highlights each shiny triangle shows: the one that lights it most (at its
   // centre and near its corners, through the shadow maps).
   for (std::size_t t = 0; t < count; ++t) {

@@ -52,6 +52,16 @@ class RealisticScene {
     Eigen::Vector3f world_normal;       // unit, outward
   };
 
+  // The constructor's steps. Looks per (material, colour), the triangles' looks, normals and
+  // texture axes; fills the light map's inputs and marks the window panes (sky).
+  void assign_looks(const world::WorldModel& world, const Scene& scene, LightMapInputs& inputs,
+                    std::vector<bool>& is_sky);
+  // What emits light (lamps, window panes) and the background and the reflected room, from the
+  // light map's mean irradiance.
+  void set_emitters(const RenderOptions& options, const std::vector<bool>& is_sky);
+  // The light whose highlights each shiny triangle shows.
+  void choose_highlight_lights(const Scene& scene);
+
   void shade_sample(std::int32_t triangle, const Eigen::Vector3f& world_point,
                     const Eigen::Vector3f& to_camera, float footprint_m, float rgb[3]) const;
   void add_highlights(const Look& look, const TriangleLook& t, const Eigen::Vector3f& p,
