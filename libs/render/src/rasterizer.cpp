@@ -109,6 +109,86 @@ enum Outside : unsigned {
   kBottom = 32,
 };
 
+// The pinhole camera's projection and its view frustum, in the camera frame.
+struct Frustum {
+  Frustum(const Pinhole& camera, double near_m, double far_m)
+      : fx(camera.fx_px),
+        fy(camera.fy_px),
+        cx(camera.cx_px),
+        cy(camera.cy_px),
+        near_clip_m(near_m),
+        far_clip_m(far_m),
+        right_edge(camera.width_px - 0.5),
+        bottom_edge(camera.height_px - 0.5) {}
+
+  // The side planes pass through the camera centre at the image's outer pixel edges, as
+  // half-spaces k . p >= 0.
+  unsigned outside(const Eigen::Vector3d& p) const {
+    unsigned code = 0;
+    if (p.z() < near_clip_m) code |= kNear;
+    if (p.z() > far_clip_m) code |= kFar;
+    if (fx * p.x() + (cx - left_edge) * p.z() < 0.0) code |= kLeft;
+    if (fx * p.x() + (cx - right_edge) * p.z() > 0.0) code |= kRight;
+    if (fy * p.y() + (cy - top_edge) * p.z() < 0.0) code |= kTop;
+    if (fy * p.y() + (cy - bottom_edge) * p.z() > 0.0) code |= kBottom;
+    return code;
+  }
+  Eigen::Vector2d project(const Eigen::Vector3d& p) const {
+    return Eigen::Vector2d(fx * p.x() / p.z() + cx, fy * p.y() / p.z() + cy);
+  }
+
+  double fx, fy, cx, cy;
+  double near_clip_m, far_clip_m;
+  double left_edge = -0.5, right_edge, top_edge = -0.5, bottom_edge;
+};
+
+// A triangle that crosses the near plane, clipped against it (Sutherland-Hodgman: 3 corners
+// give at most 4) and drawn. A crossing point is always interpolated from the inside corner
+// toward the outside one, so that the two triangles sharing a clipped edge get the same point.
+void draw_near_clipped(const TriangleRasterizer& rasterizer, const Frustum& frustum,
+                       const std::array<std::uint32_t, 3>& corners,
+                       const std::vector<Eigen::Vector3d>& camera_vertices,
+                       const std::vector<Eigen::Vector2d>& pixel_vertices,
+                       const InverseDepthPlane& plane, std::int32_t index) {
+  std::array<Eigen::Vector2d, 4> polygon;
+  int count = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d& current = camera_vertices[corners[i]];
+    const Eigen::Vector3d& next = camera_vertices[corners[(i + 1) % 3]];
+    const bool current_in = current.z() >= frustum.near_clip_m;
+    const bool next_in = next.z() >= frustum.near_clip_m;
+    if (current_in) polygon[count++] = pixel_vertices[corners[i]];
+    if (current_in != next_in) {
+      const Eigen::Vector3d& in = current_in ? current : next;
+      const Eigen::Vector3d& out = current_in ? next : current;
+      const double s = (frustum.near_clip_m - in.z()) / (out.z() - in.z());
+      polygon[count++] = frustum.project(in + s * (out - in));
+    }
+  }
+  for (int i = 1; i + 1 < count; ++i) {
+    rasterizer.draw(polygon[0], polygon[i], polygon[i + 1], plane, index);
+  }
+}
+
+// The Frustum bits a chunk's bounding box lies wholly outside of (all_outside) and partly
+// outside of (any_outside).
+std::pair<unsigned, unsigned> chunk_outside(const Chunk& chunk, const Frustum& frustum,
+                                            const Eigen::Matrix3d& camera_R_world,
+                                            const Eigen::Vector3d& camera_t_world) {
+  unsigned all_outside = ~0u;
+  unsigned any_outside = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d world_corner(
+        (corner & 1) ? chunk.world_max_m.x() : chunk.world_min_m.x(),
+        (corner & 2) ? chunk.world_max_m.y() : chunk.world_min_m.y(),
+        (corner & 4) ? chunk.world_max_m.z() : chunk.world_min_m.z());
+    const unsigned code = frustum.outside(camera_R_world * world_corner + camera_t_world);
+    all_outside &= code;
+    any_outside |= code;
+  }
+  return {all_outside, any_outside};
+}
+
 }  // namespace
 
 void rasterize(const Scene& scene, const Pinhole& camera, const Eigen::Isometry3d& world_T_camera,
@@ -122,24 +202,8 @@ void rasterize(const Scene& scene, const Pinhole& camera, const Eigen::Isometry3
   const Eigen::Matrix3d camera_R_world = world_T_camera.linear().transpose();
   const Eigen::Vector3d world_camera_position = world_T_camera.translation();
   const Eigen::Vector3d camera_t_world = -camera_R_world * world_camera_position;
-  const double fx = camera.fx_px, fy = camera.fy_px, cx = camera.cx_px, cy = camera.cy_px;
-  // Frustum side planes through the camera centre at the image's outer pixel edges, as
-  // half-spaces k . p >= 0 in the camera frame.
-  const double left_edge = -0.5, right_edge = camera.width_px - 0.5;
-  const double top_edge = -0.5, bottom_edge = camera.height_px - 0.5;
-  auto outside = [&](const Eigen::Vector3d& p) {
-    unsigned code = 0;
-    if (p.z() < near_clip_m) code |= kNear;
-    if (p.z() > far_clip_m) code |= kFar;
-    if (fx * p.x() + (cx - left_edge) * p.z() < 0.0) code |= kLeft;
-    if (fx * p.x() + (cx - right_edge) * p.z() > 0.0) code |= kRight;
-    if (fy * p.y() + (cy - top_edge) * p.z() < 0.0) code |= kTop;
-    if (fy * p.y() + (cy - bottom_edge) * p.z() > 0.0) code |= kBottom;
-    return code;
-  };
-  auto project = [&](const Eigen::Vector3d& p) {
-    return Eigen::Vector2d(fx * p.x() / p.z() + cx, fy * p.y() / p.z() + cy);
-  };
+  const Frustum frustum(camera, near_clip_m, far_clip_m);
+  const double fx = frustum.fx, fy = frustum.fy, cx = frustum.cx, cy = frustum.cy;
 
   // Per chunk scratch, indexed by vertex - chunk.first_vertex: small enough to stay in L1.
   std::vector<Eigen::Vector3d> camera_vertices(scene.max_chunk_vertices);
@@ -147,24 +211,17 @@ void rasterize(const Scene& scene, const Pinhole& camera, const Eigen::Isometry3
   const TriangleRasterizer rasterizer(target);
 
   for (const Chunk& chunk : scene.chunks) {
-    unsigned all_outside = ~0u;
-    unsigned any_outside = 0;
-    for (int corner = 0; corner < 8; ++corner) {
-      const Eigen::Vector3d world_corner(
-          (corner & 1) ? chunk.world_max_m.x() : chunk.world_min_m.x(),
-          (corner & 2) ? chunk.world_max_m.y() : chunk.world_min_m.y(),
-          (corner & 4) ? chunk.world_max_m.z() : chunk.world_min_m.z());
-      const unsigned code = outside(camera_R_world * world_corner + camera_t_world);
-      all_outside &= code;
-      any_outside |= code;
-    }
+    const auto [all_outside, any_outside] =
+        chunk_outside(chunk, frustum, camera_R_world, camera_t_world);
     if (all_outside != 0) continue;  // wholly outside one plane of the frustum
     const bool crosses_near = (any_outside & kNear) != 0;
 
     for (std::uint32_t v = 0; v < chunk.vertex_count; ++v) {
       camera_vertices[v] =
           camera_R_world * scene.world_vertices_m[chunk.first_vertex + v] + camera_t_world;
-      if (camera_vertices[v].z() >= near_clip_m) pixel_vertices[v] = project(camera_vertices[v]);
+      if (camera_vertices[v].z() >= near_clip_m) {
+        pixel_vertices[v] = frustum.project(camera_vertices[v]);
+      }
     }
 
     const std::uint32_t triangle_end = chunk.first_triangle + chunk.triangle_count;
@@ -193,28 +250,9 @@ void rasterize(const Scene& scene, const Pinhole& camera, const Eigen::Isometry3
       if (in_front) {
         rasterizer.draw(pixel_vertices[corners[0]], pixel_vertices[corners[1]],
                         pixel_vertices[corners[2]], plane, index);
-        continue;
-      }
-      // Clip against the near plane (Sutherland-Hodgman): 3 corners give at most 4. A crossing
-      // point is always interpolated from the inside corner toward the outside one, so that the
-      // two triangles sharing a clipped edge get the same point.
-      std::array<Eigen::Vector2d, 4> polygon;
-      int count = 0;
-      for (int i = 0; i < 3; ++i) {
-        const Eigen::Vector3d& current = camera_vertices[corners[i]];
-        const Eigen::Vector3d& next = camera_vertices[corners[(i + 1) % 3]];
-        const bool current_in = current.z() >= near_clip_m;
-        const bool next_in = next.z() >= near_clip_m;
-        if (current_in) polygon[count++] = pixel_vertices[corners[i]];
-        if (current_in != next_in) {
-          const Eigen::Vector3d& in = current_in ? current : next;
-          const Eigen::Vector3d& out = current_in ? next : current;
-          const double s = (near_clip_m - in.z()) / (out.z() - in.z());
-          polygon[count++] = project(in + s * (out - in));
-        }
-      }
-      for (int i = 1; i + 1 < count; ++i) {
-        rasterizer.draw(polygon[0], polygon[i], polygon[i + 1], plane, index);
+      } else {
+        draw_near_clipped(rasterizer, frustum, corners, camera_vertices, pixel_vertices, plane,
+                          index);
       }
     }
   }
