@@ -83,6 +83,37 @@ std::vector<const Light*> lights_reaching(const Scene& scene, std::size_t t,
   return out;
 }
 
+// Direct light on one triangle's texels (row-major from `texels`), through the shadow maps; the
+// sum of the texels' irradiance. The shadow test starts 1 cm off the surface so that a surface
+// never shadows itself.
+std::array<double, 3> add_direct_light(const Grid& g, const Eigen::Vector3f& normal,
+                                       const std::vector<const Light*>& reaching,
+                                       Eigen::Array4f* texels) {
+  std::array<double, 3> sum{0, 0, 0};
+  for (int j = 0; j < g.height; ++j) {
+    for (int i = 0; i < g.width; ++i) {
+      const Eigen::Vector3f p =
+          (g.origin + i * g.texel_u * g.axis_u + j * g.texel_v * g.axis_v).cast<float>();
+      const Eigen::Vector3f lifted = p + 0.01f * normal;
+      Eigen::Array4f& texel = texels[static_cast<std::size_t>(j) * g.width + i];
+      for (const Light* light_pointer : reaching) {
+        const Light& light = *light_pointer;
+        Eigen::Vector3f to_light;
+        const float scale = light.unshadowed_scale(p, normal, &to_light);
+        if (scale <= 0.0f) continue;
+        // Moved 2 cm toward the light as well: light grazing a wall meets the shadow map's
+        // coarse texels at a slant, where a normal offset alone leaves shadow acne.
+        const float lit =
+            light.shadow ? light.shadow->visibility(lifted + 0.02f * to_light) * scale : scale;
+        if (lit <= 0.0f) continue;
+        for (int k = 0; k < 3; ++k) texel[k] += lit * light.intensity_rgb[k];
+      }
+      for (int k = 0; k < 3; ++k) sum[k] += texel[k];
+    }
+  }
+  return sum;
+}
+
 }  // namespace
 
 void LightMap::soften() {
@@ -143,8 +174,7 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
   }
   texels_.assign(total, Eigen::Array4f::Zero());
 
-  // Direct light, through the shadow maps. The shadow test starts 1 cm off the surface so that a
-  // surface never shadows itself.
+  // Direct light (add_direct_light), and the sums the bounced light is made of.
   double area_sum = 0.0;
   std::array<double, 3> direct_sum{0, 0, 0}, bounced_sum{0, 0, 0};
   double albedo_luminance_sum = 0.0;
@@ -152,30 +182,8 @@ LightMap::LightMap(const Scene& scene, const std::vector<Light>& lights,
     if (inputs.skip[t]) continue;
     const Grid& g = grids[t];
     const Eigen::Vector3f normal = scene.world_planes[t].head<3>().cast<float>();
-    const std::vector<const Light*> reaching = lights_reaching(scene, t, lights);
-    std::array<double, 3> triangle_sum{0, 0, 0};
-    for (int j = 0; j < g.height; ++j) {
-      for (int i = 0; i < g.width; ++i) {
-        const Eigen::Vector3f p =
-            (g.origin + i * g.texel_u * g.axis_u + j * g.texel_v * g.axis_v).cast<float>();
-        const Eigen::Vector3f lifted = p + 0.01f * normal;
-        Eigen::Array4f& texel =
-            texels_[rects_[t].offset + static_cast<std::size_t>(j) * g.width + i];
-        for (const Light* light_pointer : reaching) {
-          const Light& light = *light_pointer;
-          Eigen::Vector3f to_light;
-          const float scale = light.unshadowed_scale(p, normal, &to_light);
-          if (scale <= 0.0f) continue;
-          // Moved 2 cm toward the light as well: light grazing a wall meets the shadow map's
-          // coarse texels at a slant, where a normal offset alone leaves shadow acne.
-          const float lit =
-              light.shadow ? light.shadow->visibility(lifted + 0.02f * to_light) * scale : scale;
-          if (lit <= 0.0f) continue;
-          for (int k = 0; k < 3; ++k) texel[k] += lit * light.intensity_rgb[k];
-        }
-        for (int k = 0; k < 3; ++k) triangle_sum[k] += texel[k];
-      }
-    }
+    const std::array<double, 3> triangle_sum =
+        add_direct_light(g, normal, lights_reaching(scene, t, lights), &texels_[rects_[t].offset]);
     const auto& tri = scene.triangles[t];
     const double area =
         0.5 * (scene.world_vertices_m[tri[1]] - scene.world_vertices_m[tri[0]])
