@@ -109,45 +109,70 @@ const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& op
   return nullptr;
 }
 
-}  // namespace
+// A door cut by the left border in the right image only (the right camera sees less beyond its
+// left border), or by the right border in the left image only, pairs with a whole outline in the
+// other image (side_cut_door.hpp).
+bool is_side_cut_by_one(BorderCut left, BorderCut right) {
+  return (left == BorderCut::kNone && right == BorderCut::kLeft) ||
+         (left == BorderCut::kRight && right == BorderCut::kNone);
+}
 
-std::vector<StereoPercept> match_and_triangulate(
-    const std::vector<Detection>& left, const std::vector<Detection>& right,
-    const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
-    const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
-    const Eigen::Vector3d& up_in_left_camera, std::vector<StereoPairTrace>* pair_trace,
-    const StereoImages& images) {
-  if (pair_trace) pair_trace->clear();
-  const bool single_view = options.min_single_view_correlation > 0.0;
-  if ((left.empty() || right.empty()) && !single_view) return {};
-  if (left.empty() && right.empty()) return {};
-  std::vector<Eigen::Vector2d> left_raw, right_raw;
-  left_raw.reserve(left.size());
-  right_raw.reserve(right.size());
-  for (const Detection& d : left) left_raw.push_back(d.reference_px);
-  for (const Detection& d : right) right_raw.push_back(d.reference_px);
-  const std::vector<detail::IdealPixel> left_ideal = detail::undistort(left_raw, left_intrinsics);
-  const std::vector<detail::IdealPixel> right_ideal =
-      detail::undistort(right_raw, right_intrinsics);
-  const detail::EpipolarGeometry epipolar(left_intrinsics, right_intrinsics, left_T_right);
-  const detail::Triangulator triangulator(left_intrinsics, right_intrinsics, left_T_right);
-  std::optional<detail::SideCorrelator> correlator, reverse_correlator;
-  if (options.min_side_correlation > 0.0 && images.left_grey && images.right_grey &&
-      up_in_left_camera.norm() > 0.0) {
-    correlator.emplace(*images.left_grey, *images.right_grey, left_intrinsics, right_intrinsics,
-                       left_T_right, up_in_left_camera);
-    reverse_correlator.emplace(*images.right_grey, *images.left_grey, right_intrinsics,
-                               left_intrinsics, left_T_right.inverse(),
-                               left_T_right.linear().transpose() * up_in_left_camera);
+// Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
+// class's typical length, and the border when it cuts both.
+struct CutBarViews {
+  const StereoMatchOptions::CutBar* bar = nullptr;
+  BorderCut both = BorderCut::kNone;
+};
+
+std::array<Eigen::Vector2d, 4> corner_array(const std::vector<detail::IdealPixel>& corners) {
+  std::array<Eigen::Vector2d, 4> out;
+  for (int k = 0; k < 4; ++k) out[k] = corners[k].ideal_px;
+  return out;
+}
+
+// The detections of both images as the stages below need them: undistorted reference points,
+// outline corners and bar ends, the rig's epipolar geometry and triangulation, and the side
+// correlators (both ways) when the options and images allow them.
+struct StereoViews {
+  StereoViews(const std::vector<Detection>& left_in, const std::vector<Detection>& right_in,
+              const head::CameraIntrinsics& left_intrinsics_in,
+              const head::CameraIntrinsics& right_intrinsics_in,
+              const Eigen::Isometry3d& left_T_right_in, const StereoMatchOptions& options_in,
+              const Eigen::Vector3d& up_in, const StereoImages& images)
+      : left(left_in),
+        right(right_in),
+        left_intrinsics(left_intrinsics_in),
+        right_intrinsics(right_intrinsics_in),
+        left_T_right(left_T_right_in),
+        options(options_in),
+        up(up_in),
+        epipolar(left_intrinsics, right_intrinsics, left_T_right),
+        triangulator(left_intrinsics, right_intrinsics, left_T_right),
+        log_max_area_ratio(std::log(std::max(options.max_area_ratio, 1.0 + 1e-9))) {
+    std::vector<Eigen::Vector2d> left_raw, right_raw;
+    for (const Detection& d : left) left_raw.push_back(d.reference_px);
+    for (const Detection& d : right) right_raw.push_back(d.reference_px);
+    left_ideal = detail::undistort(left_raw, left_intrinsics);
+    right_ideal = detail::undistort(right_raw, right_intrinsics);
+    if (options.min_side_correlation > 0.0 && images.left_grey && images.right_grey &&
+        up.norm() > 0.0) {
+      correlator.emplace(*images.left_grey, *images.right_grey, left_intrinsics, right_intrinsics,
+                         left_T_right, up);
+      reverse_correlator.emplace(*images.right_grey, *images.left_grey, right_intrinsics,
+                                 left_intrinsics, left_T_right.inverse(),
+                                 left_T_right.linear().transpose() * up);
+    }
+    for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
+    for (const Detection& d : right) {
+      right_corners.push_back(undistorted_corners(d, right_intrinsics));
+    }
+    left_bar_ends = bar_ends(left, left_intrinsics);
+    right_bar_ends = bar_ends(right, right_intrinsics);
   }
-  std::vector<std::vector<detail::IdealPixel>> left_corners, right_corners;
-  for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
-  for (const Detection& d : right) {
-    right_corners.push_back(undistorted_corners(d, right_intrinsics));
-  }
+
   // Undistorted ends of the bar-type detections (empty for the others).
-  const auto bar_ends = [&](const std::vector<Detection>& detections,
-                            const head::CameraIntrinsics& intrinsics) {
+  std::vector<std::vector<detail::IdealPixel>> bar_ends(
+      const std::vector<Detection>& detections, const head::CameraIntrinsics& intrinsics) const {
     std::vector<std::vector<detail::IdealPixel>> out(detections.size());
     for (std::size_t i = 0; i < detections.size(); ++i) {
       const Detection& d = detections[i];
@@ -156,353 +181,427 @@ std::vector<StereoPercept> match_and_triangulate(
       }
     }
     return out;
-  };
-  const std::vector<std::vector<detail::IdealPixel>> left_bar_ends =
-      bar_ends(left, left_intrinsics);
-  const std::vector<std::vector<detail::IdealPixel>> right_bar_ends =
-      bar_ends(right, right_intrinsics);
-  const auto corner_array = [](const std::vector<detail::IdealPixel>& corners) {
-    std::array<Eigen::Vector2d, 4> out;
-    for (int k = 0; k < 4; ++k) out[k] = corners[k].ideal_px;
-    return out;
-  };
+  }
 
   // The worse of the two outlines' verdicts on the handles they hold (bars_on_outline.hpp).
-  const auto judge_bars = [&](const Detection& dl, const Detection& dr, int max_bars_inside) {
+  detail::BarVerdict judge_bars(const Detection& dl, const Detection& dr,
+                                int max_bars_inside) const {
     const detail::BarVerdict on_left =
         detail::judge_bars_on_outline(left, dl, max_bars_inside, options);
     return on_left.gate != StereoGate::kNone
                ? on_left
                : detail::judge_bars_on_outline(right, dr, max_bars_inside, options);
-  };
-  const double log_max_area_ratio = std::log(std::max(options.max_area_ratio, 1.0 + 1e-9));
-  // Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
-  // class's typical length, and the border when it cuts both.
-  struct CutBarViews {
-    const StereoMatchOptions::CutBar* bar = nullptr;
-    BorderCut both = BorderCut::kNone;
-  };
-  // Judges one pair against every gate, in order; a pair that passes all of them is a candidate
-  // with its triangulation. Triangulating here rather than after the assignment means that a
-  // pair which cannot be triangulated is never assigned, and its detections stay free for other
-  // pairs.
-  const auto judge = [&](int l, int r, StereoPairTrace& trace,
-                         const CutBarViews* cut_bar = nullptr) -> std::optional<detail::Candidate> {
-    const Detection& dl = left[l];
-    const Detection& dr = right[r];
+  }
+  detail::DoorOutlines outlines(int l, int r) const {
+    return {corner_array(left_corners[l]), corner_array(right_corners[r])};
+  }
+  detail::BorderCutView left_view(int l) const {
+    return {left[l], corner_array(left_corners[l]), left_ideal[l]};
+  }
+  detail::BorderCutView right_view(int r) const {
+    return {right[r], corner_array(right_corners[r]), right_ideal[r]};
+  }
+  const detail::SideCorrelator* forward() const { return correlator ? &*correlator : nullptr; }
+  const detail::SideCorrelator* reverse() const {
+    return reverse_correlator ? &*reverse_correlator : nullptr;
+  }
+
+  const std::vector<Detection>& left;
+  const std::vector<Detection>& right;
+  const head::CameraIntrinsics& left_intrinsics;
+  const head::CameraIntrinsics& right_intrinsics;
+  const Eigen::Isometry3d& left_T_right;
+  const StereoMatchOptions& options;
+  const Eigen::Vector3d& up;  // in the left camera frame; zero when unknown
+  const detail::EpipolarGeometry epipolar;
+  const detail::Triangulator triangulator;
+  const double log_max_area_ratio;
+  std::vector<detail::IdealPixel> left_ideal, right_ideal;
+  std::optional<detail::SideCorrelator> correlator, reverse_correlator;
+  std::vector<std::vector<detail::IdealPixel>> left_corners, right_corners;
+  std::vector<std::vector<detail::IdealPixel>> left_bar_ends, right_bar_ends;
+};
+
+// Judges one pair of whole views against every gate, in order (paper §2.1: position on the
+// epipolar line, size, orientation, then the triangulated point's depth and extent); a pair that
+// passes all of them is a candidate with its triangulation. Triangulating here rather than after
+// the assignment means that a pair which cannot be triangulated is never assigned, and its
+// detections stay free for other pairs.
+class PairJudge {
+ public:
+  PairJudge(const StereoViews& views, int l, int r, StereoPairTrace& trace,
+            const CutBarViews* cut_bar)
+      : v_(views),
+        o_(views.options),
+        l_(l),
+        r_(r),
+        dl_(views.left[l]),
+        dr_(views.right[r]),
+        trace_(trace),
+        cut_bar_(cut_bar),
+        rectangles_(!views.left_corners[l].empty() && !views.right_corners[r].empty()) {}
+
+  std::optional<detail::Candidate> judge() {
     // Hysteresis: a blob the class model rates just beyond its threshold in one image counts
     // when the other image shows it clearly; two weak views are not evidence enough.
-    if (dl.needs_partner && dr.needs_partner)
-      return detail::refuse(trace, StereoGate::kWeakPair, 0.0, 0.0);
-    // Position: the right reference point on (near) the left one's epipolar line. For two
-    // rectangle outlines, their vertical sides nest along the epipolar direction
-    // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height.
-    const bool rectangles = !left_corners[l].empty() && !right_corners[r].empty();
+    if (dl_.needs_partner && dr_.needs_partner) {
+      return detail::refuse(trace_, StereoGate::kWeakPair, 0.0, 0.0);
+    }
+    if (!gate_position() || !gate_appearance() || !place_point() || !gate_size()) {
+      return std::nullopt;
+    }
+    const double epipolar_term = max_epipolar_px_ > 0.0 ? epipolar_px_ / max_epipolar_px_ : 0.0;
+    detail::Candidate c;
+    c.left = l_;
+    c.right = r_;
+    c.cost = epipolar_term * epipolar_term + area_term_ * area_term_ +
+             orientation_term_ * orientation_term_;
+    c.rectangle = rectangle_;
+    c.triangulation = *triangulation_;
+    trace_.cost = c.cost;
+    return c;
+  }
+
+ private:
+  // Position: the right reference point on (near) the left one's epipolar line. For two
+  // rectangle outlines, their vertical sides nest along the epipolar direction
+  // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height; two views of
+  // a bar across the epipolar lines, the containment of the shorter segment in the longer. Then
+  // the side gate of two door outlines (door_pair.hpp).
+  bool gate_position() {
     // A stack of drawer fronts merged into one door-shaped blob carries a handle per front, one
     // above another; judged on each image's outline, also when the other image's blob has none.
-    if (const detail::BarVerdict bars = judge_bars(
-            dl, dr, options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
+    if (const detail::BarVerdict bars =
+            v_.judge_bars(dl_, dr_, o_.pair_max_bars_inside > 0 ? o_.pair_max_bars_inside : -1);
         bars.gate != StereoGate::kNone) {
-      return detail::refuse(trace, bars.gate, bars.value, bars.limit);
+      detail::refuse(trace_, bars.gate, bars.value, bars.limit);
+      return false;
     }
-    // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in
-    // 3D, and the position gate as the containment of the shorter segment in the longer.
-    std::optional<detail::Triangulator::BarSpan> bar;
-    if (!left_bar_ends[l].empty() && !right_bar_ends[r].empty() &&
-        elongation(dl) >= options.min_elongation_for_orientation &&
-        elongation(dr) >= options.min_elongation_for_orientation) {
-      const Eigen::Vector2d a = right_bar_ends[r][0].ideal_px, b = right_bar_ends[r][1].ideal_px;
-      const Eigen::Vector3d line = epipolar.right_line(left_ideal[l].ideal_px);  // a^2+b^2 = 1
-      const double length = (b - a).norm();
-      // |cos| of the angle between the bar and the line's normal: sin of the angle to the line.
-      if (length > 0.0 && std::abs((b - a).dot(line.head<2>())) >= std::sqrt(0.5) * length) {
-        bar = triangulator.bar_span({left_bar_ends[l][0].ideal_px, left_bar_ends[l][1].ideal_px},
-                                    {a, b}, up_in_left_camera);
-        if (!bar) return detail::refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
-      }
-    }
+    if (!span_bar()) return false;
     // A cut view's reference point is the middle of what it shows, another point of the bar in
     // each image: a cut bar is placed only from its span, across the epipolar lines.
-    if (cut_bar && !bar) return detail::refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
-    const double mean_f_px = 0.5 * (left_intrinsics.fx_px + right_intrinsics.fx_px);
-    double epipolar_px =
-        bar ? bar->containment_excess_px
-            : epipolar.distance_px(left_ideal[l].ideal_px, right_ideal[r].ideal_px);
-    if (rectangles) {
-      epipolar_px =
-          detail::rectangle_containment_excess_px(left_corners[l], right_corners[r], epipolar);
+    if (cut_bar_ && !bar_) {
+      detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
+      return false;
     }
-    const double max_epipolar_px =
-        rectangles ? std::max(options.max_epipolar_distance_px,
-                              kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px))
-                   : options.max_epipolar_distance_px;
-    // Two door outlines that the position or the side gate refuses may show a door with one
-    // corner hidden by an occluder in both images (occluded_corner_door.hpp).
-    std::optional<detail::OccludedCornerDoor> occluded;
-    const auto place_occluded_corner = [&]() {
-      const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
-      if (!rectangles || !door || !door->occluded_corner || !(up_in_left_camera.norm() > 0.0) ||
-          judge_bars(dl, dr, options.single_view_max_bars_inside).gate != StereoGate::kNone) {
+    epipolar_px_ =
+        bar_ ? bar_->containment_excess_px
+             : v_.epipolar.distance_px(v_.left_ideal[l_].ideal_px, v_.right_ideal[r_].ideal_px);
+    if (rectangles_) {
+      epipolar_px_ = detail::rectangle_containment_excess_px(v_.left_corners[l_],
+                                                             v_.right_corners[r_], v_.epipolar);
+    }
+    max_epipolar_px_ =
+        rectangles_ ? std::max(o_.max_epipolar_distance_px,
+                               kRectangleEpipolarFraction * 0.5 * (dl_.height_px + dr_.height_px))
+                    : o_.max_epipolar_distance_px;
+    if (!(epipolar_px_ <= max_epipolar_px_)) {
+      detail::refuse(trace_, StereoGate::kEpipolar, epipolar_px_, max_epipolar_px_);
+      if (!place_occluded_corner()) return false;
+    }
+    if (rectangles_ && !occluded_) {
+      sides_ = detail::judge_door_sides(v_.outlines(l_, r_), v_.triangulator, v_.up,
+                                        v_.correlator.has_value(), o_, trace_);
+      if (!sides_ && !place_occluded_corner()) return false;
+    }
+    return true;
+  }
+
+  // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in 3D.
+  bool span_bar() {
+    if (v_.left_bar_ends[l_].empty() || v_.right_bar_ends[r_].empty() ||
+        elongation(dl_) < o_.min_elongation_for_orientation ||
+        elongation(dr_) < o_.min_elongation_for_orientation) {
+      return true;
+    }
+    const Eigen::Vector2d a = v_.right_bar_ends[r_][0].ideal_px;
+    const Eigen::Vector2d b = v_.right_bar_ends[r_][1].ideal_px;
+    const Eigen::Vector3d line = v_.epipolar.right_line(v_.left_ideal[l_].ideal_px);  // a^2+b^2=1
+    const double length = (b - a).norm();
+    // |cos| of the angle between the bar and the line's normal: sin of the angle to the line.
+    if (!(length > 0.0 && std::abs((b - a).dot(line.head<2>())) >= std::sqrt(0.5) * length)) {
+      return true;
+    }
+    bar_ = v_.triangulator.bar_span(
+        {v_.left_bar_ends[l_][0].ideal_px, v_.left_bar_ends[l_][1].ideal_px}, {a, b}, v_.up);
+    if (!bar_) {
+      detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
+      return false;
+    }
+    return true;
+  }
+
+  // Two door outlines that the position or the side gate refuses may show a door with one corner
+  // hidden by an occluder in both images (occluded_corner_door.hpp).
+  bool place_occluded_corner() {
+    const StereoMatchOptions::BorderCutDoor* door = border_cut_door(o_, dl_.type);
+    if (!rectangles_ || !door || !door->occluded_corner || !(v_.up.norm() > 0.0) ||
+        v_.judge_bars(dl_, dr_, o_.single_view_max_bars_inside).gate != StereoGate::kNone) {
+      return false;
+    }
+    occluded_ = detail::place_occluded_corner_door(
+        v_.outlines(l_, r_), v_.triangulator, v_.up.normalized(), o_.max_side_tilt_rad,
+        o_.max_epipolar_distance_px, *door, height_range(o_, dl_.type));
+    if (!occluded_) return false;
+    trace_.refused_by = StereoGate::kNone;
+    trace_.value = trace_.limit = 0.0;
+    trace_.occluded_corner = true;
+    epipolar_px_ = occluded_->residual_px;
+    return true;
+  }
+
+  // Size: both cameras are about equally far from the object, so the areas agree. Two views of
+  // a bar: their mean widths (one may be a fragment of the other), each with a pixel of
+  // quantization added: a bar 2-3 px wide that loses one column of pixels in one image would
+  // otherwise differ by a ratio of 1.5. Orientation: only defined for elongated blobs (a
+  // near-round blob's axis is noise).
+  bool gate_appearance() {
+    if (dl_.area_px > 0.0 && dr_.area_px > 0.0) {
+      const double log_ratio =
+          bar_ ? std::abs(std::log((dl_.area_px / dl_.major_extent_px + kBarWidthQuantizationPx) /
+                                   (dr_.area_px / dr_.major_extent_px + kBarWidthQuantizationPx)))
+               : std::abs(std::log(dl_.area_px / dr_.area_px));
+      if (log_ratio > v_.log_max_area_ratio) {
+        detail::refuse(trace_, StereoGate::kAreaRatio, std::exp(log_ratio), o_.max_area_ratio);
         return false;
       }
-      occluded = detail::place_occluded_corner_door(
-          {corner_array(left_corners[l]), corner_array(right_corners[r])}, triangulator,
-          up_in_left_camera.normalized(), options.max_side_tilt_rad,
-          options.max_epipolar_distance_px, *door, height_range(options, dl.type));
-      if (!occluded) return false;
-      trace.refused_by = StereoGate::kNone;
-      trace.value = trace.limit = 0.0;
-      trace.occluded_corner = true;
-      epipolar_px = occluded->residual_px;
-      return true;
-    };
-    if (!(epipolar_px <= max_epipolar_px)) {
-      detail::refuse(trace, StereoGate::kEpipolar, epipolar_px, max_epipolar_px);
-      if (!place_occluded_corner()) return std::nullopt;
+      area_term_ = log_ratio / v_.log_max_area_ratio;
     }
-    // The side gate of two door outlines (door_pair.hpp).
-    std::optional<detail::DoorSides> sides;
-    if (rectangles && !occluded) {
-      sides = detail::judge_door_sides(
-          {corner_array(left_corners[l]), corner_array(right_corners[r])}, triangulator,
-          up_in_left_camera, correlator.has_value(), options, trace);
-      if (!sides && !place_occluded_corner()) return std::nullopt;
-    }
-    // Size: both cameras are about equally far from the object, so the areas agree.
-    // Two views of a bar: their mean widths (one may be a fragment of the other), each with a
-    // pixel of quantization added: a bar 2-3 px wide that loses one column of pixels in one image
-    // would otherwise differ by a ratio of 1.5.
-    double area_term = 0.0;
-    if (dl.area_px > 0.0 && dr.area_px > 0.0) {
-      const double log_ratio =
-          bar ? std::abs(std::log((dl.area_px / dl.major_extent_px + kBarWidthQuantizationPx) /
-                                  (dr.area_px / dr.major_extent_px + kBarWidthQuantizationPx)))
-              : std::abs(std::log(dl.area_px / dr.area_px));
-      if (log_ratio > log_max_area_ratio) {
-        return detail::refuse(trace, StereoGate::kAreaRatio, std::exp(log_ratio),
-                              options.max_area_ratio);
-      }
-      area_term = log_ratio / log_max_area_ratio;
-    }
-    // Orientation: only defined for elongated blobs (a near-round blob's axis is noise).
-    double orientation_term = 0.0;
-    if (elongation(dl) >= options.min_elongation_for_orientation &&
-        elongation(dr) >= options.min_elongation_for_orientation) {
+    if (elongation(dl_) >= o_.min_elongation_for_orientation &&
+        elongation(dr_) >= o_.min_elongation_for_orientation) {
       const double difference =
-          axis_difference_rad(dl.major_axis_angle_rad, dr.major_axis_angle_rad);
-      if (difference > options.max_orientation_difference_rad) {
-        return detail::refuse(trace, StereoGate::kOrientation, difference,
-                              options.max_orientation_difference_rad);
+          axis_difference_rad(dl_.major_axis_angle_rad, dr_.major_axis_angle_rad);
+      if (difference > o_.max_orientation_difference_rad) {
+        detail::refuse(trace_, StereoGate::kOrientation, difference,
+                       o_.max_orientation_difference_rad);
+        return false;
       }
-      orientation_term = difference / options.max_orientation_difference_rad;
+      orientation_term_ = difference / o_.max_orientation_difference_rad;
     }
-    // The 3D point: for two rectangle outlines the centre from their vertical sides
-    // (Triangulator::rectangle_centre), with the covariance the pixel noise gives the centre
-    // triangulated from the reference points; otherwise from the reference points.
-    const double offset = reference_depth_offset(options, dl.type);
-    std::optional<detail::Triangulation> triangulation =
-        triangulator.triangulate(left_ideal[l], right_ideal[r], options.pixel_sigma_px, offset);
-    if (!triangulation) return detail::refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
+    return true;
+  }
+
+  // The 3D point: triangulated from the reference points, with the covariance the pixel noise
+  // gives it; a bar's from its span (the middle), a bar cut by one border in both images from its
+  // own end (cut_bar.hpp); two door outlines' from their vertical sides (door_pair.hpp,
+  // occluded_corner_door.hpp), with the reference points' covariance.
+  bool place_point() {
+    offset_m_ = reference_depth_offset(o_, dl_.type);
+    triangulation_ = v_.triangulator.triangulate(v_.left_ideal[l_], v_.right_ideal[r_],
+                                                 o_.pixel_sigma_px, offset_m_);
+    if (!triangulation_) {
+      detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
+      return false;
+    }
     // The gates below measure the visible surface, before the reference point's offset.
-    Eigen::Vector3d point = triangulation->left_camera_position_m -
-                            offset * triangulation->left_camera_position_m.normalized();
-    if (bar) {
-      point = bar->centre_m;
-      triangulation->left_camera_position_m = point + offset * point.normalized();
-    }
-    // Cut by one border in both images: the centre from the bar's own end (cut_bar.hpp).
-    if (cut_bar && cut_bar->both != BorderCut::kNone) {
+    point_ = triangulation_->left_camera_position_m -
+             offset_m_ * triangulation_->left_camera_position_m.normalized();
+    if (bar_) set_point(bar_->centre_m);
+    if (cut_bar_ && cut_bar_->both != BorderCut::kNone) {
       const std::optional<detail::CutBarCentre> placed =
-          detail::place_cut_bar(*bar, cut_bar->both, triangulator, *cut_bar->bar, trace);
-      if (!placed) return std::nullopt;
-      point = placed->centre_m;
-      triangulation->left_camera_position_m = point + offset * point.normalized();
-      triangulation->left_camera_covariance_m2 += placed->length_covariance_m2;
+          detail::place_cut_bar(*bar_, cut_bar_->both, v_.triangulator, *cut_bar_->bar, trace_);
+      if (!placed) return false;
+      set_point(placed->centre_m);
+      triangulation_->left_camera_covariance_m2 += placed->length_covariance_m2;
     }
-    // Two door outlines: the centre from their vertical sides (door_pair.hpp).
-    bool rectangle = false;
-    if (occluded) {
-      point = occluded->centre_m;
-      triangulation->left_camera_position_m = point + offset * point.normalized();
-      rectangle = true;
-    } else if (rectangles) {
+    if (occluded_) {
+      set_point(occluded_->centre_m);
+      rectangle_ = true;
+    } else if (rectangles_) {
       const detail::DoorCentre door = detail::door_centre(
-          {corner_array(left_corners[l]), corner_array(right_corners[r])}, *sides, triangulator,
-          correlator ? &*correlator : nullptr, reverse_correlator ? &*reverse_correlator : nullptr,
-          left_T_right, up_in_left_camera, options, class_max_width_m(options, dl.type), trace);
-      if (door.refused) return std::nullopt;
+          v_.outlines(l_, r_), *sides_, v_.triangulator, v_.forward(), v_.reverse(),
+          v_.left_T_right, v_.up, o_, class_max_width_m(o_, dl_.type), trace_);
+      if (door.refused) return false;
       if (door.centre) {
-        point = *door.centre;
-        triangulation->left_camera_position_m = point + offset * point.normalized();
-        rectangle = true;
+        set_point(*door.centre);
+        rectangle_ = true;
       }
     }
-    // Disparity range, as the depth of the triangulated point along the left optical axis
-    // (verging eyes make disparity alone depend on where the point is in the image).
-    if (point.z() < options.min_depth_m) {
-      return detail::refuse(trace, StereoGate::kDepth, point.z(), options.min_depth_m);
-    }
-    if (point.z() > options.max_depth_m) {
-      return detail::refuse(trace, StereoGate::kDepth, point.z(), options.max_depth_m);
-    }
-    // Size at that depth: a fronto-parallel length L spans f L / z pixels.
+    return true;
+  }
+  void set_point(const Eigen::Vector3d& visible_m) {
+    point_ = visible_m;
+    triangulation_->left_camera_position_m = point_ + offset_m_ * point_.normalized();
+  }
+
+  // Disparity range, as the depth of the triangulated point along the left optical axis (verging
+  // eyes make disparity alone depend on where the point is in the image); the class's extent
+  // and height at that depth (a fronto-parallel length L spans f L / z pixels).
+  bool gate_size() {
+    const auto refuse = [&](StereoGate gate, double value, double limit) {
+      detail::refuse(trace_, gate, value, limit);
+      return false;
+    };
+    if (point_.z() < o_.min_depth_m) return refuse(StereoGate::kDepth, point_.z(), o_.min_depth_m);
+    if (point_.z() > o_.max_depth_m) return refuse(StereoGate::kDepth, point_.z(), o_.max_depth_m);
     // (A cut bar's visible length was judged against its class's typical one.)
     const auto* range =
-        cut_bar && cut_bar->both != BorderCut::kNone ? nullptr : extent_range(options, dl.type);
-    if (range && (dl.major_extent_px > 0.0 || dr.major_extent_px > 0.0)) {
+        cut_bar_ && cut_bar_->both != BorderCut::kNone ? nullptr : extent_range(o_, dl_.type);
+    if (range && (dl_.major_extent_px > 0.0 || dr_.major_extent_px > 0.0)) {
+      const double mean_f_px = 0.5 * (v_.left_intrinsics.fx_px + v_.right_intrinsics.fx_px);
       const double length_m =
-          bar ? bar->length_m
-              : 0.5 * (dl.major_extent_px + dr.major_extent_px) * point.z() / mean_f_px;
-      if (length_m < range->min_m)
-        return detail::refuse(trace, StereoGate::kExtent, length_m, range->min_m);
-      if (length_m > range->max_m)
-        return detail::refuse(trace, StereoGate::kExtent, length_m, range->max_m);
+          bar_ ? bar_->length_m
+               : 0.5 * (dl_.major_extent_px + dr_.major_extent_px) * point_.z() / mean_f_px;
+      if (length_m < range->min_m) return refuse(StereoGate::kExtent, length_m, range->min_m);
+      if (length_m > range->max_m) return refuse(StereoGate::kExtent, length_m, range->max_m);
     }
-    // Height at that depth: the image length of the vertical edges in metres.
-    const auto* height = height_range(options, dl.type);
-    if (height && dl.height_px > 0.0 && dr.height_px > 0.0) {
-      const double height_m = 0.5 * (dl.height_px + dr.height_px) * point.z() /
-                              (0.5 * (left_intrinsics.fy_px + right_intrinsics.fy_px));
-      if (height_m < height->min_m)
-        return detail::refuse(trace, StereoGate::kHeight, height_m, height->min_m);
-      if (height_m > height->max_m)
-        return detail::refuse(trace, StereoGate::kHeight, height_m, height->max_m);
+    const auto* height = height_range(o_, dl_.type);
+    if (height && dl_.height_px > 0.0 && dr_.height_px > 0.0) {
+      const double height_m = 0.5 * (dl_.height_px + dr_.height_px) * point_.z() /
+                              (0.5 * (v_.left_intrinsics.fy_px + v_.right_intrinsics.fy_px));
+      if (height_m < height->min_m) return refuse(StereoGate::kHeight, height_m, height->min_m);
+      if (height_m > height->max_m) return refuse(StereoGate::kHeight, height_m, height->max_m);
     }
-    const double epipolar_term = max_epipolar_px > 0.0 ? epipolar_px / max_epipolar_px : 0.0;
-    detail::Candidate c;
-    c.left = l;
-    c.right = r;
-    c.cost =
-        epipolar_term * epipolar_term + area_term * area_term + orientation_term * orientation_term;
-    c.rectangle = rectangle;
-    c.triangulation = *triangulation;
-    trace.cost = c.cost;
-    return c;
-  };
+    return true;
+  }
 
+  const StereoViews& v_;
+  const StereoMatchOptions& o_;
+  const int l_, r_;
+  const Detection& dl_;
+  const Detection& dr_;
+  StereoPairTrace& trace_;
+  const CutBarViews* cut_bar_;
+  const bool rectangles_;
+  std::optional<detail::Triangulator::BarSpan> bar_;
+  std::optional<detail::OccludedCornerDoor> occluded_;
+  std::optional<detail::DoorSides> sides_;
+  std::optional<detail::Triangulation> triangulation_;
+  Eigen::Vector3d point_ = Eigen::Vector3d::Zero();  // the visible surface, left camera frame
+  double offset_m_ = 0.0;
+  double epipolar_px_ = 0.0, max_epipolar_px_ = 0.0;
+  double area_term_ = 0.0, orientation_term_ = 0.0;
+  bool rectangle_ = false;
+};
+
+// A pair of door views one or both of which the image border cuts, or two whole views whose
+// judgement suggests an occluder hides the door's lower part: the judge for its case
+// (border_cut.hpp, side_cut_door.hpp, corner_cut_door.hpp, occluder_cut_door.hpp), or none.
+// `trace` ends as the judge that decided left it.
+std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, int r,
+                                                 StereoPairTrace& trace) {
+  const StereoMatchOptions& options = v.options;
+  const Detection& dl = v.left[l];
+  const Detection& dr = v.right[r];
+  const bool cut = dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone;
+  const double offset_m = reference_depth_offset(options, dl.type);
+  if (!cut) {
+    std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, nullptr).judge();
+    // Too short for a door, an edge sloping or one side shorter than the other: perhaps an
+    // occluder hides the door's lower part in both images (occluder_cut_door.hpp). The first
+    // refusal stays in the trace unless the pair is so placed.
+    const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
+    if (!c && door && door->occluder_cut && detail::may_be_occluder_cut(trace) &&
+        v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0) {
+      StereoPairTrace retry;
+      retry.left_detection = l;
+      retry.right_detection = r;
+      c = detail::judge_occluder_cut_pair(l, r, v.left_view(l), v.right_view(r), v.epipolar,
+                                          v.triangulator, v.forward(), v.up.normalized(), options,
+                                          *door, offset_m, retry);
+      if (c) trace = retry;
+    }
+    return c;
+  }
+  const StereoMatchOptions::BorderCutDoor* cut_height = border_cut_door(options, dl.type);
+  if (const detail::BarVerdict bars = v.judge_bars(
+          dl, dr, options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
+      bars.gate != StereoGate::kNone) {
+    // Several handles inside, or one above another: drawer fronts or doors merged into one
+    // blob. A cut pair is two views, as a whole pair is: a double door's second handle, a few
+    // centimetres past the reveal, may lie inside the outline, and the bound is the pairs' (the
+    // single views' 1 lost 16 true door percepts of the tuning set's cut doors and kept no false
+    // one out).
+    trace.refused_by = bars.gate;
+    trace.value = bars.value;
+    trace.limit = bars.limit;
+    return std::nullopt;
+  }
+  if (detail::is_corner_cut_pair(dl.border_cut, dr.border_cut)) {
+    return detail::judge_corner_cut_pair(l, r, v.left_view(l), v.right_view(r), v.epipolar,
+                                         v.triangulator, v.up.normalized(), options, *cut_height,
+                                         offset_m, trace);
+  }
+  const bool side_cut = is_side_cut_by_one(dl.border_cut, dr.border_cut) ||
+                        dl.border_cut == BorderCut::kLeft || dl.border_cut == BorderCut::kRight;
+  if (side_cut) {
+    return detail::judge_side_cut_pair(
+        l, r, v.left_view(l), v.right_view(r), v.epipolar, v.triangulator, v.forward(),
+        v.up.normalized(), options, *cut_height, height_range(options, dl.type), offset_m, trace);
+  }
+  return detail::judge_border_cut_pair(l, r, v.left_view(l), v.right_view(r), v.epipolar,
+                                       v.triangulator, v.forward(), v.up.normalized(), options,
+                                       *cut_height, offset_m, trace);
+}
+
+// Whether a pair of door views is judged at all: whole views always; cut ones when their class
+// has a typical height (border_cut), both have four corners, the up direction is known, and
+// the cuts are along the same border (not at the same corner), or one of the mixed cases of
+// side_cut_door.hpp and corner_cut_door.hpp.
+bool door_pair_is_judged(const StereoViews& v, int l, int r) {
+  const BorderCut cl = v.left[l].border_cut, cr = v.right[r].border_cut;
+  if (cl == BorderCut::kNone && cr == BorderCut::kNone) return true;
+  const BorderCut same = cl == cr ? cl : BorderCut::kNone;
+  const bool judged = same == BorderCut::kTop || same == BorderCut::kBottom ||
+                      same == BorderCut::kLeft || same == BorderCut::kRight ||
+                      is_side_cut_by_one(cl, cr) || detail::is_corner_cut_pair(cl, cr);
+  return judged && border_cut_door(v.options, v.left[l].type) != nullptr &&
+         v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
+}
+
+// The cross match (paper §2.1): every pair of same-type detections judged; the candidates, and
+// every judged pair's trace when `traces`.
+std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
+                                               std::vector<StereoPairTrace>* traces) {
   std::vector<detail::Candidate> candidates;
-  std::vector<StereoPairTrace> traces;
-  for (int l = 0; l < static_cast<int>(left.size()); ++l) {
-    for (int r = 0; r < static_cast<int>(right.size()); ++r) {
-      if (left[l].type != right[r].type) continue;
-      // A door cut by the image border pairs only with one cut along the same border, judged
-      // by border_cut.hpp's gates when its class has a typical height.
-      const bool cut =
-          left[l].border_cut != BorderCut::kNone || right[r].border_cut != BorderCut::kNone;
-      // A bar cut at one end by the image border (cut_bar.hpp): with a whole view in the other
-      // image, judged as any two views of a bar (their union is the whole bar); cut by the same
-      // border in both, placed from its own end; by different borders, not paired.
-      if (cut && detail::is_bar_type(options, left[l].type)) {
-        const bool both =
-            left[l].border_cut != BorderCut::kNone && right[r].border_cut != BorderCut::kNone;
-        const CutBarViews cut_bar{cut_bar_of(options, left[l].type),
-                                  both ? left[l].border_cut : BorderCut::kNone};
-        if (!cut_bar.bar || (both && left[l].border_cut != right[r].border_cut)) continue;
-        StereoPairTrace trace;
-        trace.left_detection = l;
-        trace.right_detection = r;
-        std::optional<detail::Candidate> c = judge(l, r, trace, &cut_bar);
-        if (c) candidates.push_back(std::move(*c));
-        if (pair_trace) traces.push_back(trace);
-        continue;
-      }
-      const StereoMatchOptions::BorderCutDoor* cut_height =
-          cut ? border_cut_door(options, left[l].type) : nullptr;
-      // A door cut by the left border in the right image only (the right camera sees less
-      // beyond its left border), or by the right border in the left image only, pairs with a
-      // whole outline in the other image (side_cut_door.hpp).
-      const bool side_cut_by_one =
-          (left[l].border_cut == BorderCut::kNone && right[r].border_cut == BorderCut::kLeft) ||
-          (left[l].border_cut == BorderCut::kRight && right[r].border_cut == BorderCut::kNone);
-      const bool side_cut = side_cut_by_one || left[l].border_cut == BorderCut::kLeft ||
-                            left[l].border_cut == BorderCut::kRight;
-      // A door cut at an image corner in the image that sees less beyond that side pairs with
-      // one cut by the top or bottom border alone in the other (corner_cut_door.hpp).
-      const bool corner_cut = detail::is_corner_cut_pair(left[l].border_cut, right[r].border_cut);
-      // Cut along the same border in both images (at the same image corner: no judge takes it),
-      // or one of the two mixed cases above.
-      const BorderCut same =
-          left[l].border_cut == right[r].border_cut ? left[l].border_cut : BorderCut::kNone;
-      const bool judged = same == BorderCut::kTop || same == BorderCut::kBottom ||
-                          same == BorderCut::kLeft || same == BorderCut::kRight ||
-                          side_cut_by_one || corner_cut;
-      if (cut && (!judged || !cut_height || left_corners[l].size() != 4 ||
-                  right_corners[r].size() != 4 || !(up_in_left_camera.norm() > 0.0))) {
-        continue;
-      }
+  for (int l = 0; l < static_cast<int>(v.left.size()); ++l) {
+    for (int r = 0; r < static_cast<int>(v.right.size()); ++r) {
+      const Detection& dl = v.left[l];
+      const Detection& dr = v.right[r];
+      if (dl.type != dr.type) continue;
+      const bool cut = dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone;
       StereoPairTrace trace;
       trace.left_detection = l;
       trace.right_detection = r;
       std::optional<detail::Candidate> c;
-      if (!cut) {
-        c = judge(l, r, trace);
-        // Too short for a door, an edge sloping or one side shorter than the other: perhaps an
-        // occluder hides the door's lower part in both images (occluder_cut_door.hpp). The first
-        // refusal stays in the trace unless the pair is so placed.
-        const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, left[l].type);
-        if (!c && door && door->occluder_cut && detail::may_be_occluder_cut(trace) &&
-            left_corners[l].size() == 4 && right_corners[r].size() == 4 &&
-            up_in_left_camera.norm() > 0.0) {
-          StereoPairTrace retry;
-          retry.left_detection = l;
-          retry.right_detection = r;
-          c = detail::judge_occluder_cut_pair(
-              l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
-              {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
-              correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options, *door,
-              reference_depth_offset(options, left[l].type), retry);
-          if (c) trace = retry;
-        }
-      } else if (const detail::BarVerdict bars = judge_bars(
-                     left[l], right[r],
-                     options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
-                 bars.gate != StereoGate::kNone) {
-        // Several handles inside, or one above another: drawer fronts or doors merged into one
-        // blob. A cut pair is two views, as a whole pair is: a double door's second handle, a
-        // few centimetres past the reveal, may lie inside the outline, and the bound is the
-        // pairs' (the single views' 1 lost 16 true door percepts of the tuning set's cut doors
-        // and kept no false one out).
-        trace.refused_by = bars.gate;
-        trace.value = bars.value;
-        trace.limit = bars.limit;
-      } else if (corner_cut) {
-        c = detail::judge_corner_cut_pair(
-            l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
-            {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
-            up_in_left_camera.normalized(), options, *cut_height,
-            reference_depth_offset(options, left[l].type), trace);
-      } else if (side_cut) {
-        c = detail::judge_side_cut_pair(
-            l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
-            {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
-            correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options,
-            *cut_height, height_range(options, left[l].type),
-            reference_depth_offset(options, left[l].type), trace);
+      if (cut && detail::is_bar_type(v.options, dl.type)) {
+        // A bar cut at one end by the image border (cut_bar.hpp): with a whole view in the
+        // other image, judged as any two views of a bar (their union is the whole bar); cut by
+        // the same border in both, placed from its own end; by different borders, not paired.
+        const bool both = dl.border_cut != BorderCut::kNone && dr.border_cut != BorderCut::kNone;
+        const CutBarViews cut_bar{cut_bar_of(v.options, dl.type),
+                                  both ? dl.border_cut : BorderCut::kNone};
+        if (!cut_bar.bar || (both && dl.border_cut != dr.border_cut)) continue;
+        c = PairJudge(v, l, r, trace, &cut_bar).judge();
       } else {
-        c = detail::judge_border_cut_pair(
-            l, r, {left[l], corner_array(left_corners[l]), left_ideal[l]},
-            {right[r], corner_array(right_corners[r]), right_ideal[r]}, epipolar, triangulator,
-            correlator ? &*correlator : nullptr, up_in_left_camera.normalized(), options,
-            *cut_height, reference_depth_offset(options, left[l].type), trace);
+        // A door cut by the image border pairs only with one cut along the same border, judged
+        // by border_cut.hpp's gates when its class has a typical height.
+        if (!door_pair_is_judged(v, l, r)) continue;
+        c = judge_door_pair(v, l, r, trace);
       }
       if (c) candidates.push_back(std::move(*c));
-      if (pair_trace) traces.push_back(trace);
+      if (traces) traces->push_back(trace);
     }
   }
+  return candidates;
+}
 
-  // Pairs of two clear detections first; a weak detection (Detection::needs_partner) then takes
-  // only a partner left over, so that it never draws a clear detection into a worse pair (the
-  // assignment maximizes the number of pairs before their cost).
+// The one-to-one assignment (stereo_assignment.hpp): pairs of two clear detections first; a weak
+// detection (Detection::needs_partner) then takes only a partner left over, so that it never
+// draws a clear detection into a worse pair (the assignment maximizes the number of pairs before
+// their cost). Crossed pairs are then swapped (detail::uncross).
+std::vector<detail::Candidate> assign_pairs(const StereoViews& v,
+                                            const std::vector<detail::Candidate>& candidates) {
   const auto is_weak_pair = [&](const detail::Candidate& c) {
-    return left[c.left].needs_partner || right[c.right].needs_partner;
+    return v.left[c.left].needs_partner || v.right[c.right].needs_partner;
   };
   std::vector<detail::Candidate> clear, weak;
   for (const detail::Candidate& c : candidates) (is_weak_pair(c) ? weak : clear).push_back(c);
-  const int left_count = static_cast<int>(left.size());
-  const int right_count = static_cast<int>(right.size());
+  const int left_count = static_cast<int>(v.left.size());
+  const int right_count = static_cast<int>(v.right.size());
   std::vector<detail::Candidate> assigned = detail::assign(clear, left_count, right_count);
   if (!weak.empty()) {
-    std::vector<char> left_taken(left.size(), 0), right_taken(right.size(), 0);
+    std::vector<char> left_taken(v.left.size(), 0), right_taken(v.right.size(), 0);
     for (const detail::Candidate& c : assigned) {
       left_taken[static_cast<std::size_t>(c.left)] = 1;
       right_taken[static_cast<std::size_t>(c.right)] = 1;
@@ -518,109 +617,143 @@ std::vector<StereoPercept> match_and_triangulate(
         assigned.begin(), assigned.end(),
         [](const detail::Candidate& a, const detail::Candidate& b) { return a.left < b.left; });
   }
-  detail::uncross(assigned, candidates, left, left_ideal, right_ideal);
+  detail::uncross(assigned, candidates, v.left, v.left_ideal, v.right_ideal);
+  return assigned;
+}
+
+StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {
+  StereoPercept percept;
+  percept.left_detection = c.left;
+  percept.right_detection = c.right;
+  percept.left_camera_position_m = c.triangulation.left_camera_position_m;
+  percept.left_camera_covariance_m2 = c.triangulation.left_camera_covariance_m2;
+  percept.left_px = v.left[c.left].reference_px;
+  percept.right_px = v.right[c.right].reference_px;
+  percept.confidence = static_cast<float>(
+      std::sqrt(std::clamp(static_cast<double>(v.left[c.left].confidence), 0.0, 1.0) *
+                std::clamp(static_cast<double>(v.right[c.right].confidence), 0.0, 1.0)));
+  return percept;
+}
+
+// One detection of one image that no pair took, placed from that image alone: whole outlines
+// from both sides (pass 0, single_view.hpp); what is left from one side and the level planes of
+// its edges (pass 1, one_side_door.hpp: the other side beyond the other image's border, or one
+// of two peaks of a repeated edge).
+std::optional<StereoPercept> place_from_one_image(const StereoViews& v, int image, std::size_t d,
+                                                  int pass, const detail::StereoRig& rig) {
+  const StereoMatchOptions& options = v.options;
+  const Detection& detection = (image == 0 ? v.left : v.right)[d];
+  const auto& corners = (image == 0 ? v.left_corners : v.right_corners)[d];
+  const detail::SideCorrelator& sweep = image == 0 ? *v.correlator : *v.reverse_correlator;
+  const detail::IdealPixel& reference = (image == 0 ? v.left_ideal : v.right_ideal)[d];
+  const double offset_m = reference_depth_offset(options, detection.type);
+  if (pass == 0) {
+    return detail::single_view_percept(detection, static_cast<int>(d), image, corner_array(corners),
+                                       reference, sweep, v.triangulator, rig, options,
+                                       height_range(options, detection.type),
+                                       class_max_width_m(options, detection.type), offset_m);
+  }
+  const StereoMatchOptions::BorderCutDoor& cut_door = *border_cut_door(options, detection.type);
+  const Eigen::Isometry3d other_T_own = image == 0 ? v.left_T_right.inverse() : v.left_T_right;
+  const Eigen::Vector3d up_in_own =
+      image == 0 ? v.up : Eigen::Vector3d(v.left_T_right.linear().transpose() * v.up);
+  const auto place = [&](detail::SweptSide swept) {
+    return detail::place_one_side_door(corner_array(corners), detection.border_cut, image, sweep,
+                                       image == 0 ? v.left_intrinsics : v.right_intrinsics,
+                                       image == 0 ? v.right_intrinsics : v.left_intrinsics,
+                                       other_T_own, up_in_own, options, cut_door,
+                                       height_range(options, detection.type), swept);
+  };
+  std::optional<detail::OneSideDoor> door = place(detail::SweptSide::kInner);
+  if (!door && cut_door.merged_side) door = place(detail::SweptSide::kOuter);
+  if (!door) return std::nullopt;
+  return detail::one_image_percept(detection, static_cast<int>(d), image, door->centre_m,
+                                   door->side_correlation, door->height_sigma_m, reference,
+                                   v.triangulator, rig, options, offset_m);
+}
+
+// The detections no pair took, placed from one image (place_from_one_image) unless a percept of
+// the same type already lies within single_view_min_separation_m (a second outline of a door
+// already placed). Pass 0 runs on both images before pass 1, so that a one-side percept, less
+// exact, never displaces the other image's two-sided one of the same door.
+void place_single_views(const StereoViews& v, const std::vector<detail::Candidate>& assigned,
+                        std::vector<StereoPercept>& out) {
+  const StereoMatchOptions& options = v.options;
+  std::array<std::vector<char>, 2> paired{std::vector<char>(v.left.size(), 0),
+                                          std::vector<char>(v.right.size(), 0)};
+  for (const detail::Candidate& c : assigned) {
+    paired[0][static_cast<std::size_t>(c.left)] = 1;
+    paired[1][static_cast<std::size_t>(c.right)] = 1;
+  }
+  const detail::StereoRig rig{v.left_intrinsics, v.right_intrinsics, v.left_T_right, v.up};
+  std::array<std::vector<char>, 2> placed{std::vector<char>(v.left.size(), 0),
+                                          std::vector<char>(v.right.size(), 0)};
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int image = 0; image < 2; ++image) {
+      const std::vector<Detection>& detections = image == 0 ? v.left : v.right;
+      const auto& corners = image == 0 ? v.left_corners : v.right_corners;
+      for (std::size_t d = 0; d < detections.size(); ++d) {
+        const Detection& detection = detections[d];
+        const StereoMatchOptions::BorderCutDoor* cut_door =
+            border_cut_door(options, detection.type);
+        const bool from_one_side = cut_door && cut_door->from_one_side;
+        const bool cut = detection.border_cut != BorderCut::kNone;
+        if (paired[static_cast<std::size_t>(image)][d] || detection.needs_partner ||
+            corners[d].size() != 4) {
+          continue;
+        }
+        if (pass == 0 ? cut : !from_one_side || placed[static_cast<std::size_t>(image)][d]) {
+          continue;
+        }
+        if (detail::judge_bars_on_outline(detections, detection,
+                                          options.single_view_max_bars_inside, options)
+                .gate != StereoGate::kNone) {
+          continue;
+        }
+        const std::optional<StereoPercept> percept = place_from_one_image(v, image, d, pass, rig);
+        if (!percept) continue;
+        if (pass == 0) placed[static_cast<std::size_t>(image)][d] = 1;
+        const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
+          const Detection& other =
+              p.left_detection >= 0 ? v.left[p.left_detection] : v.right[p.right_detection];
+          return other.type == detection.type &&
+                 (p.left_camera_position_m - percept->left_camera_position_m).norm() <
+                     options.single_view_min_separation_m;
+        });
+        if (near_another) continue;
+        out.push_back(*percept);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<StereoPercept> match_and_triangulate(
+    const std::vector<Detection>& left, const std::vector<Detection>& right,
+    const head::CameraIntrinsics& left_intrinsics, const head::CameraIntrinsics& right_intrinsics,
+    const Eigen::Isometry3d& left_T_right, const StereoMatchOptions& options,
+    const Eigen::Vector3d& up_in_left_camera, std::vector<StereoPairTrace>* pair_trace,
+    const StereoImages& images) {
+  if (pair_trace) pair_trace->clear();
+  const bool single_view = options.min_single_view_correlation > 0.0;
+  if ((left.empty() || right.empty()) && !single_view) return {};
+  if (left.empty() && right.empty()) return {};
+  const StereoViews views(left, right, left_intrinsics, right_intrinsics, left_T_right, options,
+                          up_in_left_camera, images);
+  std::vector<StereoPairTrace> traces;
+  const std::vector<detail::Candidate> candidates =
+      judge_all_pairs(views, pair_trace ? &traces : nullptr);
+  const std::vector<detail::Candidate> assigned = assign_pairs(views, candidates);
   std::vector<StereoPercept> out;
   for (const detail::Candidate& c : assigned) {
-    StereoPercept percept;
-    percept.left_detection = c.left;
-    percept.right_detection = c.right;
-    percept.left_camera_position_m = c.triangulation.left_camera_position_m;
-    percept.left_camera_covariance_m2 = c.triangulation.left_camera_covariance_m2;
-    percept.left_px = left[c.left].reference_px;
-    percept.right_px = right[c.right].reference_px;
-    percept.confidence = static_cast<float>(
-        std::sqrt(std::clamp(static_cast<double>(left[c.left].confidence), 0.0, 1.0) *
-                  std::clamp(static_cast<double>(right[c.right].confidence), 0.0, 1.0)));
-    out.push_back(percept);
-    if (pair_trace) {
-      for (StereoPairTrace& t : traces) {
-        if (t.left_detection == c.left && t.right_detection == c.right) t.assigned = true;
-      }
+    out.push_back(to_percept(views, c));
+    for (StereoPairTrace& t : traces) {
+      if (t.left_detection == c.left && t.right_detection == c.right) t.assigned = true;
     }
   }
   if (pair_trace) *pair_trace = std::move(traces);
-  if (single_view && correlator) {
-    std::vector<char> left_paired(left.size(), 0), right_paired(right.size(), 0);
-    for (const detail::Candidate& c : assigned) {
-      left_paired[static_cast<std::size_t>(c.left)] = 1;
-      right_paired[static_cast<std::size_t>(c.right)] = 1;
-    }
-    const detail::StereoRig rig{left_intrinsics, right_intrinsics, left_T_right, up_in_left_camera};
-    // Pass 0 places whole outlines from both sides (single_view.hpp) in both images; pass 1 then
-    // places what is left from one side (one_side_door.hpp), so that a one-side percept, less
-    // exact, never displaces the other image's two-sided one of the same door
-    // (single_view_min_separation_m).
-    std::array<std::vector<char>, 2> placed{std::vector<char>(left.size(), 0),
-                                            std::vector<char>(right.size(), 0)};
-    for (int pass = 0; pass < 2; ++pass) {
-      for (int image = 0; image < 2; ++image) {
-        const std::vector<Detection>& detections = image == 0 ? left : right;
-        const auto& corners = image == 0 ? left_corners : right_corners;
-        const std::vector<char>& paired = image == 0 ? left_paired : right_paired;
-        for (std::size_t d = 0; d < detections.size(); ++d) {
-          const Detection& detection = detections[d];
-          const StereoMatchOptions::BorderCutDoor* cut_door =
-              border_cut_door(options, detection.type);
-          const bool from_one_side = cut_door && cut_door->from_one_side;
-          const bool cut = detection.border_cut != BorderCut::kNone;
-          if (paired[d] || detection.needs_partner || corners[d].size() != 4) continue;
-          if (pass == 0 ? cut : !from_one_side || placed[static_cast<std::size_t>(image)][d]) {
-            continue;
-          }
-          if (detail::judge_bars_on_outline(detections, detection,
-                                            options.single_view_max_bars_inside, options)
-                  .gate != StereoGate::kNone) {
-            continue;
-          }
-          const detail::SideCorrelator& sweep = image == 0 ? *correlator : *reverse_correlator;
-          const detail::IdealPixel& reference = (image == 0 ? left_ideal : right_ideal)[d];
-          const double offset_m = reference_depth_offset(options, detection.type);
-          std::optional<StereoPercept> percept;
-          if (pass == 0) {
-            percept = detail::single_view_percept(
-                detection, static_cast<int>(d), image, corner_array(corners[d]), reference, sweep,
-                triangulator, rig, options, height_range(options, detection.type),
-                class_max_width_m(options, detection.type), offset_m);
-            if (percept) placed[static_cast<std::size_t>(image)][d] = 1;
-          } else {
-            // Not placed from both sides: from one side and the level planes of its edges (the
-            // other side beyond the other image's border, or one of two peaks of a repeated edge).
-            const Eigen::Isometry3d other_T_own =
-                image == 0 ? left_T_right.inverse() : left_T_right;
-            const Eigen::Vector3d up_in_own =
-                image == 0 ? up_in_left_camera
-                           : Eigen::Vector3d(left_T_right.linear().transpose() * up_in_left_camera);
-            const auto place = [&](detail::SweptSide swept) {
-              return detail::place_one_side_door(
-                  corner_array(corners[d]), detection.border_cut, image, sweep,
-                  image == 0 ? left_intrinsics : right_intrinsics,
-                  image == 0 ? right_intrinsics : left_intrinsics, other_T_own, up_in_own, options,
-                  *cut_door, height_range(options, detection.type), swept);
-            };
-            std::optional<detail::OneSideDoor> door = place(detail::SweptSide::kInner);
-            if (!door && cut_door->merged_side) door = place(detail::SweptSide::kOuter);
-            if (door) {
-              percept = detail::one_image_percept(
-                  detection, static_cast<int>(d), image, door->centre_m, door->side_correlation,
-                  door->height_sigma_m, reference, triangulator, rig, options, offset_m);
-            }
-          }
-          if (!percept) continue;
-          // A second outline of a door that a percept already places.
-          const bool near_another =
-              std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {
-                const Detection& other =
-                    p.left_detection >= 0 ? left[p.left_detection] : right[p.right_detection];
-                return other.type == detection.type &&
-                       (p.left_camera_position_m - percept->left_camera_position_m).norm() <
-                           options.single_view_min_separation_m;
-              });
-          if (near_another) continue;
-          out.push_back(*percept);
-        }
-      }
-    }
-  }
+  if (single_view && views.correlator) place_single_views(views, assigned, out);
   return out;
 }
 
