@@ -41,6 +41,186 @@ bool sample(const cv::Mat& grey, double x, double y, double& value) {
   return true;
 }
 
+// The scores of the sweep's steps, from the right window's values at each: the correlation
+// with the left window, times 2 k / (1 + k^2) for a contrast ratio k of the two windows (2 cov /
+// (var_l + var_r)), so that a faint groove does not match a door's outer edge; -2 where the
+// window left the image.
+class StepScores {
+ public:
+  StepScores(const std::vector<double>& left_values, double left_norm, int steps)
+      : left_values_(left_values),
+        left_norm_(left_norm),
+        right_values(left_values.size()),
+        scores(static_cast<std::size_t>(steps), -2.0),
+        contrasts(static_cast<std::size_t>(steps), 0.0) {}
+
+  // Step k's score from right_values and their sum.
+  void score(int k, double right_sum) {
+    const std::size_t n = left_values_.size();
+    const double right_mean = right_sum / static_cast<double>(n);
+    double dot = 0.0, right_norm2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = right_values[i] - right_mean;
+      dot += v * left_values_[i];
+      right_norm2 += v * v;
+    }
+    scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm_ * left_norm_ + right_norm2);
+    contrasts[static_cast<std::size_t>(k)] = std::sqrt(right_norm2) / left_norm_;
+  }
+
+ private:
+  const std::vector<double>& left_values_;
+  const double left_norm_;
+
+ public:
+  std::vector<double> right_values;
+  std::vector<double> scores;
+  std::vector<double> contrasts;
+};
+
+// The left window's samples as the right camera sees them: A = K_r R^T r / |h(r)| per sample,
+// its components in arrays of their own, and 1 / A_z.
+struct RightRays {
+  std::vector<double> x, y, z, inverse_z;
+};
+
+// The sweep's steps lambda_min + k step, k < steps.
+struct StepRange {
+  double lambda_min = 0.0;
+  double step = 0.0;
+  int steps = 0;
+};
+
+// Where the right camera's centre lies on the left camera's x axis (C_y = C_z = 0: the simulated
+// head, and any head whose frames are rectified) and the right image is not distorted, a sample's
+// row y = A_y / A_z is the same at every step, and only its column moves: its two rows and their
+// weight are looked up once (the values are sample()'s). False when a sample is off the image's
+// rows at every step (all scores stay -2).
+bool score_rectified(const cv::Mat& right_grey, const Eigen::Vector3d& c_right,
+                     const RightRays& rays, const StepRange& range, StepScores& out) {
+  const std::size_t n = rays.x.size();
+  std::vector<const unsigned char*> row0(n), row1(n);
+  std::vector<double> fy(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double y = rays.y[i] * rays.inverse_z[i];
+    if (!(y >= 0.0 && y < right_grey.rows - 1)) return false;
+    const int y0 = static_cast<int>(y);
+    fy[i] = y - y0;
+    row0[i] = right_grey.ptr<unsigned char>(y0);
+    row1[i] = right_grey.ptr<unsigned char>(y0 + 1);
+  }
+  const double last_column = right_grey.cols - 1;
+  for (int k = 0; k < range.steps; ++k) {
+    const double cx = (range.lambda_min + k * range.step) * c_right.x();
+    bool inside = true;
+    double right_sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = (rays.x[i] - cx) * rays.inverse_z[i];
+      if (!(x >= 0.0 && x < last_column)) {
+        inside = false;
+        break;
+      }
+      const int x0 = static_cast<int>(x);
+      out.right_values[i] = bilinear(row0[i] + x0, row1[i] + x0, x - x0, fy[i]);
+      right_sum += out.right_values[i];
+    }
+    if (inside) out.score(k, right_sum);
+  }
+  return true;
+}
+
+// Any rig: each step projects every sample anew, the projections first, two samples at a time
+// (one packed division for both), then the samples. The same operations in the same order as one
+// at a time, so the same values. Where the right camera's centre lies in the left camera's image
+// plane (C_z = 0), p_z = A_z at every step, and the reciprocals are taken once.
+void score_general(const cv::Mat& right_grey, const Eigen::Vector3d& c_right,
+                   const head::CameraIntrinsics* right_distortion, const RightRays& rays,
+                   const StepRange& range, StepScores& out) {
+  const std::size_t n = rays.x.size();
+  const bool constant_z = c_right.z() == 0.0;
+  std::vector<double> xs(n), ys(n);
+  const auto project_all = [&](double cx, double cy, double cz) {
+    const cv::v_float64x2 v_cx = cv::v_setall_f64(cx), v_cy = cv::v_setall_f64(cy);
+    const cv::v_float64x2 v_cz = cv::v_setall_f64(cz), v_min_z = cv::v_setall_f64(1e-9);
+    const cv::v_float64x2 one = cv::v_setall_f64(1.0);
+    std::size_t i = 0;
+    for (; i + 2 <= n; i += 2) {
+      const cv::v_float64x2 z = cv::v_load(&rays.z[i]) - v_cz;
+      if (cv::v_signmask(z > v_min_z) != 3) return false;  // behind the camera (or not a number)
+      const cv::v_float64x2 r = constant_z ? cv::v_load(&rays.inverse_z[i]) : one / z;
+      cv::v_store(&xs[i], (cv::v_load(&rays.x[i]) - v_cx) * r);
+      cv::v_store(&ys[i], (cv::v_load(&rays.y[i]) - v_cy) * r);
+    }
+    for (; i < n; ++i) {
+      const double z = rays.z[i] - cz;
+      if (!(z > 1e-9)) return false;
+      const double r = constant_z ? rays.inverse_z[i] : 1.0 / z;
+      xs[i] = (rays.x[i] - cx) * r;
+      ys[i] = (rays.y[i] - cy) * r;
+    }
+    return true;
+  };
+  for (int k = 0; k < range.steps; ++k) {
+    const double lambda = range.lambda_min + k * range.step;
+    if (!project_all(lambda * c_right.x(), lambda * c_right.y(), lambda * c_right.z())) continue;
+    bool inside = true;
+    double right_sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double x = xs[i], y = ys[i];
+      if (right_distortion) {
+        const Eigen::Vector2d raw = distort(Eigen::Vector2d(x, y), *right_distortion);
+        x = raw.x();
+        y = raw.y();
+      }
+      if (!sample(right_grey, x, y, out.right_values[i])) {
+        inside = false;
+        break;
+      }
+      right_sum += out.right_values[i];
+    }
+    if (inside) out.score(k, right_sum);
+  }
+}
+
+// The best step, refined by a parabola through it and its neighbours, and the second peak: the
+// best local maximum outside the main peak's lobe (the steps over which the scores fall
+// monotonically from it) and at least kDistinctPeakSteps away. Steps where the window left the
+// image are no neighbours: a maximum at the edge of the image still counts.
+std::optional<SideCorrelator::SideDepth> peaks(const StepScores& s, const StepRange& range) {
+  const std::vector<double>& scores = s.scores;
+  const int steps = range.steps;
+  const auto best = std::max_element(scores.begin(), scores.end());
+  if (*best < -1.5) return std::nullopt;
+  const int k = static_cast<int>(best - scores.begin());
+  double offset = 0.0;  // parabola through the peak and its neighbours, in steps
+  if (k > 0 && k + 1 < steps && scores[k - 1] > -1.5 && scores[k + 1] > -1.5) {
+    const double l = scores[k - 1], c = scores[k], r = scores[k + 1];
+    const double curvature = l - 2.0 * c + r;
+    if (curvature < 0.0) offset = std::clamp(0.5 * (l - r) / curvature, -0.5, 0.5);
+  }
+  SideCorrelator::SideDepth out;
+  out.horizontal_distance_m = 1.0 / (range.lambda_min + (k + offset) * range.step);
+  out.correlation = *best;
+  out.contrast_ratio = s.contrasts[static_cast<std::size_t>(k)];
+  const auto score = [&](int i) { return scores[static_cast<std::size_t>(i)]; };
+  const auto valid = [&](int i) { return i >= 0 && i < steps && score(i) > -1.5; };
+  int lobe_begin = k, lobe_end = k;
+  while (valid(lobe_begin - 1) && score(lobe_begin - 1) <= score(lobe_begin)) --lobe_begin;
+  while (valid(lobe_end + 1) && score(lobe_end + 1) <= score(lobe_end)) ++lobe_end;
+  for (int i = 0; i < steps; ++i) {
+    if (!valid(i) || (i >= lobe_begin && i <= lobe_end) || std::abs(i - k) < kDistinctPeakSteps) {
+      continue;
+    }
+    const bool local_maximum =
+        (!valid(i - 1) || score(i) >= score(i - 1)) && (!valid(i + 1) || score(i) >= score(i + 1));
+    if (local_maximum && score(i) > out.second_correlation) {
+      out.second_correlation = score(i);
+      out.second_distance_m = 1.0 / (range.lambda_min + i * range.step);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 Eigen::Vector2d distort(const Eigen::Vector2d& ideal_px, const head::CameraIntrinsics& k) {
@@ -194,151 +374,25 @@ std::optional<SideCorrelator::SideDepth> SideCorrelator::sweep(
   if (!(lambda_max > lambda_min)) return std::nullopt;
   const int steps = static_cast<int>(std::floor((lambda_max - lambda_min) / step)) + 1;
 
-  std::vector<double> scores(static_cast<std::size_t>(steps), -2.0);  // -2: window left the image
-  std::vector<double> contrasts(static_cast<std::size_t>(steps), 0.0);
-  std::vector<double> right_values(n);
   // The step loop is most of the stereo stage's time (about 600 000 samples a frame): A's
   // components in arrays of their own, and each sample's two divisions by p_z done as one
-  // reciprocal. Where the right camera's centre lies in the left camera's image plane
-  // (C_z = 0, rectified heads and the simulated one), p_z = A_z at every step, and the
-  // reciprocals are taken once.
-  std::vector<double> a_x(n), a_y(n), a_z(n), inverse_z(n);
+  // reciprocal (score_rectified, score_general).
+  RightRays rays{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
+                 std::vector<double>(n)};
   for (std::size_t i = 0; i < n; ++i) {
-    a_x[i] = right_a[i].x();
-    a_y[i] = right_a[i].y();
-    a_z[i] = right_a[i].z();
-    inverse_z[i] = 1.0 / a_z[i];
+    rays.x[i] = right_a[i].x();
+    rays.y[i] = right_a[i].y();
+    rays.z[i] = right_a[i].z();
+    rays.inverse_z[i] = 1.0 / rays.z[i];
   }
-  // Step k's score from the right window's values (right_values) and their sum.
-  const auto score_step = [&](int k, double right_sum) {
-    const double right_mean = right_sum / static_cast<double>(n);
-    double dot = 0.0, right_norm2 = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double v = right_values[i] - right_mean;
-      dot += v * left_values[i];
-      right_norm2 += v * v;
-    }
-    // 2 cov / (var_l + var_r): the correlation, times 2 k / (1 + k^2) for a contrast ratio k of
-    // the two windows, so that a faint groove does not match a door's outer edge.
-    scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm * left_norm + right_norm2);
-    contrasts[static_cast<std::size_t>(k)] = std::sqrt(right_norm2) / left_norm;
-  };
-  const bool constant_z = c_right_.z() == 0.0;
-  // Where the right camera's centre lies on the left camera's x axis as well (C_y = C_z = 0: the
-  // simulated head, and any head whose frames are rectified) and the right image is not
-  // distorted, a sample's row y = A_y / A_z is the same at every step, and only its column
-  // moves: its two rows and their weight are looked up once (the values are sample()'s).
-  if (constant_z && c_right_.y() == 0.0 && !right_distorted_) {
-    std::vector<const unsigned char*> row0(n), row1(n);
-    std::vector<double> fy(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double y = a_y[i] * inverse_z[i];
-      // A sample off the image's rows at every step: all scores stay -2.
-      if (!(y >= 0.0 && y < right_grey_.rows - 1)) return std::nullopt;
-      const int y0 = static_cast<int>(y);
-      fy[i] = y - y0;
-      row0[i] = right_grey_.ptr<unsigned char>(y0);
-      row1[i] = right_grey_.ptr<unsigned char>(y0 + 1);
-    }
-    const double last_column = right_grey_.cols - 1;
-    for (int k = 0; k < steps; ++k) {
-      const double cx = (lambda_min + k * step) * c_right_.x();
-      bool inside = true;
-      double right_sum = 0.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const double x = (a_x[i] - cx) * inverse_z[i];
-        if (!(x >= 0.0 && x < last_column)) {
-          inside = false;
-          break;
-        }
-        const int x0 = static_cast<int>(x);
-        right_values[i] = bilinear(row0[i] + x0, row1[i] + x0, x - x0, fy[i]);
-        right_sum += right_values[i];
-      }
-      if (inside) score_step(k, right_sum);
-    }
+  const StepRange range{lambda_min, step, steps};
+  StepScores scores(left_values, left_norm, steps);
+  if (c_right_.z() == 0.0 && c_right_.y() == 0.0 && !right_distorted_) {
+    if (!score_rectified(right_grey_, c_right_, rays, range, scores)) return std::nullopt;
   } else {
-    // Each step projects every sample anew: the projections first, two samples at a time (one
-    // packed division for both), then the samples. The same operations in the same order as
-    // one at a time, so the same values.
-    std::vector<double> xs(n), ys(n);
-    const auto project_all = [&](double cx, double cy, double cz) {
-      const cv::v_float64x2 v_cx = cv::v_setall_f64(cx), v_cy = cv::v_setall_f64(cy);
-      const cv::v_float64x2 v_cz = cv::v_setall_f64(cz), v_min_z = cv::v_setall_f64(1e-9);
-      const cv::v_float64x2 one = cv::v_setall_f64(1.0);
-      std::size_t i = 0;
-      for (; i + 2 <= n; i += 2) {
-        const cv::v_float64x2 z = cv::v_load(&a_z[i]) - v_cz;
-        if (cv::v_signmask(z > v_min_z) != 3) return false;  // behind the camera (or not a number)
-        const cv::v_float64x2 r = constant_z ? cv::v_load(&inverse_z[i]) : one / z;
-        cv::v_store(&xs[i], (cv::v_load(&a_x[i]) - v_cx) * r);
-        cv::v_store(&ys[i], (cv::v_load(&a_y[i]) - v_cy) * r);
-      }
-      for (; i < n; ++i) {
-        const double z = a_z[i] - cz;
-        if (!(z > 1e-9)) return false;
-        const double r = constant_z ? inverse_z[i] : 1.0 / z;
-        xs[i] = (a_x[i] - cx) * r;
-        ys[i] = (a_y[i] - cy) * r;
-      }
-      return true;
-    };
-    for (int k = 0; k < steps; ++k) {
-      const double lambda = lambda_min + k * step;
-      if (!project_all(lambda * c_right_.x(), lambda * c_right_.y(), lambda * c_right_.z())) {
-        continue;
-      }
-      bool inside = true;
-      double right_sum = 0.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        double x = xs[i], y = ys[i];
-        if (right_distorted_) {
-          const Eigen::Vector2d raw = distort(Eigen::Vector2d(x, y), right_);
-          x = raw.x();
-          y = raw.y();
-        }
-        if (!sample(right_grey_, x, y, right_values[i])) {
-          inside = false;
-          break;
-        }
-        right_sum += right_values[i];
-      }
-      if (inside) score_step(k, right_sum);
-    }
+    score_general(right_grey_, c_right_, right_distorted_ ? &right_ : nullptr, rays, range, scores);
   }
-  const auto best = std::max_element(scores.begin(), scores.end());
-  if (*best < -1.5) return std::nullopt;
-  const int k = static_cast<int>(best - scores.begin());
-  double offset = 0.0;  // parabola through the peak and its neighbours, in steps
-  if (k > 0 && k + 1 < steps && scores[k - 1] > -1.5 && scores[k + 1] > -1.5) {
-    const double l = scores[k - 1], c = scores[k], r = scores[k + 1];
-    const double curvature = l - 2.0 * c + r;
-    if (curvature < 0.0) offset = std::clamp(0.5 * (l - r) / curvature, -0.5, 0.5);
-  }
-  SideDepth out;
-  out.horizontal_distance_m = 1.0 / (lambda_min + (k + offset) * step);
-  out.correlation = *best;
-  out.contrast_ratio = contrasts[static_cast<std::size_t>(k)];
-  // The second peak: the best local maximum outside the main peak's lobe (the steps over which
-  // the scores fall monotonically from it) and at least kDistinctPeakSteps away. Steps where the
-  // window left the image are no neighbours: a maximum at the edge of the image still counts.
-  const auto score = [&](int i) { return scores[static_cast<std::size_t>(i)]; };
-  const auto valid = [&](int i) { return i >= 0 && i < steps && score(i) > -1.5; };
-  int lobe_begin = k, lobe_end = k;
-  while (valid(lobe_begin - 1) && score(lobe_begin - 1) <= score(lobe_begin)) --lobe_begin;
-  while (valid(lobe_end + 1) && score(lobe_end + 1) <= score(lobe_end)) ++lobe_end;
-  for (int i = 0; i < steps; ++i) {
-    if (!valid(i) || (i >= lobe_begin && i <= lobe_end) || std::abs(i - k) < kDistinctPeakSteps) {
-      continue;
-    }
-    const bool local_maximum =
-        (!valid(i - 1) || score(i) >= score(i - 1)) && (!valid(i + 1) || score(i) >= score(i + 1));
-    if (local_maximum && score(i) > out.second_correlation) {
-      out.second_correlation = score(i);
-      out.second_distance_m = 1.0 / (lambda_min + i * step);
-    }
-  }
-  return out;
+  return peaks(scores, range);
 }
 
 }  // namespace vsl::recognition::detail
