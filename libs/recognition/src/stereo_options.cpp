@@ -14,6 +14,129 @@
 
 namespace vsl::recognition {
 
+namespace {
+
+// One class of border_cut: the door sizes and the constructions it enables, each checked
+// against what it needs of `out` (the section's other keys, read first).
+StereoMatchOptions::BorderCutDoor border_cut_door_from(const config::Node& classes,
+                                                       const std::string& type,
+                                                       const StereoMatchOptions& out) {
+  const config::Node door = classes.at(type);
+  door.expect_map();
+  door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
+                    "max_side_tilt_rad", "min_peak_margin", "from_one_side", "merged_side",
+                    "occluded_corner", "occluder_cut", "occluder_cut_min_level_visible_m",
+                    "typical_width_m", "width_sigma_m"});
+  StereoMatchOptions::BorderCutDoor parsed;
+  parsed.type = type;
+  const config::Node heights = door.at("typical_heights_m");
+  parsed.typical_heights_m = heights.as_doubles();
+  const std::vector<double>& h = parsed.typical_heights_m;
+  const bool finite = std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x); });
+  if (h.empty() || !finite || !(h.front() > 0.0) || !(h.back() <= 100.0) ||
+      std::adjacent_find(h.begin(), h.end(), std::greater_equal<>()) != h.end()) {
+    heights.fail("expected a list of heights in metres, ascending, in (0, 100]");
+  }
+  parsed.height_sigma_m = door.at("height_sigma_m").as_double_in(0.0, h.front());
+  parsed.min_width_m = door.at("min_width_m").as_double_in(0.0, 100.0);
+  parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
+  if (!(parsed.max_width_m > parsed.min_width_m)) {
+    door.at("max_width_m").fail("must exceed min_width_m");
+  }
+  if (const auto v = door.find("max_side_tilt_rad")) {
+    parsed.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2, as max_side_tilt_rad
+  }
+  if (const auto v = door.find("min_peak_margin")) {
+    parsed.min_peak_margin = v->as_double_in(0.0, 2.0);  // correlations differ by at most 2
+  }
+  if (const auto v = door.find("from_one_side")) {
+    parsed.from_one_side = v->as_bool();
+    // It sweeps as single-view doors do, with their thresholds.
+    if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
+      v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
+    }
+  }
+  if (const auto v = door.find("merged_side")) {
+    parsed.merged_side = v->as_bool();
+    if (parsed.merged_side && !parsed.from_one_side) {
+      v->fail("needs from_one_side (a merged side is placed as from one side, roles swapped)");
+    }
+  }
+  if (const auto v = door.find("occluded_corner")) {
+    parsed.occluded_corner = v->as_bool();
+    // The rectangle's sides are judged by the whole outlines' side gate.
+    if (parsed.occluded_corner && !(out.max_side_tilt_rad > 0.0)) {
+      v->fail("needs max_side_tilt_rad > 0 (the good side's test)");
+    }
+  }
+  if (const auto v = door.find("occluder_cut")) {
+    parsed.occluder_cut = v->as_bool();
+    // The sides are judged by the cut pairs' side gate.
+    if (parsed.occluder_cut && !(parsed.max_side_tilt_rad > 0.0)) {
+      v->fail("needs max_side_tilt_rad > 0 (the sides' test)");
+    }
+  }
+  if (const auto v = door.find("occluder_cut_min_level_visible_m")) {
+    parsed.occluder_cut_min_level_visible_m = v->as_double_in(0.0, 100.0);
+  }
+  if (const auto v = door.find("typical_width_m")) {
+    parsed.typical_width_m = v->as_double_in(0.0, 100.0);
+    if (parsed.typical_width_m > 0.0 && (parsed.typical_width_m < parsed.min_width_m ||
+                                         parsed.typical_width_m > parsed.max_width_m)) {
+      v->fail("must be 0 (off) or within min_width_m .. max_width_m");
+    }
+    // The whole side is judged by the whole outlines' side and height gates.
+    if (parsed.typical_width_m > 0.0 && !(out.max_side_tilt_rad > 0.0)) {
+      v->fail("needs max_side_tilt_rad > 0 (the whole side's test)");
+    }
+  }
+  if (const auto v = door.find("width_sigma_m")) {
+    parsed.width_sigma_m = v->as_double_in(0.0, 100.0);
+  }
+  return parsed;
+}
+
+// major_extent_range_m, height_range_m: per type, [min_m, max_m].
+void read_ranges(const config::Node& section, StereoMatchOptions& out) {
+  for (const char* key : {"major_extent_range_m", "height_range_m"}) {
+    const auto ranges = section.find(key);
+    if (!ranges) continue;
+    auto& list =
+        std::string(key) == "height_range_m" ? out.height_range_m : out.major_extent_range_m;
+    ranges->expect_map();
+    for (const std::string& type : ranges->keys()) {
+      const config::Node range = ranges->at(type);
+      const auto bounds = range.as_array<2>();
+      if (!(bounds[0] >= 0.0 && bounds[0] < bounds[1] && bounds[1] <= 1000.0)) {
+        range.fail("expected [min_m, max_m] with 0 <= min_m < max_m <= 1000");
+      }
+      list.push_back({type, bounds[0], bounds[1]});
+    }
+  }
+}
+
+// cut_bars: per bar type, its typical length and that length's sigma.
+void read_cut_bars(const config::Node& section, StereoMatchOptions& out) {
+  if (const auto classes = section.find("cut_bars")) {
+    classes->expect_map();
+    for (const std::string& type : classes->keys()) {
+      const config::Node bar = classes->at(type);
+      bar.expect_map();
+      bar.expect_keys({"typical_length_m", "length_sigma_m"});
+      if (std::find(out.bar_types.begin(), out.bar_types.end(), type) == out.bar_types.end()) {
+        bar.fail("'" + type + "' is not one of bar_types (cut bars are placed from their span)");
+      }
+      StereoMatchOptions::CutBar parsed;
+      parsed.type = type;
+      parsed.typical_length_m = bar.at("typical_length_m").as_double_in(1e-3, 100.0);
+      parsed.length_sigma_m = bar.at("length_sigma_m").as_double_in(0.0, parsed.typical_length_m);
+      out.cut_bars.push_back(parsed);
+    }
+  }
+}
+
+}  // namespace
+
 StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   StereoMatchOptions out;
   section.expect_map();
@@ -126,116 +249,14 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       v->fail("needs bar_types (the handles it looks for)");
     }
   }
-  for (const char* key : {"major_extent_range_m", "height_range_m"}) {
-    const auto ranges = section.find(key);
-    if (!ranges) continue;
-    auto& list =
-        std::string(key) == "height_range_m" ? out.height_range_m : out.major_extent_range_m;
-    ranges->expect_map();
-    for (const std::string& type : ranges->keys()) {
-      const config::Node range = ranges->at(type);
-      const auto bounds = range.as_array<2>();
-      if (!(bounds[0] >= 0.0 && bounds[0] < bounds[1] && bounds[1] <= 1000.0)) {
-        range.fail("expected [min_m, max_m] with 0 <= min_m < max_m <= 1000");
-      }
-      list.push_back({type, bounds[0], bounds[1]});
-    }
-  }
+  read_ranges(section, out);
   if (const auto classes = section.find("border_cut")) {
     classes->expect_map();
     for (const std::string& type : classes->keys()) {
-      const config::Node door = classes->at(type);
-      door.expect_map();
-      door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
-                        "max_side_tilt_rad", "min_peak_margin", "from_one_side", "merged_side",
-                        "occluded_corner", "occluder_cut", "occluder_cut_min_level_visible_m",
-                        "typical_width_m", "width_sigma_m"});
-      StereoMatchOptions::BorderCutDoor parsed;
-      parsed.type = type;
-      const config::Node heights = door.at("typical_heights_m");
-      parsed.typical_heights_m = heights.as_doubles();
-      const std::vector<double>& h = parsed.typical_heights_m;
-      const bool finite =
-          std::all_of(h.begin(), h.end(), [](double x) { return std::isfinite(x); });
-      if (h.empty() || !finite || !(h.front() > 0.0) || !(h.back() <= 100.0) ||
-          std::adjacent_find(h.begin(), h.end(), std::greater_equal<>()) != h.end()) {
-        heights.fail("expected a list of heights in metres, ascending, in (0, 100]");
-      }
-      parsed.height_sigma_m = door.at("height_sigma_m").as_double_in(0.0, h.front());
-      parsed.min_width_m = door.at("min_width_m").as_double_in(0.0, 100.0);
-      parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
-      if (!(parsed.max_width_m > parsed.min_width_m)) {
-        door.at("max_width_m").fail("must exceed min_width_m");
-      }
-      if (const auto v = door.find("max_side_tilt_rad")) {
-        parsed.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2, as max_side_tilt_rad
-      }
-      if (const auto v = door.find("min_peak_margin")) {
-        parsed.min_peak_margin = v->as_double_in(0.0, 2.0);  // correlations differ by at most 2
-      }
-      if (const auto v = door.find("from_one_side")) {
-        parsed.from_one_side = v->as_bool();
-        // It sweeps as single-view doors do, with their thresholds.
-        if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
-          v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
-        }
-      }
-      if (const auto v = door.find("merged_side")) {
-        parsed.merged_side = v->as_bool();
-        if (parsed.merged_side && !parsed.from_one_side) {
-          v->fail("needs from_one_side (a merged side is placed as from one side, roles swapped)");
-        }
-      }
-      if (const auto v = door.find("occluded_corner")) {
-        parsed.occluded_corner = v->as_bool();
-        // The rectangle's sides are judged by the whole outlines' side gate.
-        if (parsed.occluded_corner && !(out.max_side_tilt_rad > 0.0)) {
-          v->fail("needs max_side_tilt_rad > 0 (the good side's test)");
-        }
-      }
-      if (const auto v = door.find("occluder_cut")) {
-        parsed.occluder_cut = v->as_bool();
-        // The sides are judged by the cut pairs' side gate.
-        if (parsed.occluder_cut && !(parsed.max_side_tilt_rad > 0.0)) {
-          v->fail("needs max_side_tilt_rad > 0 (the sides' test)");
-        }
-      }
-      if (const auto v = door.find("occluder_cut_min_level_visible_m")) {
-        parsed.occluder_cut_min_level_visible_m = v->as_double_in(0.0, 100.0);
-      }
-      if (const auto v = door.find("typical_width_m")) {
-        parsed.typical_width_m = v->as_double_in(0.0, 100.0);
-        if (parsed.typical_width_m > 0.0 && (parsed.typical_width_m < parsed.min_width_m ||
-                                             parsed.typical_width_m > parsed.max_width_m)) {
-          v->fail("must be 0 (off) or within min_width_m .. max_width_m");
-        }
-        // The whole side is judged by the whole outlines' side and height gates.
-        if (parsed.typical_width_m > 0.0 && !(out.max_side_tilt_rad > 0.0)) {
-          v->fail("needs max_side_tilt_rad > 0 (the whole side's test)");
-        }
-      }
-      if (const auto v = door.find("width_sigma_m")) {
-        parsed.width_sigma_m = v->as_double_in(0.0, 100.0);
-      }
-      out.border_cut.push_back(parsed);
+      out.border_cut.push_back(border_cut_door_from(*classes, type, out));
     }
   }
-  if (const auto classes = section.find("cut_bars")) {
-    classes->expect_map();
-    for (const std::string& type : classes->keys()) {
-      const config::Node bar = classes->at(type);
-      bar.expect_map();
-      bar.expect_keys({"typical_length_m", "length_sigma_m"});
-      if (std::find(out.bar_types.begin(), out.bar_types.end(), type) == out.bar_types.end()) {
-        bar.fail("'" + type + "' is not one of bar_types (cut bars are placed from their span)");
-      }
-      StereoMatchOptions::CutBar parsed;
-      parsed.type = type;
-      parsed.typical_length_m = bar.at("typical_length_m").as_double_in(1e-3, 100.0);
-      parsed.length_sigma_m = bar.at("length_sigma_m").as_double_in(0.0, parsed.typical_length_m);
-      out.cut_bars.push_back(parsed);
-    }
-  }
+  read_cut_bars(section, out);
   return out;
 }
 
