@@ -68,6 +68,153 @@ constexpr double kMaxMergedSideContrast = 0.3;
 // The whole depth range of the sweep, in pixels of image motion: every step.
 constexpr double kWholeRangePx = 1e4;
 
+// The door that the inner side at one horizontal distance implies: its outer side where the
+// outer corners' rays meet the level planes of the inner ends, within the class's width and
+// seen from within about 78 deg of head-on, shown by the own image's edge where the other image
+// cannot show it (or, for a swept outer side, no edge at all), and its centre.
+class OneSidePlacement {
+ public:
+  OneSidePlacement(const std::array<Eigen::Vector2d, 4>& c, BorderCut cut, int own_image,
+                   const SideCorrelator& sweep, const head::CameraIntrinsics& other,
+                   const Eigen::Isometry3d& other_T_own, const Eigen::Vector3d& u,
+                   const Eigen::Matrix3d& k_inverse, const StereoMatchOptions& options,
+                   const StereoMatchOptions::BorderCutDoor& door,
+                   const StereoMatchOptions::ExtentRange* height_range, bool swapped,
+                   const std::array<int, 2>& inner, const std::array<int, 2>& outer)
+      : c(c),
+        cut(cut),
+        own_image(own_image),
+        sweep(sweep),
+        other(other),
+        other_T_own(other_T_own),
+        u(u),
+        k_inverse(k_inverse),
+        options(options),
+        door(door),
+        height_range(height_range),
+        swapped(swapped),
+        inner(inner),
+        outer(outer),
+        // The outer side's real corners (0 top, 1 bottom): a cut removes the one on the cut edge.
+        real{cut != BorderCut::kTop, cut != BorderCut::kBottom} {}
+
+  std::optional<OneSideDoor> at(double distance_m) const {
+    const auto inner_top = sweep.point_at(c[inner[0]], distance_m);
+    const auto inner_bottom = sweep.point_at(c[inner[1]], distance_m);
+    if (!inner_top || !inner_bottom) return std::nullopt;
+    const std::array<Eigen::Vector3d, 2> inner_end{*inner_top, *inner_bottom};
+    std::array<Eigen::Vector3d, 2> outer_end{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    bool verify_outer = false;  // the other image shows the outer side
+    if (!outer_ends(inner_end, outer_end, verify_outer)) return std::nullopt;
+    if (verify_outer && !outer_shown(outer_end)) return std::nullopt;
+    return centre(inner_end, outer_end);
+  }
+
+ private:
+  bool outer_ends(const std::array<Eigen::Vector3d, 2>& inner_end,
+                  std::array<Eigen::Vector3d, 2>& outer_end, bool& verify_outer) const {
+    for (std::size_t e = 0; e < 2; ++e) {
+      if (!real[e]) continue;
+      const Eigen::Vector3d ray = k_inverse * c[outer[e]].homogeneous();
+      const double along_up = ray.dot(u);
+      if (std::abs(along_up) < std::sin(kMinRayToPlaneRad) * ray.norm()) return false;
+      const double s = inner_end[e].dot(u) / along_up;
+      if (!(s > 0.0)) return false;
+      const Eigen::Vector3d x = s * ray;
+      outer_end[e] = x;
+      // Beyond the other image's border on the outer side's side.
+      const Eigen::Vector3d in_other = other_T_own * x;
+      if (!(in_other.z() > 0.0)) return false;
+      const Eigen::Vector2d ideal(other.fx_px * in_other.x() / in_other.z() + other.cx_px,
+                                  other.fy_px * in_other.y() / in_other.z() + other.cy_px);
+      const double raw_u = distort(ideal, other).x();
+      // (Past the distortion's fold on that side of the image, the point is beyond it too.)
+      const bool folded = past_distortion_fold(ideal, other) &&
+                          (own_image == 0 ? ideal.x() < other.cx_px : ideal.x() > other.cx_px);
+      const bool beyond =
+          folded || (own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
+                                    : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx);
+      // (A swept outer side leaves the inner one, placed, on the side away from that border.)
+      verify_outer = verify_outer || swapped || !beyond;
+      // A door's width, seen from within about 78 deg of head-on.
+      const Eigen::Vector3d along = x - inner_end[e];
+      const double width_m = along.norm();
+      if (width_m < door.min_width_m || width_m > door.max_width_m) return false;
+      const Eigen::Vector3d middle = 0.5 * (x + inner_end[e]);
+      const Eigen::Vector3d normal = along.cross(u).normalized();
+      if (std::abs(normal.dot(middle.normalized())) < kMinCosViewing) return false;
+    }
+    return true;
+  }
+
+  bool outer_shown(const std::array<Eigen::Vector3d, 2>& outer_end) const {
+    // The outer side's horizontal distance: the mean of its real corners'.
+    const double outer_m = real[0] && real[1]
+                               ? 0.5 * (sweep.horizontal_distance(outer_end[0]) +
+                                        sweep.horizontal_distance(outer_end[1]))
+                               : sweep.horizontal_distance(outer_end[real[0] ? 0 : 1]);
+    const auto found = sweep.correlate(c[outer[0]], c[outer[1]], outer_m, kSideSearchPx,
+                                       options.min_depth_m, options.max_depth_m);
+    const bool shown =
+        found && found->correlation >= options.min_single_view_correlation &&
+        std::abs(found->horizontal_distance_m - outer_m) <= kMaxOuterDepthMismatch * outer_m;
+    // Or, for a swept outer side, no edge at all where the planes put the placed side.
+    const auto unseen = swapped && !shown
+                            ? sweep.correlate(c[outer[0]], c[outer[1]], outer_m, 1.0,
+                                              options.min_depth_m, options.max_depth_m)
+                            : std::nullopt;
+    if (!shown && !(unseen && unseen->contrast_ratio < kMaxMergedSideContrast)) {
+      return false;
+    }
+    return true;
+  }
+
+  std::optional<OneSideDoor> centre(const std::array<Eigen::Vector3d, 2>& inner_end,
+                                    const std::array<Eigen::Vector3d, 2>& outer_end) const {
+    OneSideDoor out;
+    const double inner_height_m = (inner_end[0] - inner_end[1]).dot(u);
+    if (cut == BorderCut::kNone) {
+      const Eigen::Vector3d outer_side = outer_end[0] - outer_end[1];
+      const double outer_height_m = outer_side.dot(u);
+      const double lean_m = (outer_side - outer_height_m * u).norm();
+      if (lean_m > kMaxOuterLean * inner_height_m) return std::nullopt;
+      // The outer side's corners are at its inner ends' heights: one height for both sides.
+      if (height_range &&
+          (inner_height_m < height_range->min_m || inner_height_m > height_range->max_m)) {
+        return std::nullopt;
+      }
+      out.centre_m = 0.25 * (inner_end[0] + inner_end[1] + outer_end[0] + outer_end[1]);
+      return out;
+    }
+    const std::vector<double>& typical = door.typical_heights_m;
+    if (inner_height_m < 0.5 * typical.front()) return std::nullopt;
+    const auto height = std::find_if(typical.begin(), typical.end(), [&](double h) {
+      return inner_height_m <= kMaxVisibleOfTypical * h;
+    });
+    if (height == typical.end()) return std::nullopt;
+    const bool top_cut = cut == BorderCut::kTop;
+    const std::size_t e = top_cut ? 1 : 0;  // the edge shown whole
+    out.centre_m = 0.5 * (inner_end[e] + outer_end[e]) + (top_cut ? 0.5 : -0.5) * *height * u;
+    out.height_sigma_m = 0.5 * door.height_sigma_m;
+    return out;
+  }
+
+  const std::array<Eigen::Vector2d, 4>& c;
+  const BorderCut cut;
+  const int own_image;
+  const SideCorrelator& sweep;
+  const head::CameraIntrinsics& other;
+  const Eigen::Isometry3d& other_T_own;
+  const Eigen::Vector3d& u;
+  const Eigen::Matrix3d& k_inverse;
+  const StereoMatchOptions& options;
+  const StereoMatchOptions::BorderCutDoor& door;
+  const StereoMatchOptions::ExtentRange* height_range;
+  const bool swapped;
+  const std::array<int, 2> inner, outer;
+  const std::array<bool, 2> real;
+};
+
 }  // namespace
 
 std::optional<OneSideDoor> place_one_side_door(
@@ -143,93 +290,9 @@ std::optional<OneSideDoor> place_one_side_door(
                             second ? second->correlation : depth->second_correlation);
   }
 
-  // The outer side's real corners (0 top, 1 bottom): a cut removes the one on the cut edge.
-  const std::array<bool, 2> real{cut != BorderCut::kTop, cut != BorderCut::kBottom};
-  const auto door_at = [&](double distance_m) -> std::optional<OneSideDoor> {
-    const auto inner_top = sweep.point_at(c[inner[0]], distance_m);
-    const auto inner_bottom = sweep.point_at(c[inner[1]], distance_m);
-    if (!inner_top || !inner_bottom) return std::nullopt;
-    const std::array<Eigen::Vector3d, 2> inner_end{*inner_top, *inner_bottom};
-    std::array<Eigen::Vector3d, 2> outer_end{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-    bool verify_outer = false;  // the other image shows the outer side
-    for (std::size_t e = 0; e < 2; ++e) {
-      if (!real[e]) continue;
-      const Eigen::Vector3d ray = k_inverse * c[outer[e]].homogeneous();
-      const double along_up = ray.dot(u);
-      if (std::abs(along_up) < std::sin(kMinRayToPlaneRad) * ray.norm()) return std::nullopt;
-      const double s = inner_end[e].dot(u) / along_up;
-      if (!(s > 0.0)) return std::nullopt;
-      const Eigen::Vector3d x = s * ray;
-      outer_end[e] = x;
-      // Beyond the other image's border on the outer side's side.
-      const Eigen::Vector3d in_other = other_T_own * x;
-      if (!(in_other.z() > 0.0)) return std::nullopt;
-      const Eigen::Vector2d ideal(other.fx_px * in_other.x() / in_other.z() + other.cx_px,
-                                  other.fy_px * in_other.y() / in_other.z() + other.cy_px);
-      const double raw_u = distort(ideal, other).x();
-      // (Past the distortion's fold on that side of the image, the point is beyond it too.)
-      const bool folded = past_distortion_fold(ideal, other) &&
-                          (own_image == 0 ? ideal.x() < other.cx_px : ideal.x() > other.cx_px);
-      const bool beyond =
-          folded || (own_image == 0 ? raw_u < -0.5 + kMaxInsideBorderPx
-                                    : raw_u > other.width_px - 0.5 - kMaxInsideBorderPx);
-      // (A swept outer side leaves the inner one, placed, on the side away from that border.)
-      verify_outer = verify_outer || swapped || !beyond;
-      // A door's width, seen from within about 78 deg of head-on.
-      const Eigen::Vector3d along = x - inner_end[e];
-      const double width_m = along.norm();
-      if (width_m < door.min_width_m || width_m > door.max_width_m) return std::nullopt;
-      const Eigen::Vector3d middle = 0.5 * (x + inner_end[e]);
-      const Eigen::Vector3d normal = along.cross(u).normalized();
-      if (std::abs(normal.dot(middle.normalized())) < kMinCosViewing) return std::nullopt;
-    }
-    if (verify_outer) {
-      // The outer side's horizontal distance: the mean of its real corners'.
-      const double outer_m = real[0] && real[1]
-                                 ? 0.5 * (sweep.horizontal_distance(outer_end[0]) +
-                                          sweep.horizontal_distance(outer_end[1]))
-                                 : sweep.horizontal_distance(outer_end[real[0] ? 0 : 1]);
-      const auto found = sweep.correlate(c[outer[0]], c[outer[1]], outer_m, kSideSearchPx,
-                                         options.min_depth_m, options.max_depth_m);
-      const bool shown =
-          found && found->correlation >= options.min_single_view_correlation &&
-          std::abs(found->horizontal_distance_m - outer_m) <= kMaxOuterDepthMismatch * outer_m;
-      // Or, for a swept outer side, no edge at all where the planes put the placed side.
-      const auto unseen = swapped && !shown
-                              ? sweep.correlate(c[outer[0]], c[outer[1]], outer_m, 1.0,
-                                                options.min_depth_m, options.max_depth_m)
-                              : std::nullopt;
-      if (!shown && !(unseen && unseen->contrast_ratio < kMaxMergedSideContrast)) {
-        return std::nullopt;
-      }
-    }
-    OneSideDoor out;
-    const double inner_height_m = (inner_end[0] - inner_end[1]).dot(u);
-    if (cut == BorderCut::kNone) {
-      const Eigen::Vector3d outer_side = outer_end[0] - outer_end[1];
-      const double outer_height_m = outer_side.dot(u);
-      const double lean_m = (outer_side - outer_height_m * u).norm();
-      if (lean_m > kMaxOuterLean * inner_height_m) return std::nullopt;
-      // The outer side's corners are at its inner ends' heights: one height for both sides.
-      if (height_range &&
-          (inner_height_m < height_range->min_m || inner_height_m > height_range->max_m)) {
-        return std::nullopt;
-      }
-      out.centre_m = 0.25 * (inner_end[0] + inner_end[1] + outer_end[0] + outer_end[1]);
-      return out;
-    }
-    const std::vector<double>& typical = door.typical_heights_m;
-    if (inner_height_m < 0.5 * typical.front()) return std::nullopt;
-    const auto height = std::find_if(typical.begin(), typical.end(), [&](double h) {
-      return inner_height_m <= kMaxVisibleOfTypical * h;
-    });
-    if (height == typical.end()) return std::nullopt;
-    const bool top_cut = cut == BorderCut::kTop;
-    const std::size_t e = top_cut ? 1 : 0;  // the edge shown whole
-    out.centre_m = 0.5 * (inner_end[e] + outer_end[e]) + (top_cut ? 0.5 : -0.5) * *height * u;
-    out.height_sigma_m = 0.5 * door.height_sigma_m;
-    return out;
-  };
+  const OneSidePlacement placement(c, cut, own_image, sweep, other, other_T_own, u, k_inverse,
+                                   options, door, height_range, swapped, inner, outer);
+  const auto door_at = [&](double distance_m) { return placement.at(distance_m); };
   std::optional<OneSideDoor> found;
   int admissible = 0;
   for (const auto& [distance_m, score] : candidates) {
