@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -38,6 +39,78 @@ double ideal_corner_response(int block_size) {
     return out;
   }();
   return table[static_cast<std::size_t>(block_size)];
+}
+
+// Contrast: the median absolute difference between the blob's mean grey and the pixels of a
+// ring 3-4 px around it. Not the mean of the ring: a handle near a door's edge has the dark door
+// on one side and the bright carcass on the other, whose mean can equal the handle's grey. Not
+// the pixels right at the outline either: across a blurred outline they are half-way, and the
+// weak corners of a blurred smear would look strong against a weak contrast.
+std::optional<double> ring_contrast_grey(const cv::Mat& grey, const cv::Rect& roi,
+                                         const Blob& blob) {
+  cv::Mat inside(roi.height, roi.width, CV_8U, cv::Scalar(0));
+  for (const PixelRun& run : blob.runs) {
+    const int v = run.v - roi.y;
+    const int begin = std::max(run.u_begin - roi.x, 0);
+    const int end = std::min(run.u_end - roi.x, roi.width);
+    if (v < 0 || v >= roi.height || begin >= end) continue;
+    std::fill(inside.ptr<std::uint8_t>(v) + begin, inside.ptr<std::uint8_t>(v) + end,
+              std::uint8_t{1});
+  }
+  cv::Mat near, grown;
+  cv::dilate(inside, near, cv::Mat(), cv::Point(-1, -1), 2);
+  cv::dilate(near, grown, cv::Mat(), cv::Point(-1, -1), 2);
+  double sum_in = 0.0, n_in = 0.0;
+  for (int v = 0; v < roi.height; ++v) {
+    const std::uint8_t* g = grey.ptr<std::uint8_t>(v);
+    const std::uint8_t* m = inside.ptr<std::uint8_t>(v);
+    for (int u = 0; u < roi.width; ++u) {
+      if (m[u] != 0) {
+        sum_in += g[u];
+        n_in += 1.0;
+      }
+    }
+  }
+  if (n_in == 0.0) return std::nullopt;
+  const double mean_in = sum_in / n_in;
+  std::array<int, 256> histogram{};
+  int n_ring = 0;
+  for (int v = 0; v < roi.height; ++v) {
+    const std::uint8_t* g = grey.ptr<std::uint8_t>(v);
+    const std::uint8_t* n = near.ptr<std::uint8_t>(v);
+    const std::uint8_t* r = grown.ptr<std::uint8_t>(v);
+    for (int u = 0; u < roi.width; ++u) {
+      if (r[u] == 0 || n[u] != 0) continue;
+      ++histogram[static_cast<std::size_t>(std::min(255.0, std::abs(g[u] - mean_in) + 0.5))];
+      ++n_ring;
+    }
+  }
+  if (n_ring == 0) return std::nullopt;
+  int seen = 0;
+  for (std::size_t level = 0; level < histogram.size(); ++level) {
+    seen += histogram[level];
+    if (2 * seen >= n_ring) return static_cast<double>(level);
+  }
+  return std::nullopt;
+}
+
+// The middle half of the bar: per 1 px step along the major axis, the strongest response across
+// the bar (its two edges and a pixel beyond); their median.
+template <class ResponseAt>
+double side_median_response(const Blob& blob, const BlobAxes& axes, const ResponseAt& response_at) {
+  const Eigen::Vector2d& c = blob.centroid_px;
+  std::vector<double> across;
+  for (double t = 0.5 * axes.a_min_px; t <= 0.5 * axes.a_max_px; t += 1.0) {
+    double best = 0.0;
+    for (double s = axes.b_min_px - 1.0; s <= axes.b_max_px + 1.0; s += 0.5) {
+      best = std::max(best, response_at(c + t * blob.major_axis + s * blob.minor_axis));
+    }
+    across.push_back(best);
+  }
+  if (across.empty()) return 0.0;
+  auto middle = across.begin() + static_cast<std::ptrdiff_t>(across.size() / 2);
+  std::nth_element(across.begin(), middle, across.end());
+  return *middle;
 }
 
 }  // namespace
@@ -69,57 +142,9 @@ CornerVerification verify_handle_corners(const cv::Mat& bgr_image, const Blob& b
   cv::Mat response;
   cv::cornerMinEigenVal(grey, response, block, 3);
 
-  // Contrast: the median absolute difference between the blob's mean grey and the pixels of a
-  // ring 3-4 px around it. Not the mean of the ring: a handle near a door's edge has the dark door
-  // on one side and the bright carcass on the other, whose mean can equal the handle's grey. Not
-  // the pixels right at the outline either: across a blurred outline they are half-way, and the
-  // weak corners of a blurred smear would look strong against a weak contrast.
-  cv::Mat inside(roi.height, roi.width, CV_8U, cv::Scalar(0));
-  for (const PixelRun& run : blob.runs) {
-    const int v = run.v - roi.y;
-    const int begin = std::max(run.u_begin - roi.x, 0);
-    const int end = std::min(run.u_end - roi.x, roi.width);
-    if (v < 0 || v >= roi.height || begin >= end) continue;
-    std::fill(inside.ptr<std::uint8_t>(v) + begin, inside.ptr<std::uint8_t>(v) + end,
-              std::uint8_t{1});
-  }
-  cv::Mat near, grown;
-  cv::dilate(inside, near, cv::Mat(), cv::Point(-1, -1), 2);
-  cv::dilate(near, grown, cv::Mat(), cv::Point(-1, -1), 2);
-  double sum_in = 0.0, n_in = 0.0;
-  for (int v = 0; v < roi.height; ++v) {
-    const std::uint8_t* g = grey.ptr<std::uint8_t>(v);
-    const std::uint8_t* m = inside.ptr<std::uint8_t>(v);
-    for (int u = 0; u < roi.width; ++u) {
-      if (m[u] != 0) {
-        sum_in += g[u];
-        n_in += 1.0;
-      }
-    }
-  }
-  if (n_in == 0.0) return out;
-  const double mean_in = sum_in / n_in;
-  std::array<int, 256> histogram{};
-  int n_ring = 0;
-  for (int v = 0; v < roi.height; ++v) {
-    const std::uint8_t* g = grey.ptr<std::uint8_t>(v);
-    const std::uint8_t* n = near.ptr<std::uint8_t>(v);
-    const std::uint8_t* r = grown.ptr<std::uint8_t>(v);
-    for (int u = 0; u < roi.width; ++u) {
-      if (r[u] == 0 || n[u] != 0) continue;
-      ++histogram[static_cast<std::size_t>(std::min(255.0, std::abs(g[u] - mean_in) + 0.5))];
-      ++n_ring;
-    }
-  }
-  if (n_ring == 0) return out;
-  int seen = 0;
-  for (std::size_t level = 0; level < histogram.size(); ++level) {
-    seen += histogram[level];
-    if (2 * seen >= n_ring) {
-      out.contrast_grey = static_cast<double>(level);
-      break;
-    }
-  }
+  const std::optional<double> contrast_grey = ring_contrast_grey(grey, roi, blob);
+  if (!contrast_grey) return out;
+  out.contrast_grey = *contrast_grey;
   const double contrast = out.contrast_grey / 255.0;
   const double ideal = ideal_corner_response(block) * contrast * contrast;
 
@@ -140,26 +165,10 @@ CornerVerification verify_handle_corners(const cv::Mat& bgr_image, const Blob& b
   };
   const Eigen::Vector2d& c = blob.centroid_px;
   const Eigen::Vector2d& e1 = blob.major_axis;
-  const Eigen::Vector2d& e2 = blob.minor_axis;
   const double end_low = strongest_near(c + axes.a_min_px * e1);
   const double end_high = strongest_near(c + axes.a_max_px * e1);
 
-  // The middle half of the bar: per 1 px step along the major axis, the strongest response across
-  // the bar (its two edges and a pixel beyond); their median.
-  std::vector<double> across;
-  for (double t = 0.5 * axes.a_min_px; t <= 0.5 * axes.a_max_px; t += 1.0) {
-    double best = 0.0;
-    for (double s = axes.b_min_px - 1.0; s <= axes.b_max_px + 1.0; s += 0.5) {
-      best = std::max(best, response_at(c + t * e1 + s * e2));
-    }
-    across.push_back(best);
-  }
-  double side_median = 0.0;
-  if (!across.empty()) {
-    auto middle = across.begin() + static_cast<std::ptrdiff_t>(across.size() / 2);
-    std::nth_element(across.begin(), middle, across.end());
-    side_median = *middle;
-  }
+  const double side_median = side_median_response(blob, axes, response_at);
 
   if (ideal > 0.0) {
     out.end_fraction[0] = end_low / ideal;
