@@ -46,6 +46,69 @@ constexpr double kMinVisibleOfTypicalWidth = 0.5;
 
 }  // namespace
 
+namespace {
+
+// The whole side's top and bottom at the depth where the images around it correlate, searched
+// around the outlines' depth (side_correlation.hpp), when that peak is clear by `min_peak_margin`
+// (a run of equal doors repeats every edge); unchanged otherwise.
+void refine_by_correlation(const SideCorrelator& correlator,
+                           const std::array<Eigen::Vector2d, 4>& lc,
+                           const std::array<int, 2>& whole, const std::array<int, 2>& at_border,
+                           const StereoMatchOptions& options, double min_peak_margin,
+                           Eigen::Vector3d& top, Eigen::Vector3d& bottom) {
+  const double edges_px =
+      0.5 * ((lc[at_border[0]] - lc[whole[0]]).norm() + (lc[at_border[1]] - lc[whole[1]]).norm());
+  const double search_px = kSideSearchPx + kSideSearchWidthFraction * edges_px;
+  const double initial_m =
+      0.5 * (correlator.horizontal_distance(top) + correlator.horizontal_distance(bottom));
+  const auto depth = correlator.correlate(lc[whole[0]], lc[whole[1]], initial_m, search_px,
+                                          options.min_depth_m, options.max_depth_m);
+  if (!(depth && depth->correlation >= options.min_side_correlation &&
+        depth->second_correlation <= depth->correlation - min_peak_margin)) {
+    return;
+  }
+  const auto top_point = correlator.point_at(lc[whole[0]], depth->horizontal_distance_m);
+  const auto bottom_point = correlator.point_at(lc[whole[1]], depth->horizontal_distance_m);
+  if (top_point && bottom_point) {
+    top = *top_point;
+    bottom = *bottom_point;
+  }
+}
+
+// The top and bottom edges from the whole side up to the border, in the image that sees more of
+// the door (`corners`: its outline): each where its corner's ray meets the level plane of its
+// side end, made level; their mean length and mean direction.
+struct EdgesToBorder {
+  std::array<Eigen::Vector3d, 2> along{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  int found = 0;
+  double visible_m = 0.0;
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();  // the sum of the unit edges
+};
+
+EdgesToBorder edges_to_border(const Triangulator& triangulator,
+                              const std::array<Eigen::Vector2d, 4>& corners, bool left_image,
+                              const std::array<int, 2>& at_border,
+                              const std::array<Eigen::Vector3d, 2>& side_end,
+                              const Eigen::Vector3d& u) {
+  EdgesToBorder out;
+  for (std::size_t e = 0; e < 2; ++e) {
+    const int k = at_border[e];
+    const auto point = left_image
+                           ? triangulator.left_ray_on_level_plane(corners[k], side_end[e], u)
+                           : triangulator.right_ray_on_level_plane(corners[k], side_end[e], u);
+    if (!point) continue;
+    const Eigen::Vector3d a = *point - side_end[e];
+    out.along[e] = a - a.dot(u) * u;  // level by construction, up to rounding
+    if (!(out.along[e].norm() > 0.0)) continue;
+    out.visible_m += out.along[e].norm();
+    out.direction += out.along[e].normalized();
+    ++out.found;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::optional<Candidate> judge_side_cut_pair(
     int l, int r, const BorderCutView& left, const BorderCutView& right,
     const EpipolarGeometry& epipolar, const Triangulator& triangulator,
@@ -116,25 +179,10 @@ std::optional<Candidate> judge_side_cut_pair(
   if (!ends || !triangulation) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   Eigen::Vector3d top = (*ends)[static_cast<std::size_t>(2 * whole_side)];
   Eigen::Vector3d bottom = (*ends)[static_cast<std::size_t>(2 * whole_side + 1)];
-  // The side's depth where the images around it correlate, searched around the outlines' depth
-  // (side_correlation.hpp), when that peak is clear (a run of equal doors repeats every edge).
+  // The side's depth where the images around it correlate, when that peak is clear.
   if (correlator) {
-    const double edges_px =
-        0.5 * ((lc[at_border[0]] - lc[whole[0]]).norm() + (lc[at_border[1]] - lc[whole[1]]).norm());
-    const double search_px = kSideSearchPx + kSideSearchWidthFraction * edges_px;
-    const double initial_m =
-        0.5 * (correlator->horizontal_distance(top) + correlator->horizontal_distance(bottom));
-    const auto depth = correlator->correlate(lc[whole[0]], lc[whole[1]], initial_m, search_px,
-                                             options.min_depth_m, options.max_depth_m);
-    if (depth && depth->correlation >= options.min_side_correlation &&
-        depth->second_correlation <= depth->correlation - door.min_peak_margin) {
-      const auto top_point = correlator->point_at(lc[whole[0]], depth->horizontal_distance_m);
-      const auto bottom_point = correlator->point_at(lc[whole[1]], depth->horizontal_distance_m);
-      if (top_point && bottom_point) {
-        top = *top_point;
-        bottom = *bottom_point;
-      }
-    }
+    refine_by_correlation(*correlator, lc, whole, at_border, options, door.min_peak_margin, top,
+                          bottom);
   }
   // A door's height: both ends are seen.
   const double height_m = (top - bottom).dot(u);
@@ -145,23 +193,12 @@ std::optional<Candidate> judge_side_cut_pair(
     return refuse(trace, StereoGate::kHeight, height_m, height_range->max_m);
   }
   // The edges up to the border, in the image that sees more of the door.
-  const std::array<Eigen::Vector3d, 2> side_end{top, bottom};
-  std::array<Eigen::Vector3d, 2> along{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  int found = 0;
-  double visible_m = 0.0;
-  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
-  for (std::size_t e = 0; e < 2; ++e) {
-    const int k = at_border[e];
-    const auto point = left_cut ? triangulator.left_ray_on_level_plane(lc[k], side_end[e], u)
-                                : triangulator.right_ray_on_level_plane(rc[k], side_end[e], u);
-    if (!point) continue;
-    const Eigen::Vector3d a = *point - side_end[e];
-    along[e] = a - a.dot(u) * u;  // level by construction, up to rounding
-    if (!(along[e].norm() > 0.0)) continue;
-    visible_m += along[e].norm();
-    direction += along[e].normalized();
-    ++found;
-  }
+  const EdgesToBorder edges =
+      edges_to_border(triangulator, left_cut ? lc : rc, left_cut, at_border, {top, bottom}, u);
+  const int found = edges.found;
+  const std::array<Eigen::Vector3d, 2>& along = edges.along;
+  double visible_m = edges.visible_m;
+  Eigen::Vector3d direction = edges.direction;
   if (found == 0) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
   if (found == 2) {
     const double cos_angle = along[0].normalized().dot(along[1].normalized());
