@@ -135,6 +135,44 @@ void read_cut_bars(const config::Node& section, StereoMatchOptions& out) {
   }
 }
 
+// The section's plain numbers: key, member, allowed range.
+struct NumberKey {
+  const char* key;
+  double StereoMatchOptions::*member;
+  double lo, hi;
+};
+constexpr NumberKey kNumberKeys[] = {
+    {"max_epipolar_distance_px", &StereoMatchOptions::max_epipolar_distance_px, 0.01, 1000.0},
+    {"min_depth_m", &StereoMatchOptions::min_depth_m, 0.01, 1000.0},
+    {"max_depth_m", &StereoMatchOptions::max_depth_m, 0.01, 1000.0},
+    {"max_area_ratio", &StereoMatchOptions::max_area_ratio, 1.001, 1000.0},
+    // Undirected axes differ by at most pi / 2.
+    {"max_orientation_difference_rad", &StereoMatchOptions::max_orientation_difference_rad, 1e-3,
+     1.5708},
+    {"min_elongation_for_orientation", &StereoMatchOptions::min_elongation_for_orientation, 1.0,
+     1000.0},
+    {"max_edge_slope_rad", &StereoMatchOptions::max_edge_slope_rad, 0.0, 1.5},
+    {"max_side_height_mismatch", &StereoMatchOptions::max_side_height_mismatch, 0.0, 1.0},
+    {"min_side_correlation", &StereoMatchOptions::min_side_correlation, 0.0, 1.0},
+    {"min_single_view_correlation", &StereoMatchOptions::min_single_view_correlation, 0.0, 1.0},
+    {"single_view_min_peak_margin", &StereoMatchOptions::single_view_min_peak_margin, 0.0, 2.0},
+    {"single_view_min_separation_m", &StereoMatchOptions::single_view_min_separation_m, 0.0, 10.0},
+    // Below a half: the two sides' bands do not meet.
+    {"neighbour_handle_side_band", &StereoMatchOptions::neighbour_handle_side_band, 0.0, 0.49},
+    {"max_bar_height_spread", &StereoMatchOptions::max_bar_height_spread, 0.0, 1.0},
+    // Below pi/2: sin() still grows.
+    {"max_side_tilt_rad", &StereoMatchOptions::max_side_tilt_rad, 0.0, 1.5},
+    {"pixel_sigma_px", &StereoMatchOptions::pixel_sigma_px, 1e-3, 100.0},
+    {"max_twin_handle_gap", &StereoMatchOptions::max_twin_handle_gap, 0.0, 1.0},
+};
+
+// A count of handles inside an outline, [0, 100].
+int bars_inside(const config::Node& v) {
+  const std::int64_t bars = v.as_int();
+  if (bars < 0 || bars > 100) v.fail("must be an integer in [0, 100]");
+  return static_cast<int>(bars);
+}
+
 }  // namespace
 
 StereoMatchOptions stereo_match_options_from(const config::Node& section) {
@@ -165,71 +203,27 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "max_twin_handle_gap",
                        "border_cut",
                        "cut_bars"});
-  if (const auto v = section.find("max_epipolar_distance_px")) {
-    out.max_epipolar_distance_px = v->as_double_in(0.01, 1000.0);
+  for (const NumberKey& number : kNumberKeys) {
+    if (const auto v = section.find(number.key)) {
+      out.*number.member = v->as_double_in(number.lo, number.hi);
+    }
   }
-  if (const auto v = section.find("min_depth_m")) out.min_depth_m = v->as_double_in(0.01, 1000.0);
-  if (const auto v = section.find("max_depth_m")) out.max_depth_m = v->as_double_in(0.01, 1000.0);
   if (out.max_depth_m <= out.min_depth_m) {
     (section.has("max_depth_m") ? section.at("max_depth_m") : section.at("min_depth_m"))
         .fail("max_depth_m (" + std::to_string(out.max_depth_m) + ") must exceed min_depth_m (" +
               std::to_string(out.min_depth_m) + ")");
   }
-  if (const auto v = section.find("max_area_ratio")) {
-    out.max_area_ratio = v->as_double_in(1.001, 1000.0);
-  }
-  // Undirected axes differ by at most pi / 2.
-  if (const auto v = section.find("max_orientation_difference_rad")) {
-    out.max_orientation_difference_rad = v->as_double_in(1e-3, 1.5708);
-  }
-  if (const auto v = section.find("min_elongation_for_orientation")) {
-    out.min_elongation_for_orientation = v->as_double_in(1.0, 1000.0);
-  }
-  if (const auto v = section.find("max_edge_slope_rad")) {
-    out.max_edge_slope_rad = v->as_double_in(0.0, 1.5);
-  }
-  if (const auto v = section.find("max_side_height_mismatch")) {
-    out.max_side_height_mismatch = v->as_double_in(0.0, 1.0);
-  }
-  if (const auto v = section.find("min_side_correlation")) {
-    out.min_side_correlation = v->as_double_in(0.0, 1.0);
-  }
-  if (const auto v = section.find("min_single_view_correlation")) {
-    out.min_single_view_correlation = v->as_double_in(0.0, 1.0);
-    // The single view sweeps with the side correlation's correlator and images.
-    if (out.min_single_view_correlation > 0.0 && !(out.min_side_correlation > 0.0)) {
-      v->fail("needs min_side_correlation > 0 (the side correlation it sweeps with)");
-    }
-  }
-  if (const auto v = section.find("single_view_min_peak_margin")) {
-    out.single_view_min_peak_margin = v->as_double_in(0.0, 2.0);
-  }
-  if (const auto v = section.find("single_view_min_separation_m")) {
-    out.single_view_min_separation_m = v->as_double_in(0.0, 10.0);
+  // The single view sweeps with the side correlation's correlator and images.
+  if (section.has("min_single_view_correlation") && out.min_single_view_correlation > 0.0 &&
+      !(out.min_side_correlation > 0.0)) {
+    section.at("min_single_view_correlation")
+        .fail("needs min_side_correlation > 0 (the side correlation it sweeps with)");
   }
   if (const auto v = section.find("single_view_max_bars_inside")) {
-    const std::int64_t bars = v->as_int();
-    if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
-    out.single_view_max_bars_inside = static_cast<int>(bars);
+    out.single_view_max_bars_inside = bars_inside(*v);
   }
-  if (const auto v = section.find("neighbour_handle_side_band")) {
-    // Below a half: the two sides' bands do not meet.
-    out.neighbour_handle_side_band = v->as_double_in(0.0, 0.49);
-  }
-  if (const auto v = section.find("pair_max_bars_inside")) {
-    const std::int64_t bars = v->as_int();
-    if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
-    out.pair_max_bars_inside = static_cast<int>(bars);
-  }
-  if (const auto v = section.find("max_bar_height_spread")) {
-    out.max_bar_height_spread = v->as_double_in(0.0, 1.0);
-  }
-  if (const auto v = section.find("max_side_tilt_rad")) {
-    out.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2: sin() still grows
-  }
-  if (const auto v = section.find("pixel_sigma_px")) {
-    out.pixel_sigma_px = v->as_double_in(1e-3, 100.0);
-  }
+  if (const auto v = section.find("pair_max_bars_inside"))
+    out.pair_max_bars_inside = bars_inside(*v);
   if (const auto offsets = section.find("reference_depth_offset_m")) {
     offsets->expect_map();
     for (const std::string& type : offsets->keys()) {
@@ -243,11 +237,9 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       out.bar_types.push_back((*types)[i].as_string());
     }
   }
-  if (const auto v = section.find("max_twin_handle_gap")) {
-    out.max_twin_handle_gap = v->as_double_in(0.0, 1.0);
-    if (out.max_twin_handle_gap > 0.0 && out.bar_types.empty()) {
-      v->fail("needs bar_types (the handles it looks for)");
-    }
+  if (section.has("max_twin_handle_gap") && out.max_twin_handle_gap > 0.0 &&
+      out.bar_types.empty()) {
+    section.at("max_twin_handle_gap").fail("needs bar_types (the handles it looks for)");
   }
   read_ranges(section, out);
   if (const auto classes = section.find("border_cut")) {
