@@ -6,8 +6,10 @@
 #include <opencv2/core.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -68,6 +70,145 @@ struct Extent {
   double length() const { return hi >= lo ? hi - lo + 1.0 : 0.0; }
 };
 
+// Every pixel in the blob's principal frame: a along the bars, t across them (pixels). Both are
+// linear in u along a run, so a run's extremes are at its two ends. Per 1-px slice along the
+// blob, the across coordinates of its pixels (counting sort by slice into one array: slice k
+// holds ts[first[k] .. first[k + 1])).
+struct Slices {
+  Extent along, across;
+  int count = 0;
+  std::vector<int> first;
+  std::vector<double> ts;
+};
+
+Slices slices_of(const std::vector<PixelRun>& runs, const Frame& frame, long area) {
+  Slices out;
+  const auto at = [&](double u, int v) -> Eigen::Vector2d {
+    return Eigen::Vector2d(u, v) - frame.centroid;
+  };
+  for (const PixelRun& r : runs) {
+    for (const double u : {double(r.u_begin), double(r.u_end - 1)}) {
+      out.along.add(at(u, r.v).dot(frame.along));
+      out.across.add(at(u, r.v).dot(frame.across));
+    }
+  }
+  out.count = static_cast<int>(std::floor(out.along.hi - out.along.lo)) + 1;
+  out.first.assign(static_cast<std::size_t>(out.count) + 1, 0);
+  std::vector<std::pair<int, double>> slice_and_t;
+  slice_and_t.reserve(static_cast<std::size_t>(area));
+  for (const PixelRun& r : runs) {
+    const Eigen::Vector2d d0 = at(r.u_begin, r.v);
+    const double a0 = d0.dot(frame.along) - out.along.lo, t0 = d0.dot(frame.across);
+    for (int k = 0; k < r.u_end - r.u_begin; ++k) {
+      const int slice = std::clamp(static_cast<int>(a0 + k * frame.along.x()), 0, out.count - 1);
+      slice_and_t.emplace_back(slice, t0 + k * frame.across.x());
+      ++out.first[static_cast<std::size_t>(slice) + 1];
+    }
+  }
+  for (int k = 0; k < out.count; ++k) out.first[k + 1] += out.first[k];
+  out.ts.resize(slice_and_t.size());
+  std::vector<int> next(out.first.begin(), out.first.end() - 1);
+  for (const auto& [slice, t] : slice_and_t) out.ts[static_cast<std::size_t>(next[slice]++)] = t;
+  return out;
+}
+
+// The gap between two bars: a cut position t0 is supported by a slice when the slice has pixels
+// on both sides of t0 and none within kGapPx / 2 of it; support is counted on a kBinPx grid. The
+// middle of the best-supported stretch of bins, when enough slices support it.
+std::optional<double> gap_across(Slices& slices, const SegmentationOptions& options) {
+  const Extent& across = slices.across;
+  const int bins = static_cast<int>(std::ceil((across.hi - across.lo) / kBinPx)) + 1;
+  std::vector<int> support(static_cast<std::size_t>(bins), 0);
+  int occupied_slices = 0;
+  for (int slice = 0; slice < slices.count; ++slice) {
+    const auto begin = slices.ts.begin() + slices.first[slice];
+    const auto end = slices.ts.begin() + slices.first[slice + 1];
+    if (begin == end) continue;
+    ++occupied_slices;
+    std::sort(begin, end);
+    for (auto i = begin; i + 1 < end; ++i) {
+      if (i[1] - i[0] < 1.0 + kGapPx) continue;  // neighbouring pixels are ~1 px apart
+      const int lo = static_cast<int>(std::ceil((i[0] + 0.5 * kGapPx - across.lo) / kBinPx));
+      const int hi = static_cast<int>(std::floor((i[1] - 0.5 * kGapPx - across.lo) / kBinPx));
+      for (int b = std::max(lo, 0); b <= std::min(hi, bins - 1); ++b) {
+        ++support[static_cast<std::size_t>(b)];
+      }
+    }
+  }
+  const auto best = std::max_element(support.begin(), support.end());
+  if (best == support.end() ||
+      *best < options.min_twin_gap_support * static_cast<double>(occupied_slices)) {
+    return std::nullopt;
+  }
+  const auto first_best = static_cast<int>(best - support.begin());
+  int last_best = first_best;
+  while (last_best + 1 < bins && support[static_cast<std::size_t>(last_best + 1)] == *best) {
+    ++last_best;
+  }
+  return across.lo + 0.5 * (first_best + last_best) * kBinPx;
+}
+
+// Whether the gap shows another colour than the blob: the door behind two handle bars, a
+// surface of another colour. The reveal between two fronts seen at a grazing angle is a gap too,
+// but it shows the fronts' own hue (their shaded side face): no two bars. Compared as
+// chromaticity, RGB / (R + G + B).
+bool gap_shows_another_colour(const std::vector<PixelRun>& runs, const Slices& slices,
+                              const Frame& frame, double cut_t, const cv::Mat& bgr_image,
+                              const SegmentationOptions& options) {
+  Eigen::Vector3d blob_sum = Eigen::Vector3d::Zero(), gap_sum = Eigen::Vector3d::Zero();
+  const auto rgb_at = [&](int u, int v) {
+    const cv::Vec3b& p = bgr_image.at<cv::Vec3b>(v, u);
+    return Eigen::Vector3d(p[2], p[1], p[0]);
+  };
+  for (const PixelRun& r : runs) {
+    for (int u = r.u_begin; u < r.u_end; ++u) blob_sum += rgb_at(u, r.v);
+  }
+  for (int slice = 0; slice < slices.count; ++slice) {
+    const Eigen::Vector2d p =
+        frame.centroid + (slices.along.lo + slice + 0.5) * frame.along + cut_t * frame.across;
+    const int u = static_cast<int>(std::lround(p.x())), v = static_cast<int>(std::lround(p.y()));
+    if (u < 0 || v < 0 || u >= bgr_image.cols || v >= bgr_image.rows) continue;
+    if (slices.first[slice + 1] > slices.first[slice]) gap_sum += rgb_at(u, v);
+  }
+  const auto chromaticity = [](const Eigen::Vector3d& rgb) {
+    const double sum = rgb.sum();
+    return sum > 0.0 ? Eigen::Vector3d(rgb / sum) : Eigen::Vector3d::Constant(1.0 / 3.0);
+  };
+  return !((chromaticity(blob_sum) - chromaticity(gap_sum)).cwiseAbs().maxCoeff() <
+           options.min_twin_gap_chromaticity_difference);
+}
+
+// One side of the line t = cut_t: its runs, extents and area.
+struct Piece {
+  std::vector<PixelRun> runs;
+  Extent along, across;
+  long area = 0;
+};
+
+// Each run split where the line t = cut_t crosses its row. One side of a straight line within a
+// run is one interval (t is linear in u): each run gives each piece at most one run, in the
+// input's order, so both stay sorted by (v, u_begin).
+std::array<Piece, 2> split_at(const std::vector<PixelRun>& runs, const Frame& frame, double cut_t) {
+  std::array<Piece, 2> pieces;  // t < cut_t, t >= cut_t
+  for (const PixelRun& r : runs) {
+    std::array<int, 2> begin{-1, -1}, end{-1, -1};
+    for (int u = r.u_begin; u < r.u_end; ++u) {
+      const Eigen::Vector2d d = Eigen::Vector2d(u, r.v) - frame.centroid;
+      const double a = d.dot(frame.along), t = d.dot(frame.across);
+      const std::size_t side = t < cut_t ? 0 : 1;
+      if (begin[side] < 0) begin[side] = u;
+      end[side] = u + 1;
+      pieces[side].along.add(a);
+      pieces[side].across.add(t);
+      ++pieces[side].area;
+    }
+    for (std::size_t side = 0; side < 2; ++side) {
+      if (begin[side] >= 0) pieces[side].runs.push_back({r.v, begin[side], end[side]});
+    }
+  }
+  return pieces;
+}
+
 }  // namespace
 
 std::vector<std::vector<PixelRun>> split_twin_bars(std::vector<PixelRun> runs,
@@ -89,146 +230,28 @@ std::vector<std::vector<PixelRun>> split_twin_bars(std::vector<PixelRun> runs,
     out.push_back(std::move(runs));
     return out;
   }
-
-  // Every pixel in the blob's principal frame: a along the bars, t across them (pixels). Both
-  // are linear in u along a run, so a run's extremes are at its two ends.
-  Extent along_extent, across_extent;
-  const auto at = [&](double u, int v) -> Eigen::Vector2d {
-    return Eigen::Vector2d(u, v) - frame.centroid;
-  };
-  for (const PixelRun& r : runs) {
-    for (const double u : {double(r.u_begin), double(r.u_end - 1)}) {
-      along_extent.add(at(u, r.v).dot(frame.along));
-      across_extent.add(at(u, r.v).dot(frame.across));
-    }
-  }
-  // Per 1-px slice along the blob, the across coordinates of its pixels (counting sort by slice
-  // into one array: slice k holds ts[first[k] .. first[k + 1])).
-  const int slices = static_cast<int>(std::floor(along_extent.hi - along_extent.lo)) + 1;
-  std::vector<int> first(static_cast<std::size_t>(slices) + 1, 0);
-  std::vector<std::pair<int, double>> slice_and_t;
-  slice_and_t.reserve(static_cast<std::size_t>(area));
-  for (const PixelRun& r : runs) {
-    const Eigen::Vector2d d0 = at(r.u_begin, r.v);
-    const double a0 = d0.dot(frame.along) - along_extent.lo, t0 = d0.dot(frame.across);
-    for (int k = 0; k < r.u_end - r.u_begin; ++k) {
-      const int slice = std::clamp(static_cast<int>(a0 + k * frame.along.x()), 0, slices - 1);
-      slice_and_t.emplace_back(slice, t0 + k * frame.across.x());
-      ++first[static_cast<std::size_t>(slice) + 1];
-    }
-  }
-  for (int k = 0; k < slices; ++k) first[k + 1] += first[k];
-  std::vector<double> ts(slice_and_t.size());
-  {
-    std::vector<int> next(first.begin(), first.end() - 1);
-    for (const auto& [slice, t] : slice_and_t) ts[static_cast<std::size_t>(next[slice]++)] = t;
-  }
-
-  // A cut position t0 is supported by a slice when the slice has pixels on both sides of t0 and
-  // none within kGapPx / 2 of it: the gap between two bars. Support counted on a kBinPx grid.
-  const int bins = static_cast<int>(std::ceil((across_extent.hi - across_extent.lo) / kBinPx)) + 1;
-  std::vector<int> support(static_cast<std::size_t>(bins), 0);
-  int occupied_slices = 0;
-  for (int slice = 0; slice < slices; ++slice) {
-    const auto begin = ts.begin() + first[slice], end = ts.begin() + first[slice + 1];
-    if (begin == end) continue;
-    ++occupied_slices;
-    std::sort(begin, end);
-    for (auto i = begin; i + 1 < end; ++i) {
-      if (i[1] - i[0] < 1.0 + kGapPx) continue;  // neighbouring pixels are ~1 px apart
-      const int lo = static_cast<int>(std::ceil((i[0] + 0.5 * kGapPx - across_extent.lo) / kBinPx));
-      const int hi =
-          static_cast<int>(std::floor((i[1] - 0.5 * kGapPx - across_extent.lo) / kBinPx));
-      for (int b = std::max(lo, 0); b <= std::min(hi, bins - 1); ++b) {
-        ++support[static_cast<std::size_t>(b)];
-      }
-    }
-  }
-  const auto best = std::max_element(support.begin(), support.end());
-  if (best == support.end() ||
-      *best < options.min_twin_gap_support * static_cast<double>(occupied_slices)) {
+  Slices slices = slices_of(runs, frame, area);
+  const std::optional<double> cut_t = gap_across(slices, options);
+  if (!cut_t || !gap_shows_another_colour(runs, slices, frame, *cut_t, bgr_image, options)) {
     out.push_back(std::move(runs));
     return out;
   }
-  // The middle of the best-supported stretch of bins: the centre of the gap.
-  const auto first_best = static_cast<int>(best - support.begin());
-  int last_best = first_best;
-  while (last_best + 1 < bins && support[static_cast<std::size_t>(last_best + 1)] == *best) {
-    ++last_best;
-  }
-  const double cut_t = across_extent.lo + 0.5 * (first_best + last_best) * kBinPx;
-
-  // What the gap shows: the door behind two handle bars, a surface of another colour. The
-  // reveal between two fronts seen at a grazing angle is a gap too, but it shows the fronts' own
-  // hue (their shaded side face): no two bars. Compared as chromaticity, RGB / (R + G + B).
-  Eigen::Vector3d blob_sum = Eigen::Vector3d::Zero(), gap_sum = Eigen::Vector3d::Zero();
-  const auto rgb_at = [&](int u, int v) {
-    const cv::Vec3b& p = bgr_image.at<cv::Vec3b>(v, u);
-    return Eigen::Vector3d(p[2], p[1], p[0]);
-  };
-  for (const PixelRun& r : runs) {
-    for (int u = r.u_begin; u < r.u_end; ++u) blob_sum += rgb_at(u, r.v);
-  }
-  for (int slice = 0; slice < slices; ++slice) {
-    const Eigen::Vector2d p =
-        frame.centroid + (along_extent.lo + slice + 0.5) * frame.along + cut_t * frame.across;
-    const int u = static_cast<int>(std::lround(p.x())), v = static_cast<int>(std::lround(p.y()));
-    if (u < 0 || v < 0 || u >= bgr_image.cols || v >= bgr_image.rows) continue;
-    if (first[slice + 1] > first[slice]) gap_sum += rgb_at(u, v);
-  }
-  const auto chromaticity = [](const Eigen::Vector3d& rgb) {
-    const double sum = rgb.sum();
-    return sum > 0.0 ? Eigen::Vector3d(rgb / sum) : Eigen::Vector3d::Constant(1.0 / 3.0);
-  };
-  if ((chromaticity(blob_sum) - chromaticity(gap_sum)).cwiseAbs().maxCoeff() <
-      options.min_twin_gap_chromaticity_difference) {
-    out.push_back(std::move(runs));
-    return out;
-  }
-
-  // The two pieces: each run split where the line t = cut_t crosses its row.
-  std::vector<PixelRun> below, above;  // t < cut_t, t >= cut_t
-  Extent below_along, above_along, below_across, above_across;
-  long below_area = 0, above_area = 0;
-  for (const PixelRun& r : runs) {
-    int begin_below = -1, end_below = -1, begin_above = -1, end_above = -1;
-    for (int u = r.u_begin; u < r.u_end; ++u) {
-      const Eigen::Vector2d d = Eigen::Vector2d(u, r.v) - frame.centroid;
-      const double a = d.dot(frame.along), t = d.dot(frame.across);
-      if (t < cut_t) {
-        if (begin_below < 0) begin_below = u;
-        end_below = u + 1;
-        below_along.add(a);
-        below_across.add(t);
-        ++below_area;
-      } else {
-        if (begin_above < 0) begin_above = u;
-        end_above = u + 1;
-        above_along.add(a);
-        above_across.add(t);
-        ++above_area;
-      }
-    }
-    // One side of a straight line within a run is one interval (t is linear in u): each run gives
-    // each piece at most one run, in the input's order, so both stay sorted by (v, u_begin).
-    if (begin_below >= 0) below.push_back({r.v, begin_below, end_below});
-    if (begin_above >= 0) above.push_back({r.v, begin_above, end_above});
-  }
+  std::array<Piece, 2> pieces = split_at(runs, frame, *cut_t);
   // Two bars: each piece a full-length bar of its own, not a standoff or a door's stile.
-  const double length = along_extent.length();
-  const bool bars = below_area >= options.min_blob_px && above_area >= options.min_blob_px &&
-                    below_along.length() >= kMinBarExtent * length &&
-                    above_along.length() >= kMinBarExtent * length &&
-                    below_along.length() >= kMinBarElongation * below_across.length() &&
-                    above_along.length() >= kMinBarElongation * above_across.length() &&
-                    static_cast<double>(std::min(below_area, above_area)) >=
-                        options.min_twin_piece_fraction * static_cast<double>(area);
+  const double length = slices.along.length();
+  bool bars = static_cast<double>(std::min(pieces[0].area, pieces[1].area)) >=
+              options.min_twin_piece_fraction * static_cast<double>(area);
+  for (const Piece& piece : pieces) {
+    bars = bars && piece.area >= options.min_blob_px &&
+           piece.along.length() >= kMinBarExtent * length &&
+           piece.along.length() >= kMinBarElongation * piece.across.length();
+  }
   if (!bars) {
     out.push_back(std::move(runs));
     return out;
   }
-  out.push_back(std::move(below));
-  out.push_back(std::move(above));
+  out.push_back(std::move(pieces[0].runs));
+  out.push_back(std::move(pieces[1].runs));
   return out;
 }
 
