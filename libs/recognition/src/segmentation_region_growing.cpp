@@ -264,52 +264,54 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
-}  // namespace
-
-RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& options) {
-  if (bgr_image.type() != CV_8UC3) {
-    throw std::invalid_argument("segment: the image must be CV_8UC3 (BGR)");
+// Region growing over one image, row by row: each row cut into runs, each run joined to the
+// regions of the runs above it that it touches (union-find over runs).
+class RegionGrower {
+ public:
+  RegionGrower(const cv::Mat& bgr_image, const SegmentationOptions& options)
+      : image_(bgr_image),
+        width_(bgr_image.cols),
+        max_step_grey_(static_cast<int>(std::floor(options.max_neighbour_difference_rgb * 255.0))),
+        // 0 (off): a bound no run reaches, 255 grey levels from its mean.
+        max_mean_step_grey_(
+            options.max_run_mean_difference_rgb > 0.0
+                ? static_cast<int>(std::floor(options.max_run_mean_difference_rgb * 255.0))
+                : 255),
+        // Computed once per image: pixels on thin lines neither join nor let regions grow across
+        // them.
+        barrier_(line_barrier(bgr_image, options)),
+        volume_limit_(options.max_colour_volume_rgb3 * 255.0 * 255.0 * 255.0),
+        max_region_px_(options.max_region_px),
+        refused_step_(3 * static_cast<std::size_t>(width_)) {
+    map_.width = bgr_image.cols;
+    map_.height = bgr_image.rows;
+    map_.row_begin.assign(static_cast<std::size_t>(map_.height) + 1, 0);
+    stats_.reserve(static_cast<std::size_t>(map_.height) * 64);
+    parent_.reserve(stats_.capacity());
+    map_.runs.reserve(stats_.capacity());
   }
-  RegionMap map;
-  map.width = bgr_image.cols;
-  map.height = bgr_image.rows;
-  const int width = map.width;
-  map.row_begin.assign(static_cast<std::size_t>(map.height) + 1, 0);
-  if (map.width == 0 || map.height == 0) return map;
 
-  const int max_step_grey =
-      static_cast<int>(std::floor(options.max_neighbour_difference_rgb * 255.0));
-  // 0 (off): a bound no run reaches, 255 grey levels from its mean.
-  const int max_mean_step_grey =
-      options.max_run_mean_difference_rgb > 0.0
-          ? static_cast<int>(std::floor(options.max_run_mean_difference_rgb * 255.0))
-          : 255;
-  // Computed once per image: pixels on thin lines neither join nor let regions grow across them.
-  const cv::Mat barrier = line_barrier(bgr_image, options);
+  RegionMap grow() {
+    for (int v = 0; v < map_.height; ++v) {
+      map_.row_begin[v] = static_cast<int>(map_.runs.size());
+      cut_row(v);
+      if (v > 0) join_row_above(v);
+    }
+    map_.row_begin[map_.height] = static_cast<int>(map_.runs.size());
+    number_regions();
+    return std::move(map_);
+  }
 
-  const VolumeLimit volume_limit(options.max_colour_volume_rgb3 * 255.0 * 255.0 * 255.0);
-  const int max_region_px = options.max_region_px;
-
-  // Per run: its statistics while it is a region root; parent for the
-  // union-find.
-  std::vector<GrownRegion> stats;
-  std::vector<int> parent;
-  stats.reserve(static_cast<std::size_t>(map.height) * 64);
-  parent.reserve(stats.capacity());
-  map.runs.reserve(stats.capacity());
-  std::vector<TouchingRegions> touching_runs;  // a, b: run indices until the end
-  std::vector<std::uint8_t> refused_step(3 * static_cast<std::size_t>(width));  // of one row
-
-  for (int v = 0; v < map.height; ++v) {
-    map.row_begin[v] = static_cast<int>(map.runs.size());
-    const std::uint8_t* row = bgr_image.ptr<std::uint8_t>(v);
-    const std::uint8_t* on_barrier = barrier.ptr<std::uint8_t>(v);
-    mark_refused_steps(row, width, max_step_grey, refused_step.data());
-    // Row pass: cut where the step is refused, the barrier starts or ends, or the run's own
-    // ellipsoid would reach V_max (grow_run). A run of barrier pixels is a run of its own that
-    // joins nothing.
+ private:
+  // Row pass: cut where the step is refused, the barrier starts or ends, or the run's own
+  // ellipsoid would reach V_max (grow_run). A run of barrier pixels is a run of its own that
+  // joins nothing.
+  void cut_row(int v) {
+    const std::uint8_t* row = image_.ptr<std::uint8_t>(v);
+    const std::uint8_t* on_barrier = barrier_.ptr<std::uint8_t>(v);
+    mark_refused_steps(row, width_, max_step_grey_, refused_step_.data());
     int u = 0;
-    while (u < width) {
+    while (u < width_) {
       GrownRegion run;
       const int begin = u;
       const bool is_barrier = on_barrier[u] != 0;
@@ -317,7 +319,7 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
       if (is_barrier) {
         const std::uint8_t* p = row + 3 * u;
         run.rgb_min = run.rgb_max = {p[2], p[1], p[0]};
-        for (++u; u < width && on_barrier[u] != 0; ++u) {
+        for (++u; u < width_ && on_barrier[u] != 0; ++u) {
           const std::uint8_t* q = row + 3 * u;
           for (int c = 0; c < 3; ++c) {
             run.rgb_min[c] = std::min(run.rgb_min[c], q[2 - c]);
@@ -326,81 +328,116 @@ RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& opti
         }
         run.rgb_sum = rgb_sum(row, begin, u);
       } else {
-        u = grow_run(row, on_barrier, refused_step.data(), begin, width, volume_limit,
-                     max_mean_step_grey, run, cut_by_edge);
+        u = grow_run(row, on_barrier, refused_step_.data(), begin, width_, volume_limit_,
+                     max_mean_step_grey_, run, cut_by_edge);
       }
       const int n = u - begin;
       run.pixel_count = n;
       run.u_sum_px = static_cast<std::int64_t>(begin + u - 1) * n / 2;
       run.v_sum_px = static_cast<std::int64_t>(v) * n;
       run.barrier = is_barrier;
-      const int index = static_cast<int>(map.runs.size());
-      map.runs.push_back({v, begin, u, index});
-      stats.push_back(run);
-      parent.push_back(index);
-      if (u < width && !is_barrier && on_barrier[u] == 0) {
-        touching_runs.push_back({index, index + 1, cut_by_edge});
+      const int index = static_cast<int>(map_.runs.size());
+      map_.runs.push_back({v, begin, u, index});
+      stats_.push_back(run);
+      parent_.push_back(index);
+      if (u < width_ && !is_barrier && on_barrier[u] == 0) {
+        touching_runs_.push_back({index, index + 1, cut_by_edge});
       }
     }
-    if (v == 0) continue;
+  }
 
-    // Join the runs of this row to the regions of the overlapping runs of the
-    // row above (never a barrier run: barrier pixels join nothing).
-    const std::uint8_t* above = bgr_image.ptr<std::uint8_t>(v - 1);
-    int a = map.row_begin[v - 1];
-    const int a_end = map.row_begin[v];
-    for (int b = a_end; b < static_cast<int>(map.runs.size()); ++b) {
-      const RegionRun& run = map.runs[b];
-      if (stats[b].barrier) continue;
-      while (a < a_end && map.runs[a].u_end <= run.u_begin) ++a;
-      for (int k_above = a; k_above < a_end && map.runs[k_above].u_begin < run.u_end; ++k_above) {
-        if (stats[k_above].barrier) continue;
-        const int lo = std::max(run.u_begin, map.runs[k_above].u_begin);
-        const int hi = std::min(run.u_end, map.runs[k_above].u_end);
+  // Join the runs of this row to the regions of the overlapping runs of the row above (never a
+  // barrier run: barrier pixels join nothing).
+  void join_row_above(int v) {
+    const std::uint8_t* row = image_.ptr<std::uint8_t>(v);
+    const std::uint8_t* above = image_.ptr<std::uint8_t>(v - 1);
+    int a = map_.row_begin[v - 1];
+    const int a_end = map_.row_begin[v];
+    for (int b = a_end; b < static_cast<int>(map_.runs.size()); ++b) {
+      const RegionRun& run = map_.runs[b];
+      if (stats_[b].barrier) continue;
+      while (a < a_end && map_.runs[a].u_end <= run.u_begin) ++a;
+      for (int k_above = a; k_above < a_end && map_.runs[k_above].u_begin < run.u_end; ++k_above) {
+        if (stats_[k_above].barrier) continue;
+        const int lo = std::max(run.u_begin, map_.runs[k_above].u_begin);
+        const int hi = std::min(run.u_end, map_.runs[k_above].u_end);
         bool touching = false;
         for (int x = lo; x < hi && !touching; ++x) {
-          touching = admitted_step(above + 3 * x, row + 3 * x, max_step_grey);
+          touching = admitted_step(above + 3 * x, row + 3 * x, max_step_grey_);
         }
         if (!touching) {
-          touching_runs.push_back({k_above, b, true});
+          touching_runs_.push_back({k_above, b, true});
           continue;
         }
-        const int root_above = find_root(parent, k_above);
-        const int root_here = find_root(parent, b);
-        if (root_above == root_here) continue;
-        const GrownRegion both = joined(stats[root_above], stats[root_here]);
-        if (both.pixel_count > max_region_px || !volume_limit.admits(both)) {
-          touching_runs.push_back({k_above, b, false});
-          continue;
-        }
-        // The older region (smaller index: seeded earlier in raster order)
-        // keeps the root.
-        const int root = std::min(root_above, root_here);
-        parent[std::max(root_above, root_here)] = root;
-        stats[root] = both;
+        join(k_above, b);
       }
     }
   }
-  map.row_begin[map.height] = static_cast<int>(map.runs.size());
 
-  // Regions numbered by their roots in raster order.
-  std::vector<int> region_of_root(map.runs.size(), -1);
-  for (std::size_t i = 0; i < map.runs.size(); ++i) {
-    const int root = find_root(parent, static_cast<int>(i));
-    int& region = region_of_root[root];
-    if (region < 0) {
-      region = static_cast<int>(map.regions.size());
-      map.regions.push_back(stats[root]);
+  void join(int k_above, int b) {
+    const int root_above = find_root(parent_, k_above);
+    const int root_here = find_root(parent_, b);
+    if (root_above == root_here) return;
+    const GrownRegion both = joined(stats_[root_above], stats_[root_here]);
+    if (both.pixel_count > max_region_px_ || !volume_limit_.admits(both)) {
+      touching_runs_.push_back({k_above, b, false});
+      return;
     }
-    map.runs[i].region = region;
+    // The older region (smaller index: seeded earlier in raster order) keeps the root.
+    const int root = std::min(root_above, root_here);
+    parent_[std::max(root_above, root_here)] = root;
+    stats_[root] = both;
   }
-  map.touching.reserve(touching_runs.size());
-  for (const TouchingRegions& t : touching_runs) {
-    const int a_region = map.runs[t.a].region;
-    const int b_region = map.runs[t.b].region;
-    if (a_region != b_region) map.touching.push_back({a_region, b_region, t.across_edge});
+
+  // Regions numbered by their roots in raster order; touching runs become touching regions.
+  void number_regions() {
+    std::vector<int> region_of_root(map_.runs.size(), -1);
+    for (std::size_t i = 0; i < map_.runs.size(); ++i) {
+      const int root = find_root(parent_, static_cast<int>(i));
+      int& region = region_of_root[root];
+      if (region < 0) {
+        region = static_cast<int>(map_.regions.size());
+        map_.regions.push_back(stats_[root]);
+      }
+      map_.runs[i].region = region;
+    }
+    map_.touching.reserve(touching_runs_.size());
+    for (const TouchingRegions& t : touching_runs_) {
+      const int a_region = map_.runs[t.a].region;
+      const int b_region = map_.runs[t.b].region;
+      if (a_region != b_region) map_.touching.push_back({a_region, b_region, t.across_edge});
+    }
   }
-  return map;
+
+  const cv::Mat& image_;
+  const int width_;
+  const int max_step_grey_;
+  const int max_mean_step_grey_;
+  const cv::Mat barrier_;
+  const VolumeLimit volume_limit_;
+  const int max_region_px_;
+  RegionMap map_;
+  // Per run: its statistics while it is a region root; parent for the union-find.
+  std::vector<GrownRegion> stats_;
+  std::vector<int> parent_;
+  std::vector<TouchingRegions> touching_runs_;  // a, b: run indices until number_regions
+  std::vector<std::uint8_t> refused_step_;      // of one row
+};
+
+}  // namespace
+
+RegionMap grow_regions(const cv::Mat& bgr_image, const SegmentationOptions& options) {
+  if (bgr_image.type() != CV_8UC3) {
+    throw std::invalid_argument("segment: the image must be CV_8UC3 (BGR)");
+  }
+  if (bgr_image.cols == 0 || bgr_image.rows == 0) {
+    RegionMap empty;
+    empty.width = bgr_image.cols;
+    empty.height = bgr_image.rows;
+    empty.row_begin.assign(static_cast<std::size_t>(empty.height) + 1, 0);
+    return empty;
+  }
+  return RegionGrower(bgr_image, options).grow();
 }
 
 }  // namespace vsl::recognition
