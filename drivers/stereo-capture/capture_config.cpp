@@ -91,7 +91,7 @@ CaptureConfig read_capture_config(const Node& root, const std::string& section_n
   section.expect_map();
   section.expect_keys({"head", "devices", "side_by_side_device", "format", "width_px", "height_px",
                        "frame_rate_hz", "exposure_us", "gain", "pixel_format",
-                       "pairing_tolerance_ms", "reconnect_interval_s", "joints"});
+                       "pairing_tolerance_ms", "reconnect_interval_s", "joints", "gaze"});
   CaptureConfig out;
   out.head_path = path_relative_to_file(section.at("head"));
   read_devices(section, out);
@@ -132,6 +132,14 @@ CaptureConfig read_capture_config(const Node& root, const std::string& section_n
     out.reconnect_interval_s = v->as_double_in(0.05, 60.0);
   }
   read_joints(section, out);
+  if (const auto gaze = section.find("gaze")) {
+    gaze->expect_map();
+    gaze->expect_keys({"axis_tolerance_rad", "rest_rad_s"});
+    if (const auto v = gaze->find("axis_tolerance_rad")) {
+      out.gaze.axis_tolerance_rad = v->as_double_in(1e-4, 0.5);
+    }
+    if (const auto v = gaze->find("rest_rad_s")) out.gaze.rest_rad_s = v->as_double_in(0.0, 10.0);
+  }
   return out;
 }
 

@@ -21,6 +21,12 @@ enum class JointSource {
   kFixed,      // a static rig: the joints of fixed_joints_rad (others at rest) in every frame
 };
 
+// When a frame shows the head where a GAZE_COMMAND put it (gaze_tracker.hpp).
+struct GazeOptions {
+  double axis_tolerance_rad = 0.01;  // a real head's servo loop settles within about 0.5 deg
+  double rest_rad_s = 0.02;          // joint speed below which the head counts as still
+};
+
 struct CaptureConfig {
   std::string head_path;  // head kinematics, resolved against the config file's directory
   // Two devices (left_device, right_device) or one side-by-side device (left | right halves).
@@ -43,6 +49,8 @@ struct CaptureConfig {
   std::map<std::string, double> fixed_joints_rad;  // by joint name (validated against the head)
   std::int64_t joint_max_wait_us = 100000;         // a frame waits this long for HEAD_STATE
   std::int64_t joint_max_gap_us = 100000;          // no interpolation across longer gaps
+
+  GazeOptions gaze;
 };
 
 // Reads section `section_name` of a driver's config root (which may also hold `runtime:`).

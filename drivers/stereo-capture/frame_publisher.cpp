@@ -1,5 +1,7 @@
 #include "frame_publisher.hpp"
 
+#include <cmath>
+
 #include "convert.hpp"
 #include "messages.hpp"
 #include "vsl/head_state_t.hpp"
@@ -27,7 +29,15 @@ bool worth_reporting(std::int64_t count) {
 }  // namespace
 
 FramePublisher::FramePublisher(runtime::Daemon& daemon, const DriverSetup& setup)
-    : daemon_(daemon), setup_(setup), assembler_(assembler_options(setup)) {
+    : daemon_(daemon),
+      setup_(setup),
+      assembler_(assembler_options(setup)),
+      gaze_(setup.head, setup.config.gaze) {
+  // The localizer's gaze commands: each frame says which one it shows and whether the head has
+  // reached it (gaze_tracker.hpp), as the simulated head's frames do.
+  daemon_.subscribe<vsl::gaze_command_t>(
+      daemon_.channels().gaze_command,
+      [this](const vsl::gaze_command_t& command, std::int64_t) { on_gaze_command(command); });
   if (setup_.config.joint_source != JointSource::kHeadState) return;
   daemon_.subscribe<vsl::head_state_t>(
       daemon_.channels().head_state, [this](const vsl::head_state_t& message, std::int64_t) {
@@ -55,6 +65,36 @@ void FramePublisher::flush() {
   }
 }
 
+void FramePublisher::on_gaze_command(const vsl::gaze_command_t& command) {
+  const std::string& channel = daemon_.channels().gaze_command;
+  const auto refuse = [&](const std::string& why) {
+    ++bad_gaze_commands_;
+    warn_sometimes(bad_gaze_commands_, channel + ": ignored: " + why);
+  };
+  if (command.mode == vsl::gaze_command_t::TARGET_POINT) {
+    const Eigen::Vector3d target(command.ego_target_m[0], command.ego_target_m[1],
+                                 command.ego_target_m[2]);
+    if (!target.allFinite()) return refuse("ego_target_m is not finite");
+    gaze_.command_point(command.request_id, target);
+    return;
+  }
+  if (command.mode != vsl::gaze_command_t::JOINT_TARGETS) {
+    return refuse("mode " + std::to_string(command.mode));
+  }
+  if (command.num_joints != static_cast<std::int32_t>(command.joint_names.size()) ||
+      command.joint_names.size() != command.joint_targets_rad.size()) {
+    return refuse("num_joints does not match its lists");
+  }
+  std::vector<std::pair<std::size_t, double>> targets;
+  for (std::size_t i = 0; i < command.joint_names.size(); ++i) {
+    const std::optional<std::size_t> index = setup_.head.joint_index(command.joint_names[i]);
+    if (!index) return refuse("no joint '" + command.joint_names[i] + "' in the head");
+    if (!std::isfinite(command.joint_targets_rad[i])) return refuse("a target is not finite");
+    targets.emplace_back(*index, command.joint_targets_rad[i]);
+  }
+  gaze_.command_joints(command.request_id, targets);
+}
+
 void FramePublisher::publish(const StereoCapture& capture) {
   const OutputFormat output = setup_.config.pixel_format;
   std::string error;
@@ -79,9 +119,13 @@ void FramePublisher::publish(const StereoCapture& capture) {
     return;
   }
   const std::int64_t right_utime = capture.side_by_side ? capture.utime : capture.right.utime;
-  daemon_.publish(daemon_.channels().stereo_frame,
-                  stereo_frame_message(setup_.head.name(), frame_id_++, capture.utime, right_utime,
-                                       left, right, setup_.head.joint_names(), capture.joints));
+  vsl::stereo_frame_t frame =
+      stereo_frame_message(setup_.head.name(), frame_id_++, capture.utime, right_utime, left, right,
+                           setup_.head.joint_names(), capture.joints);
+  const GazeTracker::FrameGaze gaze = gaze_.at(capture.joints);
+  frame.gaze_request_id = gaze.request_id;
+  frame.gaze_reached = gaze.reached;
+  daemon_.publish(daemon_.channels().stereo_frame, frame);
   if (setup_.config.joint_source == JointSource::kFixed) {
     daemon_.publish(daemon_.channels().head_state,
                     head_state_message(setup_.head.joint_names(), capture.joints));

@@ -4,6 +4,9 @@
 // that tools see the joint state of a static rig too). Lives as long as Daemon::run().
 #pragma once
 
+#include "gaze_tracker.hpp"
+#include "vsl/gaze_command_t.hpp"
+
 #include <opencv2/core/mat.hpp>
 
 #include <cstdint>
@@ -39,9 +42,13 @@ class FramePublisher {
   void publish(const StereoCapture& capture);
   void warn_sometimes(std::int64_t count, const std::string& what);
 
+  void on_gaze_command(const vsl::gaze_command_t& command);
+
   runtime::Daemon& daemon_;
   const DriverSetup& setup_;
   StereoAssembler assembler_;
+  GazeTracker gaze_;
+  std::int64_t bad_gaze_commands_ = 0;
   std::int64_t frame_id_ = 0;
   std::int64_t conversion_failures_ = 0;
   std::int64_t bad_head_states_ = 0;

@@ -36,8 +36,8 @@ bool joint_sample_from(const vsl::head_state_t& message,
 vsl::head_state_t head_state_message(const std::vector<std::string>& joint_names,
                                      const JointSample& sample);
 
-// The stereo frame a real driver publishes. Real drivers do not move the head (the robot's head
-// controller obeys GAZE_COMMAND), so gaze_request_id is -1 and gaze_reached false.
+// The stereo frame a real driver publishes, with gaze_request_id -1 and gaze_reached false; the
+// FramePublisher sets both from its GazeTracker (the robot's head controller moves the head).
 // utime: the pair's (the left image's) capture time; right_utime the right image's.
 vsl::stereo_frame_t stereo_frame_message(const std::string& head_name, std::int64_t frame_id,
                                          std::int64_t utime, std::int64_t right_utime,

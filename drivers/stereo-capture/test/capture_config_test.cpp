@@ -30,6 +30,7 @@ v4l2_stereo:
   pairing_tolerance_ms: 4
   reconnect_interval_s: 2
   joints: {source: fixed, fixed_rad: {neck_pitch: 0.25}}
+  gaze: {axis_tolerance_rad: 0.02, rest_rad_s: 0.05}
 )";
 
 TEST(CaptureConfig, ReadsEveryKey) {
@@ -49,6 +50,8 @@ TEST(CaptureConfig, ReadsEveryKey) {
   const std::size_t pitch = *setup.head.joint_index("neck_pitch");
   EXPECT_EQ(setup.fixed_joints.positions_rad[pitch], 0.25);
   EXPECT_EQ(setup.fixed_joints.velocities_rad_s.size(), setup.head.joint_names().size());
+  EXPECT_EQ(c.gaze.axis_tolerance_rad, 0.02);
+  EXPECT_EQ(c.gaze.rest_rad_s, 0.05);
 }
 
 TEST(CaptureConfig, DefaultsAndSideBySide) {
@@ -95,6 +98,8 @@ TEST(CaptureConfig, OneLineErrors) {
        "v4l2_stereo.joints.fixed_rad.neck_pitch"},
       {two + "  joints: {fixed_rad: {neck_pitch: 0.1}}\n", "need source: fixed"},
       {two + "  joints: {source: encoder}\n", "expected head_state or fixed"},
+      {two + "  gaze: {axis_tolerance_rad: 2}\n", "v4l2_stereo.gaze.axis_tolerance_rad"},
+      {two + "  gaze: {tolerance: 0.1}\n", "tolerance"},
       {"v4l2_stereo:\n  head: heads/nope.yaml\n  devices: {left: a, right: b}\n",
        ":2: v4l2_stereo.head: "},
       {"v4l2: {}\n", "v4l2"},

@@ -8,6 +8,7 @@
 
 #include "frame_publisher.hpp"
 #include "vsl/config/node.hpp"
+#include "vsl/gaze_command_t.hpp"
 #include "vsl/head_state_t.hpp"
 #include "vsl/runtime/clock.hpp"
 #include "vsl/runtime/lcm_bus.hpp"
@@ -92,6 +93,32 @@ TEST(FramePublisher, PublishesAPairWithFixedJoints) {
   EXPECT_EQ(f.head.joint_names, s.head.joint_names());
   EXPECT_EQ(h.head_states, 1);  // a static rig publishes its joint state with every frame
   EXPECT_NE(publisher.summary().find("published 1 frames"), std::string::npos);
+}
+
+// The localizer's gaze command reaches the driver; each frame names it and says whether the
+// head (here a static rig at neck_pitch 0.3) shows it: as the simulated head's frames do.
+TEST(FramePublisher, FramesCarryTheGazeCommandAndWhetherTheHeadReachedIt) {
+  const DriverSetup s = setup("{source: fixed, fixed_rad: {neck_pitch: 0.3}}");
+  Harness h;
+  FramePublisher publisher(h.daemon, s);
+  vsl::gaze_command_t command{};
+  command.request_id = 12;
+  command.mode = vsl::gaze_command_t::JOINT_TARGETS;
+  command.num_joints = 1;
+  command.joint_names = {"neck_pitch"};
+  command.joint_targets_rad = {0.3};
+  h.daemon.publish("GAZE_COMMAND", command);
+  // The command is handled before the frame is made: publish the frame from a timer.
+  const std::int64_t t = runtime::wall_utime();
+  h.daemon.every(20ms, [&] {
+    publisher.add_left(grey_yuyv(t, 235));
+    publisher.add_right(grey_yuyv(t + 1000, 16));
+    publisher.flush();
+  });
+  ASSERT_EQ(h.daemon.run(), 0);
+  ASSERT_TRUE(h.frame.has_value());
+  EXPECT_EQ(h.frame->gaze_request_id, 12);
+  EXPECT_TRUE(h.frame->gaze_reached);
 }
 
 TEST(FramePublisher, InterpolatesHeadStateToTheCaptureTime) {
