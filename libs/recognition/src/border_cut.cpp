@@ -93,6 +93,39 @@ std::optional<Candidate> judge_border_cut_pair(
                               up_in_left_camera, options, door, reference_offset_m, trace);
 }
 
+namespace {
+
+// Each side's depth where the images around it correlate, searched around the outlines' depth
+// (one image's outline may lack a stile); a side that does not correlate, or not unambiguously,
+// keeps the outlines'. `ends`: rectangle_ends' order (each side's top end, then its bottom).
+void refine_sides_by_correlation(const SideCorrelator& correlator,
+                                 const std::array<Eigen::Vector2d, 4>& c,
+                                 const StereoMatchOptions& options,
+                                 const StereoMatchOptions::BorderCutDoor& door,
+                                 std::array<Eigen::Vector3d, 4>& ends) {
+  const double search_px = kSideSearchPx + kSideSearchWidthFraction * 0.5 *
+                                               ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
+  for (const auto& [s, top, bottom] : {std::tuple{0, 0, 3}, std::tuple{1, 1, 2}}) {
+    Eigen::Vector3d& top_end = ends[2 * s];
+    Eigen::Vector3d& bottom_end = ends[2 * s + 1];
+    const double initial_m = 0.5 * (correlator.horizontal_distance(top_end) +
+                                    correlator.horizontal_distance(bottom_end));
+    const auto depth = correlator.correlate(c[top], c[bottom], initial_m, search_px,
+                                            options.min_depth_m, options.max_depth_m);
+    if (!depth || depth->correlation < options.min_side_correlation) continue;
+    // A run of equal doors repeats every edge a door's width away: a side whose best score does
+    // not beat its second-best distinct peak keeps the outlines' depth.
+    if (depth->second_correlation > depth->correlation - door.min_peak_margin) continue;
+    const auto top_point = correlator.point_at(c[top], depth->horizontal_distance_m);
+    const auto bottom_point = correlator.point_at(c[bottom], depth->horizontal_distance_m);
+    if (!top_point || !bottom_point) continue;
+    top_end = *top_point;
+    bottom_end = *bottom_point;
+  }
+}
+
+}  // namespace
+
 std::optional<Candidate> judge_pair_cut_along(
     BorderCut cut, int l, int r, const BorderCutView& left, const BorderCutView& right,
     const EpipolarGeometry& epipolar, const Triangulator& triangulator,
@@ -146,31 +179,8 @@ std::optional<Candidate> judge_pair_cut_along(
   std::optional<Triangulation> triangulation = triangulator.triangulate(
       left.reference, right.reference, options.pixel_sigma_px, reference_offset_m);
   if (!ends || !triangulation) return refuse(trace, StereoGate::kTriangulation, 0.0, 0.0);
-  // Each side's depth where the images around it correlate, searched around the outlines' depth
-  // (one image's outline may lack a stile); a side that does not correlate, or not unambiguously,
-  // keeps the outlines'.
-  if (correlator) {
-    const std::array<Eigen::Vector2d, 4>& c = left.corners_ideal_px;
-    const double search_px = kSideSearchPx + kSideSearchWidthFraction * 0.5 *
-                                                 ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
-    for (const auto& [s, top, bottom] : {std::tuple{0, 0, 3}, std::tuple{1, 1, 2}}) {
-      Eigen::Vector3d& top_end = (*ends)[2 * s];
-      Eigen::Vector3d& bottom_end = (*ends)[2 * s + 1];
-      const double initial_m = 0.5 * (correlator->horizontal_distance(top_end) +
-                                      correlator->horizontal_distance(bottom_end));
-      const auto depth = correlator->correlate(c[top], c[bottom], initial_m, search_px,
-                                               options.min_depth_m, options.max_depth_m);
-      if (!depth || depth->correlation < options.min_side_correlation) continue;
-      // A run of equal doors repeats every edge a door's width away: a side whose best score
-      // does not beat its second-best distinct peak keeps the outlines' depth.
-      if (depth->second_correlation > depth->correlation - door.min_peak_margin) continue;
-      const auto top_point = correlator->point_at(c[top], depth->horizontal_distance_m);
-      const auto bottom_point = correlator->point_at(c[bottom], depth->horizontal_distance_m);
-      if (!top_point || !bottom_point) continue;
-      top_end = *top_point;
-      bottom_end = *bottom_point;
-    }
-  }
+  if (correlator)
+    refine_sides_by_correlation(*correlator, left.corners_ideal_px, options, door, *ends);
   // rectangle_ends: each side's end at its first corner (0 or 1, the top), then at its second
   // (3 or 2, the bottom).
   const bool top_cut = cut == BorderCut::kTop;
