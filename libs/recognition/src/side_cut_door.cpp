@@ -107,6 +107,33 @@ EdgesToBorder edges_to_border(const Triangulator& triangulator,
   return out;
 }
 
+// Which border cuts the door: in both images, or only in the one that sees less beyond it (the
+// right image's left border, the left image's right border), the other showing the door whole.
+// The whole side's corners (top, bottom) and the cut ones on the same edges; the whole side's
+// index in Triangulator::vertical_sides' order ({0, 3}, then {1, 2}). nullopt: no such pair.
+struct SideCut {
+  bool seen_whole = false;
+  bool left_cut = false;
+  std::array<int, 2> whole{}, at_border{};
+  int whole_side = 0;
+};
+
+std::optional<SideCut> side_cut_of(BorderCut left_border, BorderCut right_border) {
+  const BorderCut cut = left_border == BorderCut::kNone ? right_border : left_border;
+  SideCut out;
+  out.seen_whole = left_border != right_border;
+  const bool admissible =
+      out.seen_whole ? (left_border == BorderCut::kNone && right_border == BorderCut::kLeft) ||
+                           (left_border == BorderCut::kRight && right_border == BorderCut::kNone)
+                     : left_border == BorderCut::kLeft || left_border == BorderCut::kRight;
+  if (!admissible) return std::nullopt;
+  out.left_cut = cut == BorderCut::kLeft;
+  out.whole = out.left_cut ? std::array<int, 2>{1, 2} : std::array<int, 2>{0, 3};
+  out.at_border = out.left_cut ? std::array<int, 2>{0, 3} : std::array<int, 2>{1, 2};
+  out.whole_side = out.left_cut ? 1 : 0;
+  return out;
+}
+
 }  // namespace
 
 std::optional<Candidate> judge_side_cut_pair(
@@ -116,26 +143,14 @@ std::optional<Candidate> judge_side_cut_pair(
     const StereoMatchOptions& options, const StereoMatchOptions::BorderCutDoor& door,
     const StereoMatchOptions::ExtentRange* height_range, double reference_offset_m,
     StereoPairTrace& trace) {
-  // The border that cuts the door: in both images, or only in the one that sees less beyond
-  // it (the right image's left border, the left image's right border), the other showing the
-  // door whole.
-  const BorderCut left_border = left.detection.border_cut;
-  const BorderCut right_border = right.detection.border_cut;
-  const BorderCut cut = left_border == BorderCut::kNone ? right_border : left_border;
-  const bool seen_whole = left_border != right_border;
-  const bool admissible =
-      seen_whole ? (left_border == BorderCut::kNone && right_border == BorderCut::kLeft) ||
-                       (left_border == BorderCut::kRight && right_border == BorderCut::kNone)
-                 : left_border == BorderCut::kLeft || left_border == BorderCut::kRight;
-  if (!admissible || !(door.typical_width_m > 0.0))
-    return refuse(trace, StereoGate::kEpipolar, 0.0, 0.0);
-  const bool left_cut = cut == BorderCut::kLeft;
-  // The whole side's corners (top, bottom) and the cut ones on the same edges; the whole side's
-  // index in Triangulator::vertical_sides' order ({0, 3}, then {1, 2}).
-  const std::array<int, 2> whole = left_cut ? std::array<int, 2>{1, 2} : std::array<int, 2>{0, 3};
-  const std::array<int, 2> at_border =
-      left_cut ? std::array<int, 2>{0, 3} : std::array<int, 2>{1, 2};
-  const int whole_side = left_cut ? 1 : 0;
+  const std::optional<SideCut> side =
+      side_cut_of(left.detection.border_cut, right.detection.border_cut);
+  if (!side || !(door.typical_width_m > 0.0)) return refuse(trace, StereoGate::kEpipolar, 0.0, 0.0);
+  const bool seen_whole = side->seen_whole;
+  const bool left_cut = side->left_cut;
+  const std::array<int, 2>& whole = side->whole;
+  const std::array<int, 2>& at_border = side->at_border;
+  const int whole_side = side->whole_side;
   const std::array<Eigen::Vector2d, 4>& lc = left.corners_ideal_px;
   const std::array<Eigen::Vector2d, 4>& rc = right.corners_ideal_px;
   if (Triangulator::vertical_sides(lc)[0] != std::array<int, 2>{0, 3}) {
