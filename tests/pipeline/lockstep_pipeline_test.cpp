@@ -33,6 +33,7 @@
 #include "vsl/runtime/config.hpp"
 #include "vsl/runtime/daemon.hpp"
 #include "vsl/runtime/in_process_bus.hpp"
+#include "vsl/runtime/lock_step.hpp"
 
 namespace {
 
@@ -107,9 +108,11 @@ class LockstepPipeline {
 
   // Runs until the request is answered (or the simulated give-up time).
   Outcome run() {
+    std::vector<Daemon*> daemons;
+    for (const auto& daemon : daemons_) daemons.push_back(daemon.get());
     bool requested = false;
     while (!outcome_.pose && clock_.utime() < kStartUtime + kGiveUpAfterUs) {
-      settle();
+      runtime::settle(daemons);
       if (!requested && clock_.utime() >= kStartUtime + kRequestAfterUs) {
         requested = true;
         vsl::localize_request_t request{};
@@ -117,14 +120,9 @@ class LockstepPipeline {
         request.request_id = kRequestId;
         request.source = "lockstep_pipeline_test";
         daemons_.back()->publish(daemons_.back()->channels().localize_request, request);
-        settle();
       }
-      std::int64_t next = kStartUtime + kGiveUpAfterUs;
-      if (!requested) next = kStartUtime + kRequestAfterUs;
-      for (const auto& daemon : daemons_) {
-        if (const auto deadline = daemon->next_deadline_utime()) next = std::min(next, *deadline);
-      }
-      clock_.advance_to(std::max(next, clock_.utime()));
+      runtime::advance(clock_, daemons,
+                       kStartUtime + (requested ? kGiveUpAfterUs : kRequestAfterUs));
     }
     for (const auto& daemon : daemons_) {
       EXPECT_FALSE(daemon->stopping()) << daemon->log().process() << " stopped\n" << log_;
@@ -147,16 +145,6 @@ class LockstepPipeline {
     daemons_.push_back(
         std::make_unique<Daemon>(runtime_config, logger, hub_.connect(logger, name), &clock_));
     return *daemons_.back();
-  }
-
-  // Every daemon handles everything pending at this time, including what the others publish
-  // meanwhile, until none has anything left.
-  void settle() {
-    bool busy = true;
-    while (busy) {
-      busy = false;
-      for (const auto& daemon : daemons_) busy = daemon->step() || busy;
-    }
   }
 
   runtime::SimulatedClock clock_;

@@ -14,6 +14,7 @@
 #include "vsl/runtime/clock.hpp"
 #include "vsl/runtime/daemon.hpp"
 #include "vsl/runtime/in_process_bus.hpp"
+#include "vsl/runtime/lock_step.hpp"
 
 namespace vsl::runtime {
 namespace {
@@ -32,21 +33,9 @@ vsl::localize_request_t request(std::int64_t id, std::int64_t utime) {
   return message;
 }
 
-// Steps every daemon until none has anything to do, then advances the clock to the earliest
-// deadline; until `end_utime`.
+// Until `end_utime` (lock_step.hpp).
 void run_until(SimulatedClock& clock, const std::vector<Daemon*>& daemons, std::int64_t end_utime) {
-  while (true) {
-    bool busy = true;
-    while (busy) {
-      busy = false;
-      for (Daemon* daemon : daemons) busy = daemon->step() || busy;
-    }
-    std::int64_t next = end_utime;
-    for (Daemon* daemon : daemons) {
-      if (const auto deadline = daemon->next_deadline_utime()) next = std::min(next, *deadline);
-    }
-    if (clock.utime() >= end_utime) return;
-    clock.advance_to(std::max(next, clock.utime()));
+  while (advance(clock, daemons, end_utime)) {
   }
 }
 
