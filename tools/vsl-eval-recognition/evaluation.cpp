@@ -35,6 +35,22 @@ void count_by_viewing_angle(const recognition::GroundTruthObject& object, bool w
   if (whole) ++whole_only[band];
 }
 
+// Counts a false positive as misplaced, mistyped or neither (ClassTally).
+void classify_false_positive(const std::vector<recognition::GroundTruthObject>& ground_truth,
+                             const recognition::PerceptToMatch& percept, double max_error_m,
+                             ClassTally& c) {
+  bool mistyped = false;
+  for (const recognition::GroundTruthObject& object : ground_truth) {
+    const double distance_m = (object.ego_position_m - percept.ego_position_m).norm();
+    if (object.type == c.type && distance_m <= kMisplacedDistanceM) {
+      ++c.false_misplaced;
+      return;
+    }
+    if (object.type != c.type && distance_m <= max_error_m) mistyped = true;
+  }
+  if (mistyped) ++c.false_mistyped;
+}
+
 }  // namespace
 
 double quantile(std::vector<double> values, double q) {
@@ -87,15 +103,17 @@ std::vector<recognition::PerceptMatch> tally_frame(
             matches[i].error_m);
         continue;
       }
-      for (std::size_t k = 0; k < ground_truth.size(); ++k) {
+      bool on_other_object = false;
+      for (std::size_t k = 0; k < ground_truth.size() && !on_other_object; ++k) {
         const recognition::GroundTruthObject& object = ground_truth[k];
         if (!taken[k] && !object.visible && object.type == c.type &&
             (object.ego_position_m - percepts[i].ego_position_m).norm() <= max_error_m) {
           ++c.false_positives_on_other_objects;
           taken[k] = 1;
-          break;
+          on_other_object = true;
         }
       }
+      if (!on_other_object) classify_false_positive(ground_truth, percepts[i], max_error_m, c);
     }
   }
   ++tally.frames;

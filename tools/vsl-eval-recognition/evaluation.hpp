@@ -23,6 +23,9 @@ int distance_band(double distance_m);
 // between the face's normal and the ray to the left camera: [0, 30), [30, 45), [45, 60), [60, 70),
 // [70, 80), [80, 90] degrees. Where the recall is lost: a door seen 80 degrees off its normal is a
 // sliver a twentieth of its width, merged with its neighbour along a run of cupboards.
+// A false positive this near an object of its own type is counted as misplaced.
+inline constexpr double kMisplacedDistanceM = 0.5;
+
 inline constexpr int kViewingAngleBands = 6;
 inline constexpr std::array<double, kViewingAngleBands> kViewingAngleBandStartsDeg{0,  30, 45,
                                                                                    60, 70, 80};
@@ -43,6 +46,11 @@ struct ClassTally {
   // object the ground truth leaves out, neither a true nor a false positive (as detections of
   // "difficult" or "don't care" objects in the PASCAL VOC and KITTI benchmarks).
   int false_positives_on_other_objects = 0;
+  // The false positives by what lies nearest them: an object of their type within
+  // kMisplacedDistanceM (misplaced: a real object, its reference point off), else an object of
+  // another type within the match distance (mistyped), else nothing (spurious).
+  int false_misplaced = 0;
+  int false_mistyped = 0;
   std::array<std::vector<double>, kDistanceBands> errors_m;  // matched percepts' 3D errors
   // Flat ground-truth objects and their true positives by viewing-angle band, all and whole.
   std::array<int, kViewingAngleBands> flat_ground_truth{}, flat_true_positives{};

@@ -25,6 +25,27 @@ ClassTally door_tally_of_one_percept(const std::vector<recognition::GroundTruthO
   return tally.classes[0];
 }
 
+TEST(RecognitionEvaluation, FalsePositivesAreMisplacedMistypedOrOnNothing) {
+  std::vector<recognition::GroundTruthObject> truth(2);
+  truth[0].type = "door";
+  truth[0].ego_position_m = {2.0, 0.0, 1.0};
+  truth[0].distance_m = 2.0;
+  truth[0].visible = true;
+  truth[1].type = "handle";
+  truth[1].ego_position_m = {2.0, 1.5, 1.0};
+  truth[1].distance_m = 2.5;
+  truth[1].visible = true;
+  const ClassTally misplaced = door_tally_of_one_percept(truth, {2.0, 0.3, 1.0});
+  EXPECT_EQ(misplaced.false_misplaced, 1);
+  EXPECT_EQ(misplaced.false_mistyped, 0);
+  const ClassTally mistyped = door_tally_of_one_percept(truth, {2.0, 1.52, 1.0});
+  EXPECT_EQ(mistyped.false_misplaced, 0);
+  EXPECT_EQ(mistyped.false_mistyped, 1);
+  const ClassTally nothing = door_tally_of_one_percept(truth, {1.0, -1.5, 1.0});
+  EXPECT_EQ(nothing.false_positives(), 1);
+  EXPECT_EQ(nothing.false_misplaced + nothing.false_mistyped, 0);
+}
+
 TEST(RecognitionEvaluation, QuantilesInterpolateBetweenOrderStatistics) {
   EXPECT_DOUBLE_EQ(quantile({3.0, 1.0, 2.0}, 0.5), 2.0);
   EXPECT_DOUBLE_EQ(quantile({1.0, 2.0, 3.0, 4.0}, 0.5), 2.5);
@@ -77,6 +98,9 @@ TEST(RecognitionEvaluation, TalliesPrecisionRecallErrorsAndRange) {
   EXPECT_EQ(c.false_positives_on_other_objects, 1);
   EXPECT_EQ(c.false_positives(), 2);
   EXPECT_EQ(c.out_of_range, 1);
+  // The second percept of the hidden door is within 0.5 m of a door: misplaced.
+  EXPECT_EQ(c.false_misplaced, 1);
+  EXPECT_EQ(c.false_mistyped, 0);
   EXPECT_NEAR(c.precision(), 1.0 / 3.0, 1e-12);
   EXPECT_NEAR(c.precision_strict(), 1.0 / 4.0, 1e-12);
   EXPECT_NEAR(c.recall(), 0.5, 1e-12);

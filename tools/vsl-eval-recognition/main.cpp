@@ -231,6 +231,13 @@ void print_table(const Options& options, const tools::EvaluationTally& tally) {
                 c.ground_truth_whole, c.false_positives_on_other_objects,
                 100.0 * c.precision_strict(), c.out_of_range);
   }
+  for (const tools::ClassTally& c : tally.classes) {
+    std::printf(
+        "%-8s false+: %d misplaced (within %.1f m of an object of the type), %d mistyped "
+        "(on an object of another type), %d on nothing\n",
+        c.type.c_str(), c.false_misplaced, tools::kMisplacedDistanceM, c.false_mistyped,
+        c.false_positives() - c.false_misplaced - c.false_mistyped);
+  }
   std::printf(
       "(recall whole: over the ground-truth objects whose whole outline lies inside both images, "
       "not cut by the image border)\n");
@@ -279,6 +286,8 @@ void write_json(std::ostream& out, const Options& options, const tools::Evaluati
     json.key("true_positives").number(c.true_positives);
     json.key("false_positives").number(c.false_positives());
     json.key("percepts_on_objects_outside_ground_truth").number(c.false_positives_on_other_objects);
+    json.key("false_positives_misplaced").number(c.false_misplaced);
+    json.key("false_positives_mistyped").number(c.false_mistyped);
     json.key("percepts_beyond_range").number(c.out_of_range);
     json.key("precision").number(c.precision());
     json.key("precision_strict").number(c.precision_strict());

@@ -1,5 +1,6 @@
 #include "vsl/recognition/learned_stereo_recognizer.hpp"
 
+#include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -11,6 +12,7 @@
 #include <stdexcept>
 
 #include "box_stereo.hpp"
+#include "door_rectangle_fit.hpp"
 #include "frame_capture.hpp"
 
 namespace vsl::recognition {
@@ -70,13 +72,26 @@ struct Placed {
 
 class PairPlacer {
  public:
+  // `ideal_greys`: both images undistorted (the rectangle fit's pinhole images); `up_in_left`:
+  // the world's vertical in the left camera frame.
   PairPlacer(const head::StereoCalibration& calibration, const Eigen::Isometry3d& left_T_right,
-             const cv::Mat& left_grey, const cv::Mat& right_grey, const BoxStereoOptions& options)
+             const cv::Mat& left_grey, const cv::Mat& right_grey,
+             const std::array<cv::Mat, 2>& ideal_greys, const Eigen::Vector3d& up_in_left,
+             const BoxStereoOptions& options)
       : calibration_(calibration),
         triangulator_(calibration.left, calibration.right, left_T_right),
         left_grey_(left_grey),
         right_grey_(right_grey),
-        options_(options) {}
+        up_in_left_(up_in_left),
+        options_(options) {
+    const auto pinhole = [](const head::CameraIntrinsics& c) {
+      Eigen::Matrix3d K;
+      K << c.fx_px, 0.0, c.cx_px, 0.0, c.fy_px, c.cy_px, 0.0, 0.0, 1.0;
+      return K;
+    };
+    fit_cameras_[0] = {&ideal_greys[0], pinhole(calibration.left), Eigen::Isometry3d::Identity()};
+    fit_cameras_[1] = {&ideal_greys[1], pinhole(calibration.right), left_T_right.inverse()};
+  }
 
   const detail::Triangulator& triangulator() const { return triangulator_; }
 
@@ -190,9 +205,19 @@ class PairPlacer {
       if (!point) return std::nullopt;
       ends[static_cast<std::size_t>(k)] = *point;
     }
-    const Eigen::Vector3d centre = 0.25 * (ends[0] + ends[1] + ends[2] + ends[3]);
-    const double height = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
-    const double width = (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
+    Eigen::Vector3d centre = 0.25 * (ends[0] + ends[1] + ends[2] + ends[3]);
+    double height = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
+    double width = (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
+    std::optional<Eigen::Matrix3d> fitted_covariance;
+    if (options_.fit_rectangle) {
+      const auto fit = detail::fit_door_rectangle(detail::rectangle_from_ends(ends, up_in_left_),
+                                                  up_in_left_, fit_cameras_, {});
+      if (!fit || !fit->accepted) return std::nullopt;
+      centre = fit->rectangle.centre_m;
+      height = fit->rectangle.height_m;
+      width = fit->rectangle.width_m;
+      fitted_covariance = fit->centre_covariance_m2;
+    }
     std::string type = box.type;
     for (const BoxStereoOptions::Retype& rule : options_.retype_by_height_m) {
       if (rule.from == box.type && height >= rule.min_m && height <= rule.max_m) type = rule.to;
@@ -211,6 +236,7 @@ class PairPlacer {
     const auto t = triangulate(placed.left_px, placed.right_px, 0.0);
     if (!t) return std::nullopt;
     placed.triangulation = *t;
+    if (fitted_covariance) placed.triangulation.left_camera_covariance_m2 = *fitted_covariance;
     const double offset = depth_offset_of(options_, box.type);
     placed.triangulation.left_camera_position_m = centre + offset * centre.normalized();
     return placed;
@@ -220,8 +246,27 @@ class PairPlacer {
   detail::Triangulator triangulator_;
   const cv::Mat& left_grey_;
   const cv::Mat& right_grey_;
+  Eigen::Vector3d up_in_left_;
+  std::array<detail::FitCamera, 2> fit_cameras_;
   const BoxStereoOptions& options_;
 };
+
+bool distorted(const head::CameraIntrinsics& intrinsics) {
+  return std::any_of(intrinsics.distortion.begin(), intrinsics.distortion.end(),
+                     [](double d) { return d != 0.0; });
+}
+
+// The image undistorted into the ideal pinhole image of the same K (the image itself when the
+// camera has no distortion).
+cv::Mat ideal_image(const cv::Mat& grey, const head::CameraIntrinsics& intrinsics) {
+  if (!distorted(intrinsics)) return grey;
+  const cv::Matx33d K(intrinsics.fx_px, 0.0, intrinsics.cx_px, 0.0, intrinsics.fy_px,
+                      intrinsics.cy_px, 0.0, 0.0, 1.0);
+  cv::Mat ideal;
+  cv::undistort(grey, ideal, K,
+                std::vector<double>(intrinsics.distortion.begin(), intrinsics.distortion.end()));
+  return ideal;
+}
 
 }  // namespace
 
@@ -261,7 +306,13 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
   }
   for (const BoxDetection& box : left_boxes) result.left_detections.push_back(as_detection(box));
   for (const BoxDetection& box : right_boxes) result.right_detections.push_back(as_detection(box));
-  const PairPlacer placer(calibration, left_T_right, left_grey, right_grey, options_);
+  const std::array<cv::Mat, 2> ideal_greys{ideal_image(left_grey, calibration.left),
+                                           ideal_image(right_grey, calibration.right)};
+  // The ego frame's z axis is the world's vertical (the robot stands on a level floor).
+  const Eigen::Vector3d up_in_left =
+      result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ();
+  const PairPlacer placer(calibration, left_T_right, left_grey, right_grey, ideal_greys, up_in_left,
+                          options_);
   const detail::EpipolarGeometry epipolar(calibration.left, calibration.right, left_T_right);
   const std::vector<detail::BoxPair> pairs =
       detail::pair_boxes(left_boxes, right_boxes, calibration.left, calibration.right, epipolar,

@@ -5,9 +5,11 @@
 // good to a few pixels, a disparity must be good to a fraction of one): the left box's contents
 // are found again in the right image by normalized cross-correlation along the epipolar line. A
 // door's reference point, the centre of its front face, comes from its outline: each vertical
-// side of the box is correlated on its own, the four corners are triangulated at their sides'
-// disparities and the centre is their mean (a door seen at an angle is nearer on one side, and
-// the box's centre is not its face's). A handle's is its bar's middle. Then, as for the paper's
+// side of the box is correlated on its own and the four corners are triangulated at their sides'
+// disparities (a door seen at an angle is nearer on one side, and the box's centre is not its
+// face's); from there a vertical rectangle is fitted in 3D to the edges both images see along
+// its outline, and the door is kept only when all four sides are seen (door_rectangle_fit.hpp).
+// A handle's reference point is its bar's middle. Then, as for the paper's
 // recognizer, a 3x3 covariance from the pixel noise and registration into the ego frame through
 // the head kinematics at capture time (paper §2.1.1).
 #pragma once
@@ -50,6 +52,10 @@ struct BoxStereoOptions {
   double pixel_sigma_px = 1.0;  // noise of a reference pixel, each image coordinate
   // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
   std::vector<std::string> rectangle_types{"door"};
+  // Rectangles are fitted in 3D to the edges of their outline in both images (a vertical
+  // rectangle, door_rectangle_fit.hpp) and kept only when every side is seen; false: the centre
+  // is the mean of the corners triangulated at their sides' disparities.
+  bool fit_rectangle = true;
   // Each class's reference point lies this far behind the visible surface along the viewing
   // ray, metres (a handle's is its bar's axis). Classes not listed: 0.
   std::vector<std::pair<std::string, double>> reference_depth_offset_m{{"handle", 0.006}};

@@ -1,0 +1,338 @@
+#include "door_rectangle_fit.hpp"
+
+#include <ceres/ceres.h>
+
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace vsl::recognition::detail {
+namespace {
+
+// The horizontal basis (e1, e2) of the model (door_rectangle_fit.hpp).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontal_basis(const Eigen::Vector3d& up) {
+  Eigen::Vector3d e1 = Eigen::Vector3d::UnitX() - up.x() * up;
+  if (e1.norm() < 1e-6) e1 = Eigen::Vector3d::UnitZ() - up.z() * up;
+  e1.normalize();
+  return {e1, up.cross(e1)};
+}
+
+// Where on the square's border sample j of side s lies, (alpha, beta). Sides: 0 alpha = -1,
+// 1 alpha = +1, 2 beta = +1 (top), 3 beta = -1 (bottom); samples avoid the corners, where the
+// other side's edge crosses the search line.
+Eigen::Vector2d side_sample(int side, int j, int samples) {
+  const double t = -0.9 + 1.8 * (j + 0.5) / samples;
+  switch (side) {
+    case 0:
+      return {-1.0, t};
+    case 1:
+      return {1.0, t};
+    case 2:
+      return {t, 1.0};
+    default:
+      return {t, -1.0};
+  }
+}
+
+// X(alpha, beta) of the model, in the left camera frame, for any scalar type (Ceres' Jets).
+template <class T>
+Eigen::Matrix<T, 3, 1> model_point(const T* theta, const Eigen::Vector3d& e1,
+                                   const Eigen::Vector3d& e2, const Eigen::Vector3d& up,
+                                   const Eigen::Vector2d& alpha_beta) {
+  using std::cos;
+  using std::sin;
+  const Eigen::Matrix<T, 3, 1> a = cos(theta[3]) * e1.cast<T>() + sin(theta[3]) * e2.cast<T>();
+  const Eigen::Matrix<T, 3, 1> c(theta[0], theta[1], theta[2]);
+  return c + a * (T(0.5 * alpha_beta.x()) * theta[4]) +
+         up.cast<T>() * (T(0.5 * alpha_beta.y()) * theta[5]);
+}
+
+template <class T>
+Eigen::Matrix<T, 2, 1> project(const FitCamera& camera, const Eigen::Matrix<T, 3, 1>& x_left) {
+  const Eigen::Matrix<T, 3, 1> x = camera.camera_T_left.linear().cast<T>() * x_left +
+                                   camera.camera_T_left.translation().cast<T>();
+  const Eigen::Matrix<T, 3, 1> h = camera.K.cast<T>() * x;
+  return Eigen::Matrix<T, 2, 1>(h.x() / h.z(), h.y() / h.z());
+}
+
+// One edge measurement: r = n . (pi_k(X(theta)) - m), pixels.
+struct EdgeResidual {
+  const FitCamera* camera;
+  Eigen::Vector3d e1, e2, up;
+  Eigen::Vector2d alpha_beta, normal, edge_px;
+
+  template <class T>
+  bool operator()(const T* theta, T* residual) const {
+    const Eigen::Matrix<T, 3, 1> x = model_point(theta, e1, e2, up, alpha_beta);
+    const Eigen::Matrix<T, 3, 1> in_camera = camera->camera_T_left.linear().cast<T>() * x +
+                                             camera->camera_T_left.translation().cast<T>();
+    if (!(in_camera.z() > T(1e-3))) return false;
+    const Eigen::Matrix<T, 2, 1> p = project(*camera, x);
+    residual[0] =
+        T(normal.x()) * (p.x() - T(edge_px.x())) + T(normal.y()) * (p.y() - T(edge_px.y()));
+    return true;
+  }
+};
+
+double bilinear(const cv::Mat& grey, double u, double v) {
+  const int u0 = static_cast<int>(std::floor(u));
+  const int v0 = static_cast<int>(std::floor(v));
+  const double fu = u - u0, fv = v - v0;
+  const auto at = [&](int x, int y) { return static_cast<double>(grey.at<std::uint8_t>(y, x)); };
+  return (1 - fv) * ((1 - fu) * at(u0, v0) + fu * at(u0 + 1, v0)) +
+         fv * ((1 - fu) * at(u0, v0 + 1) + fu * at(u0 + 1, v0 + 1));
+}
+
+bool inside(const cv::Mat& grey, const Eigen::Vector2d& p, double margin) {
+  return p.x() >= margin && p.y() >= margin && p.x() <= grey.cols - 1 - margin &&
+         p.y() <= grey.rows - 1 - margin;
+}
+
+// The strongest intensity step along p + s n, |s| <= radius, of the given polarity (+1: brighter
+// outward along n, -1: darker, 0: either), from central differences at whole steps, the peak
+// refined by a parabola; nullopt when none reaches min_step. A search line leaving the image is
+// searched over the part inside it. `sign` is set to the step's polarity.
+std::optional<double> strongest_step(const cv::Mat& grey, const Eigen::Vector2d& p,
+                                     const Eigen::Vector2d& n, double radius, double min_step,
+                                     int polarity, int* sign) {
+  const int reach = static_cast<int>(std::ceil(radius)) + 1;
+  std::vector<double> profile(static_cast<std::size_t>(2 * reach + 1), -1.0);
+  for (int k = -reach; k <= reach; ++k) {
+    const Eigen::Vector2d q = p + k * n;
+    if (inside(grey, q, 0.0))
+      profile[static_cast<std::size_t>(k + reach)] = bilinear(grey, q.x(), q.y());
+  }
+  const auto value = [&](int k) { return profile[static_cast<std::size_t>(k + reach)]; };
+  const auto signed_step = [&](int k) {
+    return value(k - 1) < 0 || value(k + 1) < 0 ? 0.0 : 0.5 * (value(k + 1) - value(k - 1));
+  };
+  const auto strength = [&](int k) {
+    const double s = signed_step(k);
+    return polarity == 0 ? std::abs(s) : std::max(0.0, polarity * s);
+  };
+  int best = 0;
+  double best_strength = 0.0;
+  const int limit = static_cast<int>(std::floor(radius));
+  for (int k = -limit; k <= limit; ++k) {
+    const double s = strength(k);
+    if (s > best_strength || (s == best_strength && std::abs(k) < std::abs(best))) {
+      best_strength = s;
+      best = k;
+    }
+  }
+  if (best_strength < min_step) return std::nullopt;
+  *sign = signed_step(best) > 0.0 ? 1 : -1;
+  const double a = strength(best - 1), c = strength(best + 1);
+  const double curvature = a - 2.0 * best_strength + c;
+  const double offset = curvature < 0.0 ? std::clamp(0.5 * (a - c) / curvature, -0.5, 0.5) : 0.0;
+  return best + offset;
+}
+
+struct Measurement {
+  int camera;
+  Eigen::Vector2d alpha_beta, normal, edge_px;
+};
+
+struct SearchResult {
+  std::vector<Measurement> measurements;
+  std::array<std::array<double, 4>, 2> seen{}, cut{};
+};
+
+// A side's samples as projected into one image: position, outward unit normal, inside or cut.
+struct ProjectedSample {
+  Eigen::Vector2d alpha_beta, px, outward;
+  bool cut = false;
+};
+
+std::optional<std::vector<ProjectedSample>> project_side(
+    const double* theta, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
+    const Eigen::Vector3d& up, const FitCamera& camera, int side, int samples) {
+  const Eigen::Vector2d along = side < 2 ? Eigen::Vector2d(0.0, 0.05) : Eigen::Vector2d(0.05, 0.0);
+  const Eigen::Vector2d centre_px = project(camera, model_point(theta, e1, e2, up, {0.0, 0.0}));
+  std::vector<ProjectedSample> out;
+  for (int j = 0; j < samples; ++j) {
+    ProjectedSample s;
+    s.alpha_beta = side_sample(side, j, samples);
+    const Eigen::Vector3d x = model_point(theta, e1, e2, up, s.alpha_beta);
+    if ((camera.camera_T_left * x).z() <= 1e-3) return std::nullopt;
+    s.px = project(camera, x);
+    const Eigen::Vector2d tangent =
+        project(camera, model_point(theta, e1, e2, up, s.alpha_beta + along)) - s.px;
+    if (tangent.norm() < 1e-9) return std::nullopt;
+    s.outward = Eigen::Vector2d(-tangent.y(), tangent.x()).normalized();
+    if (s.outward.dot(s.px - centre_px) < 0.0) s.outward = -s.outward;
+    s.cut = !inside(*camera.grey, s.px, 1.0);
+    out.push_back(s);
+  }
+  return out;
+}
+
+// One round of edge search around the rectangle's projection in both images. A side's edge has
+// one polarity in both images (the door's face against the same background): the majority of
+// the strongest steps' signs over both images sets it, and only steps of that polarity are taken
+// (between two doors the gap is a dark line with a step of either sign; the door's own is the
+// one whose sign agrees with the rest of its side).
+SearchResult search_edges(const double* theta, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
+                          const Eigen::Vector3d& up, const std::array<FitCamera, 2>& cameras,
+                          double radius, const DoorFitOptions& options) {
+  SearchResult result;
+  const int n = options.samples_per_side;
+  for (int side = 0; side < 4; ++side) {
+    std::array<std::vector<ProjectedSample>, 2> projected;
+    int votes = 0;
+    for (int k = 0; k < 2; ++k) {
+      const FitCamera& camera = cameras[static_cast<std::size_t>(k)];
+      auto samples = project_side(theta, e1, e2, up, camera, side, n);
+      if (!samples) return {};
+      for (const ProjectedSample& s : *samples) {
+        int sign = 0;
+        if (!s.cut && strongest_step(*camera.grey, s.px, s.outward, radius, options.min_edge_step,
+                                     0, &sign)) {
+          votes += sign;
+        }
+      }
+      projected[static_cast<std::size_t>(k)] = std::move(*samples);
+    }
+    const int polarity = votes >= 0 ? 1 : -1;
+    for (int k = 0; k < 2; ++k) {
+      const FitCamera& camera = cameras[static_cast<std::size_t>(k)];
+      int seen = 0, cut = 0;
+      for (const ProjectedSample& s : projected[static_cast<std::size_t>(k)]) {
+        if (s.cut) {
+          ++cut;
+          continue;
+        }
+        int sign = 0;
+        const auto at = strongest_step(*camera.grey, s.px, s.outward, radius, options.min_edge_step,
+                                       polarity, &sign);
+        if (!at) continue;
+        ++seen;
+        result.measurements.push_back({k, s.alpha_beta, s.outward, s.px + *at * s.outward});
+      }
+      result.seen[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)] = double(seen) / n;
+      result.cut[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)] = double(cut) / n;
+    }
+  }
+  return result;
+}
+
+// (J^T J)^-1 of the solved problem at its parameters (loss applied), or nullopt when singular.
+std::optional<Eigen::Matrix<double, 6, 6>> inverse_information(ceres::Problem& problem) {
+  ceres::CRSMatrix jacobian;
+  ceres::Problem::EvaluateOptions evaluate;
+  evaluate.apply_loss_function = true;
+  if (!problem.Evaluate(evaluate, nullptr, nullptr, nullptr, &jacobian)) return std::nullopt;
+  Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
+  for (int row = 0; row < jacobian.num_rows; ++row) {
+    Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
+    for (int i = jacobian.rows[static_cast<std::size_t>(row)];
+         i < jacobian.rows[static_cast<std::size_t>(row) + 1]; ++i) {
+      g(jacobian.cols[static_cast<std::size_t>(i)]) = jacobian.values[static_cast<std::size_t>(i)];
+    }
+    information += g * g.transpose();
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(information);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
+      ldlt.vectorD().minCoeff() <= 1e-9 * ldlt.vectorD().maxCoeff()) {
+    return std::nullopt;
+  }
+  return ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
+}
+
+}  // namespace
+
+DoorRectangle rectangle_from_ends(const std::array<Eigen::Vector3d, 4>& ends,
+                                  const Eigen::Vector3d& up_in_left) {
+  const Eigen::Vector3d up = up_in_left.normalized();
+  const auto [e1, e2] = horizontal_basis(up);
+  DoorRectangle r;
+  r.centre_m = 0.25 * (ends[0] + ends[1] + ends[2] + ends[3]);
+  const Eigen::Vector3d across = 0.5 * (ends[2] + ends[3]) - 0.5 * (ends[0] + ends[1]);
+  r.yaw_rad = std::atan2(across.dot(e2), across.dot(e1));
+  r.width_m = (across - across.dot(up) * up).norm();
+  r.height_m =
+      0.5 * (std::abs((ends[0] - ends[1]).dot(up)) + std::abs((ends[2] - ends[3]).dot(up)));
+  return r;
+}
+
+std::array<Eigen::Vector3d, 4> rectangle_corners(const DoorRectangle& rectangle,
+                                                 const Eigen::Vector3d& up_in_left) {
+  const Eigen::Vector3d up = up_in_left.normalized();
+  const auto [e1, e2] = horizontal_basis(up);
+  const double theta[6] = {rectangle.centre_m.x(), rectangle.centre_m.y(), rectangle.centre_m.z(),
+                           rectangle.yaw_rad,      rectangle.width_m,      rectangle.height_m};
+  return {model_point(theta, e1, e2, up, {-1.0, 1.0}), model_point(theta, e1, e2, up, {-1.0, -1.0}),
+          model_point(theta, e1, e2, up, {1.0, 1.0}), model_point(theta, e1, e2, up, {1.0, -1.0})};
+}
+
+std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
+                                          const Eigen::Vector3d& up_in_left,
+                                          const std::array<FitCamera, 2>& cameras,
+                                          const DoorFitOptions& options) {
+  const Eigen::Vector3d up = up_in_left.normalized();
+  const auto [e1, e2] = horizontal_basis(up);
+  double theta[6] = {initial.centre_m.x(), initial.centre_m.y(), initial.centre_m.z(),
+                     initial.yaw_rad,      initial.width_m,      initial.height_m};
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;  // 6 parameters, a few dozen residuals
+  solver.num_threads = 1;
+  solver.max_num_iterations = 20;
+  solver.logging_type = ceres::SILENT;
+  ceres::HuberLoss huber(options.huber_px);
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+
+  SearchResult search;
+  std::unique_ptr<ceres::Problem> problem;
+  for (const double radius : options.search_radii_px) {
+    search = search_edges(theta, e1, e2, up, cameras, radius, options);
+    if (search.measurements.size() < 6) return std::nullopt;
+    problem = std::make_unique<ceres::Problem>(problem_options);
+    for (const Measurement& m : search.measurements) {
+      problem->AddResidualBlock(
+          new ceres::AutoDiffCostFunction<EdgeResidual, 1, 6>(
+              new EdgeResidual{&cameras[static_cast<std::size_t>(m.camera)], e1, e2, up,
+                               m.alpha_beta, m.normal, m.edge_px}),
+          &huber, theta);
+    }
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver, problem.get(), &summary);
+    if (!summary.IsSolutionUsable() || theta[4] <= 0.0 || theta[5] <= 0.0) return std::nullopt;
+  }
+  DoorFit fit;
+  fit.rectangle = {Eigen::Vector3d(theta[0], theta[1], theta[2]), theta[3], theta[4], theta[5]};
+  fit.seen_fraction = search.seen;
+  fit.cut_fraction = search.cut;
+  double sum_squares = 0.0;
+  for (const Measurement& m : search.measurements) {
+    const EdgeResidual residual{&cameras[static_cast<std::size_t>(m.camera)],
+                                e1,
+                                e2,
+                                up,
+                                m.alpha_beta,
+                                m.normal,
+                                m.edge_px};
+    double r = 0.0;
+    if (!residual(theta, &r)) return std::nullopt;
+    sum_squares += r * r;
+  }
+  fit.rms_px = std::sqrt(sum_squares / static_cast<double>(search.measurements.size()));
+  // Singular when a side is not seen at all: the rectangle is not determined along it.
+  const auto inverse = inverse_information(*problem);
+  if (inverse) {
+    const double s = std::max(options.pixel_sigma_px, fit.rms_px);
+    fit.centre_covariance_m2 = s * s * options.samples_per_side * inverse->topLeftCorner<3, 3>();
+  }
+  bool every_side_seen = true;
+  for (int side = 0; side < 4; ++side) {
+    const double seen = std::max(search.seen[0][static_cast<std::size_t>(side)],
+                                 search.seen[1][static_cast<std::size_t>(side)]);
+    every_side_seen = every_side_seen && seen >= options.min_seen_fraction;
+  }
+  fit.accepted = inverse && every_side_seen && fit.rms_px <= options.max_rms_px;
+  return fit;
+}
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,100 @@
+// One model of a door's front face seen in a stereo pair: a vertical rectangle in 3D, fitted to
+// the image edges both cameras see along its outline. Internal to vsl_recognition.
+//
+// Model. In the left camera frame (metres), with `up` the world's vertical (unit) and the
+// horizontal basis e1 = normalize(x - (x.up) up), e2 = up x e1 (x the camera's right axis), the
+// rectangle is
+//   theta = (c, psi, w, h):  centre c (3), yaw psi about `up`, width w, height h,
+//   a(psi) = cos(psi) e1 + sin(psi) e2                 (its horizontal side's direction),
+//   X(alpha, beta) = c + alpha (w / 2) a + beta (h / 2) up,   (alpha, beta) on the square's border.
+// Camera k (0 left, 1 right; ideal pinhole, undistorted image) sees X at
+//   pi_k(X) = dehomogenize(K_k (R_k X + t_k)),   (R_k, t_k) = k_T_left.
+//
+// Measurements ("moving edges", RAPiD). Each side is sampled at `samples_per_side` points. For
+// each sample and camera, the image is searched along the projected side's normal n (unit, 2D)
+// within +-radius pixels of pi_k(X) for the strongest intensity step; where one is found at m,
+// the residual is the normal distance
+//   r = n . (pi_k(X(theta)) - m)                                              (pixels),
+// and the fit minimizes sum rho(r^2) over both images with a Huber rho (an inner panel's edge or a
+// neighbour's found instead is down-weighted, not followed). Search and solve alternate with a
+// shrinking radius. A sample is, per image, seen (an edge found), cut (projected outside the
+// image) or hidden (inside, no edge: an occluder, or a face the same shade as its background).
+// The cut, corner, occluded and one-sided cases are these states, not separate code paths: a
+// side none of whose images sees it enough leaves the rectangle unknown along it, and the fit is
+// refused.
+//
+// Uncertainty. At the solution, Sigma_theta = s^2 (J^T J)^-1 with J the residuals' Jacobian and
+// s the residuals' RMS (at least pixel_sigma_px). The samples along one side share its edge's
+// systematic error (a shading gradient, the stile's bevel), so they are not independent
+// measurements: the covariance is multiplied by the samples per side, as if each side in each
+// image were one measurement of its position.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace cv {
+class Mat;
+}
+
+namespace vsl::recognition::detail {
+
+struct DoorRectangle {
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // left camera frame
+  double yaw_rad = 0.0;                                // of a(psi) about `up` from e1
+  double width_m = 0.0;
+  double height_m = 0.0;
+};
+
+// One camera of the pair: its ideal (undistorted) grey image, its pinhole K and where it is.
+struct FitCamera {
+  const cv::Mat* grey = nullptr;  // CV_8UC1, ideal pinhole image
+  Eigen::Matrix3d K = Eigen::Matrix3d::Identity();
+  Eigen::Isometry3d camera_T_left = Eigen::Isometry3d::Identity();
+};
+
+struct DoorFitOptions {
+  int samples_per_side = 12;
+  // Search radii of the alternating rounds, pixels (the first covers the initial box's error).
+  std::vector<double> search_radii_px{5.0, 3.0, 2.0};
+  double min_edge_step = 6.0;      // grey levels per pixel for an edge to count as seen
+  double huber_px = 1.0;           // where the Huber loss turns linear
+  double min_seen_fraction = 0.5;  // of each side's samples, in at least one image
+  double max_rms_px = 1.2;         // of the seen samples' residuals at the solution
+  double pixel_sigma_px = 0.5;     // floor of the residuals' RMS in the covariance
+};
+
+enum class EdgeState { kSeen, kCut, kHidden };
+
+struct DoorFit {
+  DoorRectangle rectangle;
+  Eigen::Matrix3d centre_covariance_m2 = Eigen::Matrix3d::Zero();
+  // Per camera and side (left, right, top, bottom as seen from the front), the fraction of the
+  // side's samples in each state at the last round.
+  std::array<std::array<double, 4>, 2> seen_fraction{};
+  std::array<std::array<double, 4>, 2> cut_fraction{};
+  double rms_px = 0.0;
+  bool accepted = false;  // every side seen enough, residuals within max_rms_px
+};
+
+// The rectangle through a vertical door's two sides' ends (left camera frame, metres: the first
+// side's top and bottom, then the second side's), as an initial estimate for the fit.
+DoorRectangle rectangle_from_ends(const std::array<Eigen::Vector3d, 4>& ends,
+                                  const Eigen::Vector3d& up_in_left);
+
+// The four corners (top first side, bottom first side, top second, bottom second) of a rectangle.
+std::array<Eigen::Vector3d, 4> rectangle_corners(const DoorRectangle& rectangle,
+                                                 const Eigen::Vector3d& up_in_left);
+
+// Fits the rectangle from `initial`; nullopt when the problem is degenerate (the rectangle behind
+// a camera, no edge found). `up_in_left`: the world's vertical in the left camera frame.
+std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
+                                          const Eigen::Vector3d& up_in_left,
+                                          const std::array<FitCamera, 2>& cameras,
+                                          const DoorFitOptions& options);
+
+}  // namespace vsl::recognition::detail
