@@ -169,50 +169,86 @@ std::optional<std::vector<ProjectedSample>> project_side(
   return out;
 }
 
-// One round of edge search around the rectangle's projection in both images. A side's edge has
-// one polarity in both images (the door's face against the same background): the majority of
-// the strongest steps' signs over both images sets it, and only steps of that polarity are taken
+// One side's edges in both images within `radius` of its projection. A side's edge has one
+// polarity in both images (the door's face against the same background): the majority of the
+// strongest steps' signs over both images sets it, and only steps of that polarity are taken
 // (between two doors the gap is a dark line with a step of either sign; the door's own is the
 // one whose sign agrees with the rest of its side).
+struct SideSearch {
+  std::vector<Measurement> measurements;
+  std::array<double, 2> seen{}, cut{};
+};
+
+SideSearch search_side(const std::array<std::vector<ProjectedSample>, 2>& projected,
+                       const std::array<FitCamera, 2>& cameras, double radius,
+                       const DoorFitOptions& options) {
+  int votes = 0;
+  for (int k = 0; k < 2; ++k) {
+    for (const ProjectedSample& s : projected[static_cast<std::size_t>(k)]) {
+      int sign = 0;
+      if (!s.cut && strongest_step(*cameras[static_cast<std::size_t>(k)].grey, s.px, s.outward,
+                                   radius, options.min_edge_step, 0, &sign)) {
+        votes += sign;
+      }
+    }
+  }
+  const int polarity = votes >= 0 ? 1 : -1;
+  SideSearch out;
+  for (int k = 0; k < 2; ++k) {
+    int seen = 0, cut = 0;
+    for (const ProjectedSample& s : projected[static_cast<std::size_t>(k)]) {
+      if (s.cut) {
+        ++cut;
+        continue;
+      }
+      int sign = 0;
+      const auto at = strongest_step(*cameras[static_cast<std::size_t>(k)].grey, s.px, s.outward,
+                                     radius, options.min_edge_step, polarity, &sign);
+      if (!at) continue;
+      ++seen;
+      out.measurements.push_back({k, s.alpha_beta, s.outward, s.px + *at * s.outward});
+    }
+    const double n = static_cast<double>(projected[static_cast<std::size_t>(k)].size());
+    out.seen[static_cast<std::size_t>(k)] = seen / n;
+    out.cut[static_cast<std::size_t>(k)] = cut / n;
+  }
+  return out;
+}
+
+// One round of edge search around the rectangle's projection in both images. A side not seen
+// within `radius` is searched again within wide_search_fraction of its distance from the
+// projected centre: the detector's box can be off by more than the radius on one side, and the
+// other sides' edges then hold the rest of the rectangle in place while that one is found.
 SearchResult search_edges(const double* theta, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
                           const Eigen::Vector3d& up, const std::array<FitCamera, 2>& cameras,
                           double radius, const DoorFitOptions& options) {
   SearchResult result;
-  const int n = options.samples_per_side;
   for (int side = 0; side < 4; ++side) {
     std::array<std::vector<ProjectedSample>, 2> projected;
-    int votes = 0;
+    double reach_px = 0.0;
     for (int k = 0; k < 2; ++k) {
       const FitCamera& camera = cameras[static_cast<std::size_t>(k)];
-      auto samples = project_side(theta, e1, e2, up, camera, side, n);
+      auto samples = project_side(theta, e1, e2, up, camera, side, options.samples_per_side);
       if (!samples) return {};
-      for (const ProjectedSample& s : *samples) {
-        int sign = 0;
-        if (!s.cut && strongest_step(*camera.grey, s.px, s.outward, radius, options.min_edge_step,
-                                     0, &sign)) {
-          votes += sign;
-        }
-      }
       projected[static_cast<std::size_t>(k)] = std::move(*samples);
     }
-    const int polarity = votes >= 0 ? 1 : -1;
+    const Eigen::Vector2d centre_px =
+        project(cameras[0], model_point(theta, e1, e2, up, {0.0, 0.0}));
+    for (const ProjectedSample& s : projected[0])
+      reach_px += std::abs(s.outward.dot(s.px - centre_px));
+    reach_px /= static_cast<double>(projected[0].size());
+    SideSearch found = search_side(projected, cameras, radius, options);
+    const double wide = options.wide_search_fraction * reach_px;
+    if (std::max(found.seen[0], found.seen[1]) < options.min_seen_fraction && wide > radius) {
+      found = search_side(projected, cameras, wide, options);
+    }
+    result.measurements.insert(result.measurements.end(), found.measurements.begin(),
+                               found.measurements.end());
     for (int k = 0; k < 2; ++k) {
-      const FitCamera& camera = cameras[static_cast<std::size_t>(k)];
-      int seen = 0, cut = 0;
-      for (const ProjectedSample& s : projected[static_cast<std::size_t>(k)]) {
-        if (s.cut) {
-          ++cut;
-          continue;
-        }
-        int sign = 0;
-        const auto at = strongest_step(*camera.grey, s.px, s.outward, radius, options.min_edge_step,
-                                       polarity, &sign);
-        if (!at) continue;
-        ++seen;
-        result.measurements.push_back({k, s.alpha_beta, s.outward, s.px + *at * s.outward});
-      }
-      result.seen[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)] = double(seen) / n;
-      result.cut[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)] = double(cut) / n;
+      result.seen[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)] =
+          found.seen[static_cast<std::size_t>(k)];
+      result.cut[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)] =
+          found.cut[static_cast<std::size_t>(k)];
     }
   }
   return result;

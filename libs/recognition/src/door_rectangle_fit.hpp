@@ -61,6 +61,9 @@ struct DoorFitOptions {
   int samples_per_side = 12;
   // Search radii of the alternating rounds, pixels (the first covers the initial box's error).
   std::vector<double> search_radii_px{5.0, 3.0, 2.0};
+  // A side not seen within the radius is searched again within this fraction of its distance
+  // from the projected centre (door_rectangle_fit.cpp, search_edges).
+  double wide_search_fraction = 0.15;
   double min_edge_step = 6.0;      // grey levels per pixel for an edge to count as seen
   double huber_px = 1.0;           // where the Huber loss turns linear
   double min_seen_fraction = 0.5;  // of each side's samples, in at least one image
