@@ -80,7 +80,11 @@ double bilinear(const cv::Mat& grey, double u, double v) {
   const int u0 = static_cast<int>(std::floor(u));
   const int v0 = static_cast<int>(std::floor(v));
   const double fu = u - u0, fv = v - v0;
-  const auto at = [&](int x, int y) { return static_cast<double>(grey.at<std::uint8_t>(y, x)); };
+  // On the last row or column the weight of the next one is 0; it is not read.
+  const auto at = [&](int x, int y) {
+    return static_cast<double>(
+        grey.at<std::uint8_t>(std::min(y, grey.rows - 1), std::min(x, grey.cols - 1)));
+  };
   return (1 - fv) * ((1 - fu) * at(u0, v0) + fu * at(u0 + 1, v0)) +
          fv * ((1 - fu) * at(u0, v0 + 1) + fu * at(u0 + 1, v0 + 1));
 }
@@ -97,7 +101,8 @@ bool inside(const cv::Mat& grey, const Eigen::Vector2d& p, double margin) {
 std::optional<double> strongest_step(const cv::Mat& grey, const Eigen::Vector2d& p,
                                      const Eigen::Vector2d& n, double radius, double min_step,
                                      int polarity, int* sign) {
-  const int reach = static_cast<int>(std::ceil(radius)) + 1;
+  // Steps at |k| <= radius + 1 (the peak's neighbours) read values at |k| <= radius + 2.
+  const int reach = static_cast<int>(std::ceil(radius)) + 2;
   std::vector<double> profile(static_cast<std::size_t>(2 * reach + 1), -1.0);
   for (int k = -reach; k <= reach; ++k) {
     const Eigen::Vector2d q = p + k * n;
