@@ -28,7 +28,8 @@ std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
                                 const head::CameraIntrinsics& left_intrinsics,
                                 const head::CameraIntrinsics& right_intrinsics,
                                 const EpipolarGeometry& epipolar, const Triangulator& triangulator,
-                                const BoxStereoOptions& options) {
+                                const BoxStereoOptions& options,
+                                const std::function<double(int, int)>& appearance) {
   struct Candidate {
     double cost;
     int left;
@@ -59,8 +60,9 @@ std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
       }
       const auto point = triangulator.point(left_centre, right_centre);
       if (!point || point->z() < options.min_depth_m || point->z() > options.max_depth_m) continue;
-      candidates.push_back({epipolar_px / std::max(height, 1.0) + width_ratio + height_ratio,
-                            static_cast<int>(l), static_cast<int>(r)});
+      double cost = epipolar_px / std::max(height, 1.0) + width_ratio + height_ratio;
+      if (appearance) cost += 1.0 - appearance(static_cast<int>(l), static_cast<int>(r));
+      candidates.push_back({cost, static_cast<int>(l), static_cast<int>(r)});
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -29,13 +30,17 @@ struct BoxPair {
 // the left centre's epipolar line, the centres triangulate to a depth in the disparity range, and
 // the widths and heights differ by at most max_size_ratio. Admissible pairs are taken greedily,
 // the lowest cost first: epipolar distance over box height plus the two log size ratios. Boxes
-// within border_margin_px of the border take no part.
+// within border_margin_px of the border take no part. `appearance(l, r)`, when given, is the
+// normalized cross-correlation (-1 .. 1) of the two boxes' surroundings at the pair's shift, and
+// adds (1 - it) to the cost: a row of identical handles at one height lies along the epipolar
+// line, and only what is around each (a door's edge, the next handle) tells them apart.
 std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
                                 const std::vector<BoxDetection>& right,
                                 const head::CameraIntrinsics& left_intrinsics,
                                 const head::CameraIntrinsics& right_intrinsics,
                                 const EpipolarGeometry& epipolar, const Triangulator& triangulator,
-                                const BoxStereoOptions& options);
+                                const BoxStereoOptions& options,
+                                const std::function<double(int, int)>& appearance = {});
 
 // Whether a box is at least `margin_px` from every border of a width x height image.
 bool inside_image(const BoxDetection& box, int width, int height, double margin_px);

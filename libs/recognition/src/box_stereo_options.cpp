@@ -28,8 +28,9 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   section.expect_keys({"max_epipolar_distance_px", "epipolar_box_fraction", "min_depth_m",
                        "max_depth_m", "max_size_ratio", "border_margin_px", "snap_band_fraction",
                        "snap_min_band_px", "min_correlation", "max_template_px", "pixel_sigma_px",
-                       "rectangle_types", "fit_rectangle", "reference_depth_offset_m",
-                       "height_range_m", "retype_by_height_m", "width_range_m", "length_range_m"});
+                       "rectangle_types", "fit_rectangle", "pair_by_surroundings",
+                       "reference_depth_offset_m", "height_range_m", "retype_by_height_m",
+                       "width_range_m", "length_range_m"});
   BoxStereoOptions out;
   const auto number = [&](const char* key, double& value, double min, double max) {
     if (const auto v = section.find(key)) value = v->as_double_in(min, max);
@@ -57,6 +58,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
     }
   }
   if (const auto v = section.find("fit_rectangle")) out.fit_rectangle = v->as_bool();
+  if (const auto v = section.find("pair_by_surroundings")) out.pair_by_surroundings = v->as_bool();
   if (const auto offsets = section.find("reference_depth_offset_m")) {
     offsets->expect_map();
     out.reference_depth_offset_m.clear();

@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 
@@ -314,9 +315,25 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
   const PairPlacer placer(calibration, left_T_right, left_grey, right_grey, ideal_greys, up_in_left,
                           options_);
   const detail::EpipolarGeometry epipolar(calibration.left, calibration.right, left_T_right);
-  const std::vector<detail::BoxPair> pairs =
-      detail::pair_boxes(left_boxes, right_boxes, calibration.left, calibration.right, epipolar,
-                         placer.triangulator(), options_);
+  // The surroundings of a box: the box grown by its larger side (at least 16 px) each way.
+  const auto surroundings = [&](int l, int r) {
+    const BoxDetection& a = left_boxes[static_cast<std::size_t>(l)];
+    const BoxDetection& b = right_boxes[static_cast<std::size_t>(r)];
+    const double grow = std::max({a.width_px(), a.height_px(), 16.0});
+    const Eigen::Vector2d margin(grow, grow);
+    const Eigen::Vector2d image(left_grey.cols, left_grey.rows);
+    const Eigen::Vector2d lo = (a.min_px - margin).cwiseMax(Eigen::Vector2d::Zero());
+    const Eigen::Vector2d hi = (a.max_px + margin).cwiseMin(image);
+    const auto match =
+        detail::find_in_right_image(left_grey, right_grey, lo, hi, b.centre_px() - a.centre_px(),
+                                    Eigen::Vector2d(3.0, 2.0), options_.max_template_px);
+    return match ? match->correlation : -1.0;
+  };
+  const std::vector<detail::BoxPair> pairs = detail::pair_boxes(
+      left_boxes, right_boxes, calibration.left, calibration.right, epipolar, placer.triangulator(),
+      options_,
+      options_.pair_by_surroundings ? std::function<double(int, int)>(surroundings)
+                                    : std::function<double(int, int)>());
   // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
   const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
   for (const detail::BoxPair& pair : pairs) {

@@ -52,6 +52,9 @@ struct BoxStereoOptions {
   double pixel_sigma_px = 1.0;  // noise of a reference pixel, each image coordinate
   // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
   std::vector<std::string> rectangle_types{"door"};
+  // Candidate pairs are also scored by how well the boxes' surroundings correlate at the pair's
+  // shift (a row of identical handles lies along the epipolar line; box_stereo.hpp).
+  bool pair_by_surroundings = true;
   // Rectangles are fitted in 3D to the edges of their outline in both images (a vertical
   // rectangle, door_rectangle_fit.hpp) and kept only when every side is seen; false: the centre
   // is the mean of the corners triangulated at their sides' disparities.
