@@ -10,6 +10,17 @@
 namespace vsl::tools {
 namespace {
 
+recognition::GroundTruthObject visible_object(const std::string& type,
+                                              const Eigen::Vector3d& ego_position_m,
+                                              double distance_m) {
+  recognition::GroundTruthObject object;
+  object.type = type;
+  object.ego_position_m = ego_position_m;
+  object.distance_m = distance_m;
+  object.visible = true;
+  return object;
+}
+
 // The door tally of one frame whose only percept is a door at `ego_position_m`.
 ClassTally door_tally_of_one_percept(const std::vector<recognition::GroundTruthObject>& truth,
                                      const Eigen::Vector3d& ego_position_m) {
@@ -26,15 +37,8 @@ ClassTally door_tally_of_one_percept(const std::vector<recognition::GroundTruthO
 }
 
 TEST(RecognitionEvaluation, FalsePositivesAreMisplacedMistypedOrOnNothing) {
-  std::vector<recognition::GroundTruthObject> truth(2);
-  truth[0].type = "door";
-  truth[0].ego_position_m = {2.0, 0.0, 1.0};
-  truth[0].distance_m = 2.0;
-  truth[0].visible = true;
-  truth[1].type = "handle";
-  truth[1].ego_position_m = {2.0, 1.5, 1.0};
-  truth[1].distance_m = 2.5;
-  truth[1].visible = true;
+  const std::vector<recognition::GroundTruthObject> truth{
+      visible_object("door", {2.0, 0.0, 1.0}, 2.0), visible_object("handle", {2.0, 1.5, 1.0}, 2.5)};
   const ClassTally misplaced = door_tally_of_one_percept(truth, {2.0, 0.3, 1.0});
   EXPECT_EQ(misplaced.false_misplaced, 1);
   EXPECT_EQ(misplaced.false_mistyped, 0);
@@ -58,18 +62,10 @@ TEST(RecognitionEvaluation, QuantilesInterpolateBetweenOrderStatistics) {
 }
 
 TEST(RecognitionEvaluation, TalliesPrecisionRecallErrorsAndRange) {
-  std::vector<recognition::GroundTruthObject> truth(3);
-  truth[0].type = "door";
-  truth[0].ego_position_m = {2.5, 0.0, 1.0};
-  truth[0].distance_m = 2.5;
-  truth[0].visible = true;
-  truth[1].type = "door";
-  truth[1].ego_position_m = {1.5, 1.0, 1.0};
-  truth[1].distance_m = 1.5;
-  truth[1].visible = true;
-  truth[2].type = "door";  // a door hidden behind the table: not ground truth
-  truth[2].ego_position_m = {1.0, -1.0, 0.5};
-  truth[2].distance_m = 1.2;
+  std::vector<recognition::GroundTruthObject> truth{visible_object("door", {2.5, 0.0, 1.0}, 2.5),
+                                                    visible_object("door", {1.5, 1.0, 1.0}, 1.5),
+                                                    visible_object("door", {1.0, -1.0, 0.5}, 1.2)};
+  truth[2].visible = false;  // a door hidden behind the table: not ground truth
   recognition::FrameResult result;
   result.ego_T_left_camera.translation() = Eigen::Vector3d(0.0, 0.0, 1.0);
   auto percept = [](Eigen::Vector3d p) {

@@ -84,13 +84,18 @@ DoorRectangle perturbed(const DoorRectangle& door) {
   return start;
 }
 
-TEST(DoorRectangleFit, RecoversTheDoorFromAPerturbedStart) {
-  const Scene scene;
+// The fit on the scene's two rendered images, from the perturbed start.
+std::optional<DoorFit> fit_rendered(const Scene& scene) {
   auto cams = cameras();
   const auto images = render(scene, cams);
   cams[0].grey = &images[0];
   cams[1].grey = &images[1];
-  const auto fit = fit_door_rectangle(perturbed(scene.door), up_in_left(), cams, {});
+  return fit_door_rectangle(perturbed(scene.door), up_in_left(), cams, {});
+}
+
+TEST(DoorRectangleFit, RecoversTheDoorFromAPerturbedStart) {
+  const Scene scene;
+  const auto fit = fit_rendered(scene);
   ASSERT_TRUE(fit.has_value());
   EXPECT_TRUE(fit->accepted) << "rms " << fit->rms_px;
   EXPECT_LT((fit->rectangle.centre_m - scene.door.centre_m).norm(), 0.02);
@@ -113,11 +118,7 @@ TEST(DoorRectangleFit, RecoversTheDoorFromAPerturbedStart) {
 TEST(DoorRectangleFit, RefusesADoorWhoseBottomIsHidden) {
   Scene scene;
   scene.hidden_below_fraction = 0.6;
-  auto cams = cameras();
-  const auto images = render(scene, cams);
-  cams[0].grey = &images[0];
-  cams[1].grey = &images[1];
-  const auto fit = fit_door_rectangle(perturbed(scene.door), up_in_left(), cams, {});
+  const auto fit = fit_rendered(scene);
   ASSERT_TRUE(fit.has_value());
   EXPECT_FALSE(fit->accepted);
   EXPECT_LT(fit->seen_fraction[0][3], 0.5);  // the bottom: hidden
@@ -126,11 +127,7 @@ TEST(DoorRectangleFit, RefusesADoorWhoseBottomIsHidden) {
 TEST(DoorRectangleFit, RefusesADoorCutByTheImageBorder) {
   Scene scene;
   scene.door.centre_m.x() = -1.18;  // its first side beyond the left border of both images
-  auto cams = cameras();
-  const auto images = render(scene, cams);
-  cams[0].grey = &images[0];
-  cams[1].grey = &images[1];
-  const auto fit = fit_door_rectangle(perturbed(scene.door), up_in_left(), cams, {});
+  const auto fit = fit_rendered(scene);
   if (!fit) return;  // degenerate is a refusal too
   EXPECT_FALSE(fit->accepted);
   EXPECT_GT(fit->cut_fraction[0][0] + fit->cut_fraction[1][0], 0.9);
