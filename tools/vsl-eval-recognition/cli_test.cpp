@@ -92,6 +92,10 @@ TEST(VslEvalRecognition, BadInputExitsTwoWithOneLine) {
   const auto help = run_command({VSL_EVAL_RECOGNITION_BIN, "--help"});
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("--json FILE"), std::string::npos);
+  // The photograph mode's own usage, as the main usage points to it.
+  const auto images_help = run_command({VSL_EVAL_RECOGNITION_BIN, "--images", "--help"});
+  EXPECT_EQ(images_help.exit_code, 0);
+  EXPECT_NE(images_help.out.find("--yolo-labels DIR"), std::string::npos) << images_help.out;
 }
 
 }  // namespace

@@ -71,6 +71,15 @@ struct Options {
 
 Options parse(int argc, char** argv) {
   Options o;
+  // --help anywhere, also after an option that takes a value ("--images --help", as the main
+  // usage says), prints this mode's usage.
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::cout << kUsage;
+      std::exit(0);
+    }
+  }
   auto value_of = [&](int& i, const std::string& arg) -> std::string {
     if (i + 1 >= argc) usage_error(arg + " needs a value");
     return argv[++i];
