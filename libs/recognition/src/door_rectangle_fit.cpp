@@ -149,6 +149,7 @@ struct SearchResult {
 struct ProjectedSample {
   Eigen::Vector2d alpha_beta, px, outward;
   bool cut = false;
+  double reach_px = 0.0;  // the sample's distance from the projected centre along `outward`
 };
 
 std::optional<std::vector<ProjectedSample>> project_side(
@@ -168,6 +169,7 @@ std::optional<std::vector<ProjectedSample>> project_side(
     if (tangent.norm() < 1e-9) return std::nullopt;
     s.outward = Eigen::Vector2d(-tangent.y(), tangent.x()).normalized();
     if (s.outward.dot(s.px - centre_px) < 0.0) s.outward = -s.outward;
+    s.reach_px = s.outward.dot(s.px - centre_px);
     s.cut = !inside(*camera.grey, s.px, 1.0);
     out.push_back(s);
   }
@@ -237,10 +239,7 @@ SearchResult search_edges(const double* theta, const Eigen::Vector3d& e1, const 
       if (!samples) return {};
       projected[static_cast<std::size_t>(k)] = std::move(*samples);
     }
-    const Eigen::Vector2d centre_px =
-        project(cameras[0], model_point(theta, e1, e2, up, {0.0, 0.0}));
-    for (const ProjectedSample& s : projected[0])
-      reach_px += std::abs(s.outward.dot(s.px - centre_px));
+    for (const ProjectedSample& s : projected[0]) reach_px += s.reach_px;
     reach_px /= static_cast<double>(projected[0].size());
     SideSearch found = search_side(projected, cameras, radius, options);
     const double wide = options.wide_search_fraction * reach_px;
