@@ -85,13 +85,10 @@ class PairPlacer {
         right_grey_(right_grey),
         up_in_left_(up_in_left),
         options_(options) {
-    const auto pinhole = [](const head::CameraIntrinsics& c) {
-      Eigen::Matrix3d K;
-      K << c.fx_px, 0.0, c.cx_px, 0.0, c.fy_px, c.cy_px, 0.0, 0.0, 1.0;
-      return K;
-    };
-    fit_cameras_[0] = {&ideal_greys[0], pinhole(calibration.left), Eigen::Isometry3d::Identity()};
-    fit_cameras_[1] = {&ideal_greys[1], pinhole(calibration.right), left_T_right.inverse()};
+    fit_cameras_[0] = {&ideal_greys[0], detail::camera_matrix(calibration.left),
+                       Eigen::Isometry3d::Identity()};
+    fit_cameras_[1] = {&ideal_greys[1], detail::camera_matrix(calibration.right),
+                       left_T_right.inverse()};
   }
 
   const detail::Triangulator& triangulator() const { return triangulator_; }
@@ -232,12 +229,15 @@ class PairPlacer {
     placed.type = type;
     placed.left_px = raw(box.centre_px());
     placed.right_px = placed.left_px + 0.5 * (shifts[0] + shifts[1]);
-    // The covariance of the centre as the triangulation of one reference pixel pair; the
-    // position the corners'.
-    const auto t = triangulate(placed.left_px, placed.right_px, 0.0);
-    if (!t) return std::nullopt;
-    placed.triangulation = *t;
-    if (fitted_covariance) placed.triangulation.left_camera_covariance_m2 = *fitted_covariance;
+    // The covariance: the fit's, or without the fit that of the centre triangulated as one
+    // reference pixel pair. The position: the fit's centre, or the corners'.
+    if (fitted_covariance) {
+      placed.triangulation.left_camera_covariance_m2 = *fitted_covariance;
+    } else {
+      const auto t = triangulate(placed.left_px, placed.right_px, 0.0);
+      if (!t) return std::nullopt;
+      placed.triangulation = *t;
+    }
     const double offset = depth_offset_of(options_, box.type);
     placed.triangulation.left_camera_position_m = centre + offset * centre.normalized();
     return placed;
@@ -307,8 +307,12 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
   }
   for (const BoxDetection& box : left_boxes) result.left_detections.push_back(as_detection(box));
   for (const BoxDetection& box : right_boxes) result.right_detections.push_back(as_detection(box));
-  const std::array<cv::Mat, 2> ideal_greys{ideal_image(left_grey, calibration.left),
-                                           ideal_image(right_grey, calibration.right)};
+  // Undistorted only for the rectangle fit, which projects through a pinhole.
+  std::array<cv::Mat, 2> ideal_greys{left_grey, right_grey};
+  if (options_.fit_rectangle) {
+    ideal_greys = {ideal_image(left_grey, calibration.left),
+                   ideal_image(right_grey, calibration.right)};
+  }
   // The ego frame's z axis is the world's vertical (the robot stands on a level floor).
   const Eigen::Vector3d up_in_left =
       result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ();
