@@ -1,6 +1,8 @@
 // Tallies of a recognition evaluation (evaluation.hpp).
 #include "evaluation.hpp"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -99,8 +101,13 @@ std::vector<recognition::PerceptMatch> tally_frame(
         const bool whole = recognition::whole_in_both_images(object);
         if (whole) ++c.true_positives_whole;
         count_by_viewing_angle(object, whole, c.flat_true_positives, c.flat_true_positives_whole);
-        c.errors_m[static_cast<std::size_t>(distance_band(object.distance_m))].push_back(
-            matches[i].error_m);
+        const auto band = static_cast<std::size_t>(distance_band(object.distance_m));
+        c.errors_m[band].push_back(matches[i].error_m);
+        const Eigen::Vector3d error = result.percepts[i].ego_position_m - object.ego_position_m;
+        const Eigen::LDLT<Eigen::Matrix3d> covariance(result.percepts[i].ego_covariance_m2);
+        if (covariance.info() == Eigen::Success && covariance.isPositive()) {
+          c.mahalanobis2[band].push_back(error.dot(covariance.solve(error)));
+        }
         continue;
       }
       bool on_other_object = false;

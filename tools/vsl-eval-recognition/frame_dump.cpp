@@ -18,7 +18,8 @@ bool project(const head::CameraIntrinsics& k, const Eigen::Vector3d& p, cv::Poin
   return true;
 }
 
-// Blobs outlined (grey), detections' boxes (yellow), door outlines' quadrilaterals (magenta).
+// Blobs outlined (grey), detections' boxes (yellow; a learned detector's handles orange), door
+// outlines' quadrilaterals (magenta).
 void draw_blobs(cv::Mat& picture, const std::vector<recognition::Blob>& blobs,
                 const std::vector<recognition::Detection>& detections) {
   for (const recognition::Blob& blob : blobs) {
@@ -31,6 +32,17 @@ void draw_blobs(cv::Mat& picture, const std::vector<recognition::Blob>& blobs,
     cv::drawContours(picture, contours, -1, cv::Scalar(160, 160, 160), 1);
   }
   for (const recognition::Detection& d : detections) {
+    // A learned detection has no blob: its box is its outline (doors yellow, the rest orange).
+    if (d.blob_index < 0 && d.corners_px.size() == 4) {
+      const cv::Scalar colour =
+          d.type == "door" ? cv::Scalar(0, 220, 255) : cv::Scalar(0, 140, 255);
+      cv::rectangle(
+          picture,
+          cv::Point(int(std::lround(d.corners_px[0].x())), int(std::lround(d.corners_px[0].y()))),
+          cv::Point(int(std::lround(d.corners_px[2].x())), int(std::lround(d.corners_px[2].y()))),
+          colour, 1);
+      continue;
+    }
     if (d.blob_index < 0 || d.blob_index >= static_cast<int>(blobs.size())) continue;
     const recognition::Blob& b = blobs[static_cast<std::size_t>(d.blob_index)];
     cv::rectangle(picture, cv::Point(b.u_min, b.v_min), cv::Point(b.u_max, b.v_max),
@@ -57,6 +69,19 @@ bool write_frame_dump(const std::string& path, const cv::Mat& left_bgr,
                       const std::vector<recognition::PerceptMatch>& matches) {
   cv::Mat picture = left_bgr.clone();
   draw_blobs(picture, result.left_blobs, result.left_detections);
+  // Why a pair of learned detections was refused, at its left box's top left corner.
+  for (const recognition::StereoRefusal& refusal : result.stereo_refusals) {
+    if (refusal.left_detection < 0 ||
+        refusal.left_detection >= static_cast<int>(result.left_detections.size())) {
+      continue;
+    }
+    const recognition::Detection& d =
+        result.left_detections[static_cast<std::size_t>(refusal.left_detection)];
+    if (d.corners_px.empty()) continue;
+    const cv::Point at(int(std::lround(d.corners_px[0].x())) + 2,
+                       int(std::lround(d.corners_px[0].y())) + 10);
+    cv::putText(picture, refusal.reason, at, cv::FONT_HERSHEY_PLAIN, 0.8, cv::Scalar(0, 0, 255), 1);
+  }
   const Eigen::Isometry3d left_T_ego = result.ego_T_left_camera.inverse();
   for (const recognition::GroundTruthObject& object : ground_truth) {
     cv::Point p;

@@ -25,12 +25,26 @@ std::vector<BoxStereoOptions::Range> ranges_from(const config::Node& ranges) {
 }  // namespace
 
 BoxStereoOptions box_stereo_options_from(const config::Node& section) {
-  section.expect_keys({"max_epipolar_distance_px", "epipolar_box_fraction", "min_depth_m",
-                       "max_depth_m", "max_size_ratio", "border_margin_px", "snap_band_fraction",
-                       "snap_min_band_px", "min_correlation", "max_template_px", "pixel_sigma_px",
-                       "rectangle_types", "fit_rectangle", "pair_by_surroundings",
-                       "reference_depth_offset_m", "height_range_m", "retype_by_height_m",
-                       "width_range_m", "length_range_m"});
+  section.expect_keys({"max_epipolar_distance_px",
+                       "epipolar_box_fraction",
+                       "min_depth_m",
+                       "max_depth_m",
+                       "max_size_ratio",
+                       "border_margin_px",
+                       "snap_band_fraction",
+                       "snap_min_band_px",
+                       "min_correlation",
+                       "max_template_px",
+                       "noise_px",
+                       "rectangle_types",
+                       "fit_rectangle",
+                       "pair_by_surroundings",
+                       "reference_depth_offset_m",
+                       "height_range_m",
+                       "retype_by_height_m",
+                       "width_range_m",
+                       "length_range_m",
+                       "thickness_range_m"});
   BoxStereoOptions out;
   const auto number = [&](const char* key, double& value, double min, double max) {
     if (const auto v = section.find(key)) value = v->as_double_in(min, max);
@@ -49,7 +63,19 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   number("snap_min_band_px", out.snap_min_band_px, 0.0, 100.0);
   number("min_correlation", out.min_correlation, -1.0, 1.0);
   number("max_template_px", out.max_template_px, 16.0, 1e7);
-  number("pixel_sigma_px", out.pixel_sigma_px, 1e-3, 100.0);
+  // {type: [reference_sigma_px, disparity_sigma_px], ...} replacing the defaults.
+  if (const auto noise = section.find("noise_px")) {
+    noise->expect_map();
+    out.noise_px.clear();
+    for (const std::string& type : noise->keys()) {
+      const config::Node sigmas = noise->at(type);
+      const auto values = sigmas.as_array<2>();
+      if (!(values[0] > 0.0 && values[0] <= 100.0 && values[1] > 0.0 && values[1] <= 100.0)) {
+        sigmas.fail("expected [reference_sigma_px, disparity_sigma_px], each in (0, 100]");
+      }
+      out.noise_px.push_back({type, values[0], values[1]});
+    }
+  }
   if (const auto types = section.find("rectangle_types")) {
     if (!types->is_sequence()) types->fail("expected a list of object types, e.g. [door]");
     out.rectangle_types.clear();
@@ -79,6 +105,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
     }
   }
   if (const auto r = section.find("length_range_m")) out.length_range_m = ranges_from(*r);
+  if (const auto r = section.find("thickness_range_m")) out.thickness_range_m = ranges_from(*r);
   return out;
 }
 

@@ -71,6 +71,23 @@ struct Placed {
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();
 };
 
+// Why a rectangle fit was refused: the first side no image saw enough (cut by the border or
+// hidden), else its residuals.
+std::string fit_refusal(const std::optional<detail::DoorFit>& fit) {
+  if (!fit) return "fit: degenerate";
+  static constexpr std::array<const char*, 4> kSides{"left", "right", "top", "bottom"};
+  const detail::DoorFitOptions defaults;
+  for (std::size_t side = 0; side < 4; ++side) {
+    if (std::max(fit->seen_fraction[0][side], fit->seen_fraction[1][side]) >=
+        defaults.min_seen_fraction) {
+      continue;
+    }
+    const bool cut = std::max(fit->cut_fraction[0][side], fit->cut_fraction[1][side]) >= 0.5;
+    return std::string("fit: ") + kSides[side] + (cut ? " cut" : " hidden");
+  }
+  return "fit: residuals";
+}
+
 class PairPlacer {
  public:
   // `ideal_greys`: both images undistorted (the rectangle fit's pinhole images); `up_in_left`:
@@ -94,8 +111,10 @@ class PairPlacer {
   const detail::Triangulator& triangulator() const { return triangulator_; }
 
   // `left_boxes`: every box of the left image (a door's side strips leave out its handle's).
+  // `refusal`: why the pair was not placed, when it was not.
   std::optional<Placed> place(const BoxDetection& left, const BoxDetection& right,
-                              const std::vector<BoxDetection>& left_boxes) const {
+                              const std::vector<BoxDetection>& left_boxes,
+                              std::string& refusal) const {
     const Eigen::Vector2d margin(2.0, 2.0);
     const Eigen::Vector2d predicted = right.centre_px() - left.centre_px();
     const double width = std::max(left.width_px(), right.width_px());
@@ -103,12 +122,15 @@ class PairPlacer {
     const auto whole = detail::find_in_right_image(left_grey_, right_grey_, left.min_px - margin,
                                                    left.max_px + margin, predicted, search,
                                                    options_.max_template_px);
-    if (!whole || whole->correlation < options_.min_correlation) return std::nullopt;
+    if (!whole || whole->correlation < options_.min_correlation) {
+      refusal = "correlation";
+      return std::nullopt;
+    }
     const bool rectangle =
         std::find(options_.rectangle_types.begin(), options_.rectangle_types.end(), left.type) !=
         options_.rectangle_types.end();
-    return rectangle ? place_rectangle(left, whole->shift_px, left_boxes)
-                     : place_point(left, whole->shift_px);
+    return rectangle ? place_rectangle(left, whole->shift_px, left_boxes, refusal)
+                     : place_point(left, whole->shift_px, refusal);
   }
 
  private:
@@ -117,27 +139,56 @@ class PairPlacer {
     return continuous_px - Eigen::Vector2d(0.5, 0.5);
   }
 
-  std::optional<detail::Triangulation> triangulate(const Eigen::Vector2d& left_raw,
+  // The class's noise of a matched pixel pair (BoxStereoOptions::noise_px).
+  Eigen::Matrix4d pixel_covariance(const std::string& type) const {
+    BoxStereoOptions::Noise noise;
+    for (const BoxStereoOptions::Noise& n : options_.noise_px) {
+      if (n.type == type) noise = n;
+    }
+    return detail::reference_disparity_covariance(noise.reference_sigma_px,
+                                                  noise.disparity_sigma_px);
+  }
+
+  // A left camera point's ideal pixel in camera k (0 left, 1 right).
+  Eigen::Vector2d ideal_projection(int k, const Eigen::Vector3d& left_point_m) const {
+    const detail::FitCamera& camera = fit_cameras_[static_cast<std::size_t>(k)];
+    return (camera.K * (camera.camera_T_left * left_point_m)).hnormalized();
+  }
+
+  std::optional<detail::Triangulation> triangulate(const std::string& type,
+                                                   const Eigen::Vector2d& left_raw,
                                                    const Eigen::Vector2d& right_raw,
                                                    double offset_m) const {
     return triangulator_.triangulate(detail::undistort({left_raw}, calibration_.left).front(),
                                      detail::undistort({right_raw}, calibration_.right).front(),
-                                     options_.pixel_sigma_px, offset_m);
+                                     pixel_covariance(type), offset_m);
   }
 
-  std::optional<Placed> place_point(const BoxDetection& box, const Eigen::Vector2d& shift) const {
+  std::optional<Placed> place_point(const BoxDetection& box, const Eigen::Vector2d& shift,
+                                    std::string& refusal) const {
     Placed placed;
     placed.type = box.type;
     placed.left_px = raw(box.centre_px());
     placed.right_px = placed.left_px + shift;
     const auto t =
-        triangulate(placed.left_px, placed.right_px, depth_offset_of(options_, box.type));
-    if (!t) return std::nullopt;
-    const double depth = t->left_camera_position_m.z();
-    if (depth < options_.min_depth_m || depth > options_.max_depth_m) return std::nullopt;
+        triangulate(box.type, placed.left_px, placed.right_px, depth_offset_of(options_, box.type));
+    const double depth = t ? t->left_camera_position_m.z() : 0.0;
+    if (!t || depth < options_.min_depth_m || depth > options_.max_depth_m) {
+      refusal = "depth";
+      return std::nullopt;
+    }
     const double length_m =
         std::max(box.width_px(), box.height_px()) * depth / calibration_.left.fx_px;
-    if (!in_range(options_.length_range_m, box.type, length_m)) return std::nullopt;
+    if (!in_range(options_.length_range_m, box.type, length_m)) {
+      refusal = "length";
+      return std::nullopt;
+    }
+    const double thickness_m =
+        std::min(box.width_px(), box.height_px()) * depth / calibration_.left.fx_px;
+    if (!in_range(options_.thickness_range_m, box.type, thickness_m)) {
+      refusal = "thickness";
+      return std::nullopt;
+    }
     placed.triangulation = *t;
     return placed;
   }
@@ -150,7 +201,8 @@ class PairPlacer {
   // its own disparity, would pull the side's. The strip keeps the longest run of rows clear of
   // the other classes' boxes across it (at least 30 % of the strip, else the whole box's shift).
   std::optional<Placed> place_rectangle(const BoxDetection& box, const Eigen::Vector2d& whole_shift,
-                                        const std::vector<BoxDetection>& left_boxes) const {
+                                        const std::vector<BoxDetection>& left_boxes,
+                                        std::string& refusal) const {
     const double strip = std::max(8.0, 0.15 * box.width_px());
     const double top = box.min_px.y() + 0.1 * box.height_px();
     const double bottom = box.max_px.y() - 0.1 * box.height_px();
@@ -200,44 +252,56 @@ class PairPlacer {
           detail::undistort({corners[static_cast<std::size_t>(k)] + shift}, calibration_.right);
       const auto point =
           triangulator_.point(left_ideal.front().ideal_px, right_ideal.front().ideal_px);
-      if (!point) return std::nullopt;
+      if (!point) {
+        refusal = "depth";
+        return std::nullopt;
+      }
       ends[static_cast<std::size_t>(k)] = *point;
     }
     Eigen::Vector3d centre = 0.25 * (ends[0] + ends[1] + ends[2] + ends[3]);
     double height = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
     double width = (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
-    std::optional<Eigen::Matrix3d> fitted_covariance;
     if (options_.fit_rectangle) {
       const auto fit = detail::fit_door_rectangle(detail::rectangle_from_ends(ends, up_in_left_),
                                                   up_in_left_, fit_cameras_, {});
-      if (!fit || !fit->accepted) return std::nullopt;
+      if (!fit || !fit->accepted) {
+        refusal = fit_refusal(fit);
+        return std::nullopt;
+      }
       centre = fit->rectangle.centre_m;
       height = fit->rectangle.height_m;
       width = fit->rectangle.width_m;
-      fitted_covariance = fit->centre_covariance_m2;
     }
     std::string type = box.type;
     for (const BoxStereoOptions::Retype& rule : options_.retype_by_height_m) {
       if (rule.from == box.type && height >= rule.min_m && height <= rule.max_m) type = rule.to;
     }
-    if (centre.z() < options_.min_depth_m || centre.z() > options_.max_depth_m ||
-        (type == box.type && !in_range(options_.height_range_m, box.type, height)) ||
-        !in_range(options_.width_range_m, box.type, width)) {
+    if (centre.z() < options_.min_depth_m || centre.z() > options_.max_depth_m) {
+      refusal = "depth";
+      return std::nullopt;
+    }
+    if (type == box.type && !in_range(options_.height_range_m, box.type, height)) {
+      refusal = "height";
+      return std::nullopt;
+    }
+    if (!in_range(options_.width_range_m, box.type, width)) {
+      refusal = "width";
       return std::nullopt;
     }
     Placed placed;
     placed.type = type;
     placed.left_px = raw(box.centre_px());
     placed.right_px = placed.left_px + 0.5 * (shifts[0] + shifts[1]);
-    // The covariance: the fit's, or without the fit that of the centre triangulated as one
-    // reference pixel pair. The position: the fit's centre, or the corners'.
-    if (fitted_covariance) {
-      placed.triangulation.left_camera_covariance_m2 = *fitted_covariance;
-    } else {
-      const auto t = triangulate(placed.left_px, placed.right_px, 0.0);
-      if (!t) return std::nullopt;
-      placed.triangulation = *t;
+    // The position: the fit's centre, or the corners'. The covariance: the class's noise model
+    // at the centre's projections into both images.
+    const auto t = triangulator_.triangulate(detail::IdealPixel{ideal_projection(0, centre)},
+                                             detail::IdealPixel{ideal_projection(1, centre)},
+                                             pixel_covariance(box.type), 0.0);
+    if (!t) {
+      refusal = "depth";
+      return std::nullopt;
     }
+    placed.triangulation = *t;
     const double offset = depth_offset_of(options_, box.type);
     placed.triangulation.left_camera_position_m = centre + offset * centre.normalized();
     return placed;
@@ -343,8 +407,12 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
   for (const detail::BoxPair& pair : pairs) {
     const BoxDetection& left = left_boxes[static_cast<std::size_t>(pair.left)];
     const BoxDetection& right = right_boxes[static_cast<std::size_t>(pair.right)];
-    const std::optional<Placed> placed = placer.place(left, right, left_boxes);
-    if (!placed) continue;
+    std::string refusal;
+    const std::optional<Placed> placed = placer.place(left, right, left_boxes, refusal);
+    if (!placed) {
+      result.stereo_refusals.push_back({pair.left, pair.right, std::move(refusal)});
+      continue;
+    }
     FramePercept p;
     p.type = placed->type;
     p.ego_position_m = result.ego_T_left_camera * placed->triangulation.left_camera_position_m;

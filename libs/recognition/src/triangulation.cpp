@@ -355,9 +355,28 @@ std::optional<Eigen::Vector3d> Triangulator::point(const Eigen::Vector2d& left_i
   return x;
 }
 
+Eigen::Matrix4d reference_disparity_covariance(double reference_sigma_px,
+                                               double disparity_sigma_px) {
+  const double r2 = reference_sigma_px * reference_sigma_px;
+  const double d2 = disparity_sigma_px * disparity_sigma_px;
+  const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+  Eigen::Matrix4d s;
+  s << r2 * identity, r2 * identity, r2 * identity, (r2 + d2) * identity;
+  return s;
+}
+
 std::optional<Triangulation> Triangulator::triangulate(const IdealPixel& left,
                                                        const IdealPixel& right,
                                                        double pixel_sigma_px,
+                                                       double reference_depth_offset_m) const {
+  return triangulate(left, right,
+                     Eigen::Matrix4d(pixel_sigma_px * pixel_sigma_px * Eigen::Matrix4d::Identity()),
+                     reference_depth_offset_m);
+}
+
+std::optional<Triangulation> Triangulator::triangulate(const IdealPixel& left,
+                                                       const IdealPixel& right,
+                                                       const Eigen::Matrix4d& pixel_covariance_px2,
                                                        double reference_depth_offset_m) const {
   const auto x = point(left.ideal_px, right.ideal_px);
   if (!x) return std::nullopt;
@@ -385,7 +404,7 @@ std::optional<Triangulation> Triangulator::triangulate(const IdealPixel& left,
   d_ideal_d_raw.topLeftCorner<2, 2>() = left.d_ideal_d_raw;
   d_ideal_d_raw.bottomRightCorner<2, 2>() = right.d_ideal_d_raw;
   const Eigen::Matrix<double, 3, 4> j = j_mid * d_ideal_d_raw;
-  Eigen::Matrix3d covariance = pixel_sigma_px * pixel_sigma_px * (j * j.transpose());
+  Eigen::Matrix3d covariance = j * pixel_covariance_px2 * j.transpose();
 
   // Reference point behind the surface, along the left viewing ray.
   const double range_m = x->norm();

@@ -32,6 +32,18 @@ struct Triangulation {
 // per cent of the optimal (reprojection-error) estimate at these baselines, and it has a closed
 // form that verging eyes (any R) do not complicate. s and w are the depths along the rays in
 // units of the left and right ray's length; both must be positive (the point is in front).
+// The covariance of a matched pixel pair (u_l, v_l, u_r, v_r) when the reference point is found
+// in the left image with error r (sigma reference_sigma_px per coordinate) and in the right one
+// at the left pixel plus the measured disparity, with its own error d (disparity_sigma_px):
+// (u_l, u_r) = (x + r, x + r + d) shares r, so
+//   S = [ sr^2 I   sr^2 I         ]
+//       [ sr^2 I   (sr^2 + sd^2) I ].
+// A detector's box places the reference point to a few pixels, while correlation measures the
+// disparity to a fraction of one: the point is uncertain across the viewing ray, much less along
+// it, than independent pixel noise would say.
+Eigen::Matrix4d reference_disparity_covariance(double reference_sigma_px,
+                                               double disparity_sigma_px);
+
 class Triangulator {
  public:
   Triangulator(const head::CameraIntrinsics& left, const head::CameraIntrinsics& right,
@@ -181,6 +193,11 @@ class Triangulator {
   // G = I + o (I - n n^T) / |X| (n = X / |X|): Sigma' = G Sigma G^T.
   std::optional<Triangulation> triangulate(const IdealPixel& left, const IdealPixel& right,
                                            double pixel_sigma_px,
+                                           double reference_depth_offset_m) const;
+  // The same with any covariance S of the raw coordinates (u_l, v_l, u_r, v_r), pixels^2:
+  // Sigma = J S J^T (the above is S = sigma^2 I).
+  std::optional<Triangulation> triangulate(const IdealPixel& left, const IdealPixel& right,
+                                           const Eigen::Matrix4d& pixel_covariance_px2,
                                            double reference_depth_offset_m) const;
 
  private:

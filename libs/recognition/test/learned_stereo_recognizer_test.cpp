@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "support/stereo_views.hpp"
 #include "vsl/config/node.hpp"
@@ -50,6 +52,57 @@ TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
   EXPECT_GE(static_cast<double>(within_10cm) / errors.size(), 0.4)
       << within_10cm << " of " << errors.size() << " percepts within 10 cm of an object";
   EXPECT_LT(errors[errors.size() / 2], 0.12) << "median error " << errors[errors.size() / 2];
+}
+
+// Every refused pair says which test refused it, and no left detection is both a percept and
+// refused.
+TEST(LearnedStereoRecognizer, RefusedPairsSayWhy) {
+  const test::StereoViews& views = test::StereoViews::kitchen();
+  const LearnedStereoRecognizer recognizer = shipped(views.head());
+  int refused = 0;
+  for (int k = 0; k < 3; ++k) {
+    const test::StereoView view = views.fixed_view(k, 1);
+    const FrameResult result = recognizer.recognize(view.left.image, view.right.image, view.joints);
+    std::vector<int> used(result.left_detections.size(), 0);
+    for (const FramePercept& p : result.percepts)
+      ++used[static_cast<std::size_t>(p.left_detection)];
+    for (const StereoRefusal& r : result.stereo_refusals) {
+      ASSERT_GE(r.left_detection, 0);
+      ASSERT_LT(r.left_detection, static_cast<int>(result.left_detections.size()));
+      ASSERT_GE(r.right_detection, 0);
+      ASSERT_LT(r.right_detection, static_cast<int>(result.right_detections.size()));
+      EXPECT_FALSE(r.reason.empty());
+      ++used[static_cast<std::size_t>(r.left_detection)];
+      ++refused;
+    }
+    for (const int u : used) EXPECT_LE(u, 1);
+  }
+  EXPECT_GT(refused, 0);
+}
+
+// The noise model and the handle thickness are read from the config and checked.
+TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
+  const auto options = [](const std::string& body) {
+    return box_stereo_options_from(
+        config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
+  };
+  const BoxStereoOptions o =
+      options("  noise_px: {handle: [2.5, 0.1]}\n  thickness_range_m: {handle: [0.0, 0.08]}\n");
+  ASSERT_EQ(o.noise_px.size(), 1u);
+  EXPECT_EQ(o.noise_px[0].type, "handle");
+  EXPECT_EQ(o.noise_px[0].reference_sigma_px, 2.5);
+  EXPECT_EQ(o.noise_px[0].disparity_sigma_px, 0.1);
+  ASSERT_EQ(o.thickness_range_m.size(), 1u);
+  EXPECT_EQ(o.thickness_range_m[0].max_m, 0.08);
+  for (const std::string bad : {"  noise_px: {handle: [0.0, 0.1]}\n", "  noise_px: {handle: 2}\n",
+                                "  thickness_range_m: {handle: [0.1, 0.05]}\n"}) {
+    try {
+      options(bad);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const config::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("b.yaml:2: box_stereo."), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(LearnedStereoRecognizer, RefusesFramesOfAnotherSize) {

@@ -237,3 +237,60 @@ TEST(InformativeEdgeSlope, TheEdgeSeenFarthestFromTheCamerasHeightIsJudged) {
 
 }  // namespace
 }  // namespace vsl::recognition
+
+namespace vsl::recognition {
+namespace {
+
+// The reference-and-disparity noise model: both pixels move together by the reference error,
+// the right one also by the disparity error. Its covariance matches the scatter of seeded Monte
+// Carlo draws of exactly that noise (NEES 3), and seen straight ahead it separates: the
+// reference error moves the point across the ray (z / f per pixel), the disparity error along
+// it (z^2 / (f B) per pixel).
+TEST(ReferenceDisparityNoise, CovarianceMatchesMonteCarloAndSeparatesAcrossFromAlong) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration("calib/armar3_sim.yaml");
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  const detail::Triangulator triangulator(calibration.left, calibration.right, left_T_right);
+  const double f = calibration.left.fx_px, b = calibration.baseline_m();
+  const double reference_px = 3.0, disparity_px = 0.2;
+  const Eigen::Matrix4d s = detail::reference_disparity_covariance(reference_px, disparity_px);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> reference(0.0, reference_px), disparity(0.0, disparity_px);
+  for (const Eigen::Vector3d& x :
+       {Eigen::Vector3d(0.0, 0.0, 3.0), Eigen::Vector3d(0.8, -0.4, 2.0)}) {
+    const Eigen::Vector2d left = project(x, calibration.left, Eigen::Isometry3d::Identity());
+    const Eigen::Vector2d right = project(x, calibration.right, left_T_right);
+    const auto t =
+        triangulator.triangulate(detail::undistort({left}, calibration.left).front(),
+                                 detail::undistort({right}, calibration.right).front(), s, 0.0);
+    ASSERT_TRUE(t);
+    const Eigen::LDLT<Eigen::Matrix3d> covariance(t->left_camera_covariance_m2);
+    double nees = 0.0;
+    constexpr int kSamples = 4000;
+    for (int i = 0; i < kSamples; ++i) {
+      const Eigen::Vector2d r(reference(rng), reference(rng));
+      const Eigen::Vector2d d(disparity(rng), disparity(rng));
+      const auto noisy = triangulator.triangulate(
+          detail::undistort({left + r}, calibration.left).front(),
+          detail::undistort({right + r + d}, calibration.right).front(), s, 0.0);
+      ASSERT_TRUE(noisy);
+      const Eigen::Vector3d e = noisy->left_camera_position_m - t->left_camera_position_m;
+      nees += e.dot(covariance.solve(e));
+    }
+    EXPECT_NEAR(nees / kSamples, 3.0, 0.25) << x.transpose();
+  }
+  const double z = 3.0;
+  const auto ahead = triangulator.triangulate(
+      detail::IdealPixel{
+          project(Eigen::Vector3d(0.0, 0.0, z), calibration.left, Eigen::Isometry3d::Identity())},
+      detail::IdealPixel{project(Eigen::Vector3d(0.0, 0.0, z), calibration.right, left_T_right)}, s,
+      0.0);
+  ASSERT_TRUE(ahead);
+  const Eigen::Matrix3d& c = ahead->left_camera_covariance_m2;
+  EXPECT_NEAR(std::sqrt(c(1, 1)), z / f * reference_px, 0.03 * z / f * reference_px);
+  EXPECT_NEAR(std::sqrt(c(2, 2)), z * z / (f * b) * disparity_px,
+              0.05 * z * z / (f * b) * disparity_px);
+}
+
+}  // namespace
+}  // namespace vsl::recognition

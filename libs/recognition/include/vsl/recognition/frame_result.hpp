@@ -29,12 +29,21 @@ struct FramePercept {
   int right_detection = -1;
 };
 
+// A pair of detections (one per image) the stereo stage paired but did not turn into a percept,
+// and the test that refused it (the learned recognizer; for evaluation).
+struct StereoRefusal {
+  int left_detection = -1;  // indices into FrameResult::left_detections / right_detections
+  int right_detection = -1;
+  std::string reason;  // e.g. "correlation", "fit: bottom unseen", "height"
+};
+
 struct FrameResult {
   Eigen::Isometry3d ego_T_left_camera = Eigen::Isometry3d::Identity();  // at capture
   std::vector<FramePercept> percepts;
   // Intermediate results, for the debug image, evaluation and training.
   std::vector<Blob> left_blobs, right_blobs;
   std::vector<Detection> left_detections, right_detections;
+  std::vector<StereoRefusal> stereo_refusals;
   // Wall time of each stage, milliseconds (both images together).
   double segmentation_ms = 0.0;
   double classification_ms = 0.0;
