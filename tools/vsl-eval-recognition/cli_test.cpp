@@ -70,6 +70,30 @@ TEST(VslEvalRecognition, DumpWritesPicturesFunnelLinesAndTheFunnelTable) {
   std::filesystem::remove_all(dir);
 }
 
+// Two worlds, comma-separated, are --views frames each, tallied together; the learned recognizer's
+// --dump says what became of its left detections, and the noise model is printed. The dump
+// folder is made when missing.
+TEST(VslEvalRecognition, SeveralWorldsTogetherAndTheLearnedRecognizersDump) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("vsl_eval_learned_" + std::to_string(::getpid())) / "new";
+  std::filesystem::remove_all(dir.parent_path());
+  const auto result = run_command(
+      {VSL_EVAL_RECOGNITION_BIN, "--world",
+       "config/worlds/kitchen.yaml,config/worlds/kitchen_galley.yaml", "--views", "2", "--config",
+       "config/recognition_learned.yaml", "--realism", "full", "--dump", dir.string()},
+      300.0);
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  for (const char* text : {"4 stereo frames", "what became of the left detections",
+                           "noise model of the true positives", "median d2"}) {
+    EXPECT_NE(result.out.find(text), std::string::npos) << text << "\n" << result.out;
+  }
+  EXPECT_NE(result.err.find("frame 4/4"), std::string::npos) << result.err;
+  for (const char* file : {"frame_0000.png", "frame_0003.png", "frame_0003_right.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  std::filesystem::remove_all(dir.parent_path());
+}
+
 TEST(VslEvalRecognition, BadInputExitsTwoWithOneLine) {
   const std::vector<std::vector<std::string>> cases{
       {},

@@ -55,7 +55,9 @@ the recall over those whose whole outline lies inside both images, not cut by th
 error of the matched percepts (within 10 cm of their object's reference point) by distance band,
 the recall of flat objects (doors) by viewing angle, the time per stereo pair, and the noise of
 the true positives' reference points and disparities (the learned recognizer's noise_px).
-  --world FILE          world model, e.g. config/worlds/kitchen_galley.yaml
+  --world FILE[,FILE]   world model, e.g. config/worlds/kitchen_galley.yaml; several, comma-
+                        separated: --views of each, tallied together (the noise model of
+                        several layouts at once)
 options:
   --views N             robot poses (default 100)
   --seed S              seed of the poses and the sensor noise (default 2; training uses 1)
@@ -397,6 +399,147 @@ void print_learned_stereo(std::ostream& out,
   }
 }
 
+// What one evaluation shares over its worlds, and what their frames add up to.
+struct Run {
+  Run(const Options& options, const tools::RecognitionConfig& config, bool learned,
+      const head::HeadKinematics& head, const recognition::StereoRecognizer& recognizer,
+      const std::vector<std::string>& types,
+      const std::vector<recognition::RecognizerFile>& model_contents)
+      : options(options),
+        config(config),
+        learned(learned),
+        head(head),
+        recognizer(recognizer),
+        types(types),
+        model_contents(model_contents),
+        noise(head.calibration().left.fx_px, head.calibration().baseline_m()) {}
+
+  const Options& options;
+  const tools::RecognitionConfig& config;
+  bool learned;
+  const head::HeadKinematics& head;
+  const recognition::StereoRecognizer& recognizer;
+  const std::vector<std::string>& types;
+  const std::vector<recognition::RecognizerFile>& model_contents;  // for the --dump funnel
+  tools::EvaluationTally tally;
+  tools::FunnelTally funnel;  // with --dump
+  tools::PerceptNoiseTally noise;
+  // With --dump and the learned recognizer: per class, what became of the left detections.
+  std::map<std::string, std::map<std::string, int>> learned_stereo;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t from = 0;
+  while (from <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    if (comma > from) out.push_back(text.substr(from, comma - from));
+    from = comma + 1;
+  }
+  return out;
+}
+
+// --dump's pictures and text of frame `index`; false (after one line on stderr) when a file
+// cannot be written.
+bool dump_frame(std::uint64_t index, const world::WorldModel& world,
+                const tools::StereoRender& frame, const tools::ViewPose& view,
+                const std::vector<recognition::GroundTruthObject>& truth,
+                const recognition::FrameResult& result,
+                const std::vector<recognition::PerceptMatch>& matches, Run& run) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04llu.png", static_cast<unsigned long long>(index));
+  const std::string path = (std::filesystem::path(run.options.dump_dir) / name).string();
+  const std::string stem = path.substr(0, path.size() - 4);
+  if (!tools::write_frame_dump(path, frame.left.image, run.head.calibration().left, result, truth,
+                               matches)) {
+    std::cerr << "vsl-eval-recognition: cannot write " << path << "\n";
+    return false;
+  }
+  if (!tools::write_right_dump(stem + "_right.png", frame.right.image, result)) {
+    std::cerr << "vsl-eval-recognition: cannot write the right picture beside " << path << "\n";
+    return false;
+  }
+  // The image as the recognizer saw it, without the drawing, to inspect the segmentation.
+  if (!cv::imwrite(stem + "_raw.png", frame.left.image)) {
+    std::cerr << "vsl-eval-recognition: cannot write the raw image beside " << path << "\n";
+    return false;
+  }
+  if (run.learned) {
+    tally_learned_stereo(result, matches, frame.left.image.size(), run.learned_stereo);
+    return true;
+  }
+  if (!tools::write_frame_text(stem + ".txt",
+                               {.world = world,
+                                .frame = frame,
+                                .joints = view.joints,
+                                .head = run.head,
+                                .stereo_options = run.config.options.stereo,
+                                .result = result,
+                                .ground_truth = truth,
+                                .matches = matches,
+                                .model_contents = run.model_contents},
+                               run.funnel)) {
+    std::cerr << "vsl-eval-recognition: cannot write " << stem << ".txt\n";
+    return false;
+  }
+  return true;
+}
+
+// The status line after `done` of `total` frames: on a terminal rewritten in place, else every
+// tenth.
+void print_status(std::uint64_t done, std::uint64_t total, const tools::EvaluationTally& tally) {
+  std::string text = "frame " + std::to_string(done) + "/" + std::to_string(total);
+  for (const tools::ClassTally& c : tally.classes) {
+    char item[96];
+    std::snprintf(item, sizeof item, ", %s P %.1f%% R %.1f%%", c.type.c_str(),
+                  100.0 * c.precision(), 100.0 * c.recall());
+    text += item;
+  }
+  if (isatty(2) != 0) {
+    std::fprintf(stderr, "\r\033[Kvsl-eval-recognition: %s%s", text.c_str(),
+                 done == total ? "\n" : "");
+  } else if (done == total || done * 10 / total != (done - 1) * 10 / total) {
+    std::fprintf(stderr, "vsl-eval-recognition: %s\n", text.c_str());
+  }
+}
+
+// Renders options.views frames of one world (seeded by options.seed and the view's index in
+// it), recognizes and tallies them; frames are numbered from `first` of `total` for --dump and
+// the status line. False when a --dump file cannot be written.
+bool evaluate_world(const std::string& world_file, std::uint64_t first, std::uint64_t total,
+                    Run& run) {
+  const Options& options = run.options;
+  const world::WorldModel world = world::load_world(world_file);
+  render::RenderOptions camera = tools::simulated_camera_options();
+  camera.realism.level = options.realism;
+  const render::Renderer renderer(world, camera);
+  const tools::ViewSampler sampler(world, run.head);
+  const tools::GroundTruthRenderer truth_renderer(world, run.head, run.types);
+  recognition::GroundTruthOptions truth_options;
+  truth_options.max_distance_m = options.max_distance_m;
+  for (std::uint64_t k = 0; k < options.views; ++k) {
+    const tools::ViewPose view = sampler.sample(options.seed, k);
+    const tools::StereoRender frame =
+        tools::render_view(renderer, run.head, view, (options.seed << 32) + k);
+    std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
+    recognition::mark_ground_truth_visible(truth, truth_options);
+    const auto start = std::chrono::steady_clock::now();
+    const recognition::FrameResult result =
+        run.recognizer.recognize(frame.left.image, frame.right.image, view.joints);
+    const double frame_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const std::vector<recognition::PerceptMatch> matches = tools::tally_frame(
+        truth, result, frame_ms, options.max_distance_m, options.match_distance_m, run.tally);
+    run.noise.add(truth, result, matches);
+    if (!options.dump_dir.empty() &&
+        !dump_frame(first + k, world, frame, view, truth, result, matches, run)) {
+      return false;
+    }
+    if (!options.quiet) print_status(first + k + 1, total, run.tally);
+  }
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -413,7 +556,6 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> model_files =
         options.model_files.empty() ? config.model_files : options.model_files;
-    const world::WorldModel world = world::load_world(options.world_file);
     const head::HeadKinematics head =
         head::HeadKinematics::load(config.head_file, config.calibration_file);
     std::vector<std::unique_ptr<recognition::ClassRecognizer>> recognizers;
@@ -422,12 +564,6 @@ int main(int argc, char** argv) {
     for (const std::string& file : model_files) {
       model_contents.push_back(recognition::read_recognizer_file(file));
     }
-    tools::EvaluationTally tally;
-    tools::FunnelTally funnel;  // with --dump
-    const head::StereoCalibration& calibration = head.calibration();
-    tools::PerceptNoiseTally noise(calibration.left.fx_px, calibration.baseline_m());
-    // With --dump and the learned recognizer: per class, what became of the left detections.
-    std::map<std::string, std::map<std::string, int>> learned_stereo;
     std::vector<std::string> types;
     std::unique_ptr<recognition::StereoRecognizer> recognizer;
     if (learned) {
@@ -444,15 +580,8 @@ int main(int argc, char** argv) {
       recognizer = std::make_unique<recognition::FrameRecognizer>(config.options, head,
                                                                   std::move(recognizers));
     }
-    for (const std::string& type : types) tally.classes.emplace_back().type = type;
-    render::RenderOptions camera = tools::simulated_camera_options();
-    camera.realism.level = options.realism;
-    const render::Renderer renderer(world, camera);
-    const tools::ViewSampler sampler(world, head);
-    const tools::GroundTruthRenderer truth_renderer(world, head, types);
-    recognition::GroundTruthOptions truth_options;
-    truth_options.max_distance_m = options.max_distance_m;
-
+    Run run{options, config, learned, head, *recognizer, types, model_contents};
+    for (const std::string& type : types) run.tally.classes.emplace_back().type = type;
     if (!options.dump_dir.empty()) {
       std::error_code error;
       std::filesystem::create_directories(options.dump_dir, error);
@@ -462,76 +591,17 @@ int main(int argc, char** argv) {
         return 1;
       }
     }
-    const bool tty = isatty(2) != 0;
-    for (std::uint64_t k = 0; k < options.views; ++k) {
-      const tools::ViewPose view = sampler.sample(options.seed, k);
-      const tools::StereoRender frame =
-          tools::render_view(renderer, head, view, (options.seed << 32) + k);
-      std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
-      recognition::mark_ground_truth_visible(truth, truth_options);
-      const auto start = std::chrono::steady_clock::now();
-      const recognition::FrameResult result =
-          recognizer->recognize(frame.left.image, frame.right.image, view.joints);
-      const double frame_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count();
-      const std::vector<recognition::PerceptMatch> matches = tools::tally_frame(
-          truth, result, frame_ms, options.max_distance_m, options.match_distance_m, tally);
-      noise.add(truth, result, matches);
-      if (!options.dump_dir.empty()) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04llu.png", static_cast<unsigned long long>(k));
-        const std::string path = (std::filesystem::path(options.dump_dir) / name).string();
-        if (!tools::write_frame_dump(path, frame.left.image, head.calibration().left, result, truth,
-                                     matches)) {
-          std::cerr << "vsl-eval-recognition: cannot write " << path << "\n";
-          return 1;
-        }
-        if (!tools::write_right_dump(path.substr(0, path.size() - 4) + "_right.png",
-                                     frame.right.image, result)) {
-          std::cerr << "vsl-eval-recognition: cannot write the right picture beside " << path
-                    << "\n";
-          return 1;
-        }
-        // The image as the recognizer saw it, without the drawing, to inspect the segmentation.
-        if (!cv::imwrite(path.substr(0, path.size() - 4) + "_raw.png", frame.left.image)) {
-          std::cerr << "vsl-eval-recognition: cannot write the raw image beside " << path << "\n";
-          return 1;
-        }
-        if (learned) tally_learned_stereo(result, matches, frame.left.image.size(), learned_stereo);
-        const std::string text_path = path.substr(0, path.size() - 4) + ".txt";
-        if (!learned && !tools::write_frame_text(text_path,
-                                                 {.world = world,
-                                                  .frame = frame,
-                                                  .joints = view.joints,
-                                                  .head = head,
-                                                  .stereo_options = config.options.stereo,
-                                                  .result = result,
-                                                  .ground_truth = truth,
-                                                  .matches = matches,
-                                                  .model_contents = model_contents},
-                                                 funnel)) {
-          std::cerr << "vsl-eval-recognition: cannot write " << text_path << "\n";
-          return 1;
-        }
-      }
-      if (!options.quiet) {
-        const std::uint64_t done = k + 1;
-        std::string text = "frame " + std::to_string(done) + "/" + std::to_string(options.views);
-        for (const tools::ClassTally& c : tally.classes) {
-          char item[96];
-          std::snprintf(item, sizeof item, ", %s P %.1f%% R %.1f%%", c.type.c_str(),
-                        100.0 * c.precision(), 100.0 * c.recall());
-          text += item;
-        }
-        if (tty) {
-          std::fprintf(stderr, "\r\033[Kvsl-eval-recognition: %s%s", text.c_str(),
-                       done == options.views ? "\n" : "");
-        } else if (done == options.views || done * 10 / options.views != k * 10 / options.views) {
-          std::fprintf(stderr, "vsl-eval-recognition: %s\n", text.c_str());
-        }
+    const std::vector<std::string> world_files = split_list(options.world_file);
+    for (std::size_t w = 0; w < world_files.size(); ++w) {
+      if (!evaluate_world(world_files[w], w * options.views, world_files.size() * options.views,
+                          run)) {
+        return 1;
       }
     }
+    const tools::EvaluationTally& tally = run.tally;
+    const tools::FunnelTally& funnel = run.funnel;
+    const auto& noise = run.noise;
+    const auto& learned_stereo = run.learned_stereo;
 
     if (options.json_file != "-") {
       print_table(options, tally);

@@ -1,8 +1,21 @@
 // The percepts' position errors split the way stereo makes them (vsl-eval-recognition): across the
-// viewing ray, as pixels of the reference point in the left image, and along it, as pixels of
-// disparity. Their robust spreads per class are the noise model the learned recognizer's
-// covariances take (BoxStereoOptions::reference_sigma_px, disparity_sigma_px), measured here
-// against the renderer's ground truth.
+// viewing ray and along it. Per class they are fitted by the noise model the learned recognizer's
+// covariances take (BoxStereoOptions::noise), measured here against the
+// renderer's ground truth.
+//
+// Model. A percept at range r whose reference point the left image places with error sigma_ref
+// pixels and whose disparity has error sigma_d pixels, plus an error of sigma_m metres in any
+// direction that does not shrink with the range (where on the object the reference point is
+// taken: a handle's bar seen from aside, a door's top hidden by the worktop's lip), has
+//   across the ray:  s_a(r)^2 = sigma_m^2 + (sigma_ref r / f)^2          (each of two directions)
+//   along the ray:   s_l(r)^2 = sigma_m^2 + (sigma_d r^2 / (f B))^2       (d = f B / z, the range
+//                                                                         standing for the depth)
+// with f the focal length and B the baseline. Both are linear in (sigma_m^2, sigma_ref^2,
+// sigma_d^2). The errors are binned by range (half-metre bins of at least 8 true positives); in
+// each bin the robust sigma (1.4826 times the median absolute error: robust to the few matched
+// percepts that are half wrong) across and along; then the bins' squared sigmas are fitted by
+// least squares, each weighted by its count over its squared sigma squared (the variance of an
+// estimated s^2 is about 2 s^4 / n), with the three unknowns non-negative.
 #pragma once
 
 #include <map>
@@ -23,32 +36,29 @@ class PerceptNoiseTally {
       : focal_px_(focal_px), baseline_m_(baseline_m) {}
 
   // Adds the error of every true positive of the frame (match_percepts' matches).
-  // With e the error in the left camera frame, r the range and n the unit ray to the percept:
-  // along the ray e_r = e.n, the disparity error is f B e_r / r^2 (d = f B / z, dd/dz = -f B /
-  // z^2, the range standing for the depth z); across it the two components of e - e_r n, times
-  // f / r, are pixels of the reference point.
   void add(const std::vector<recognition::GroundTruthObject>& ground_truth,
            const recognition::FrameResult& result,
            const std::vector<recognition::PerceptMatch>& matches);
 
-  // Per class: the true positives, and 1.4826 times the median absolute error (a Gaussian's
-  // sigma, robust to the few matched percepts that are half wrong) across and along the ray.
   struct Sigmas {
-    std::size_t count = 0;
-    double reference_px = 0.0;
-    double disparity_px = 0.0;
+    std::size_t count = 0;      // true positives
+    double reference_px = 0.0;  // sigma_ref
+    double disparity_px = 0.0;  // sigma_d
+    double floor_m = 0.0;       // sigma_m
   };
+  // The fitted model of a class; nullopt when it has fewer than two bins of true positives.
   std::optional<Sigmas> sigmas(const std::string& type) const;
   void print(std::ostream& out) const;
 
  private:
-  struct Errors {
-    std::vector<double> reference_px;  // two per percept (both components across the ray)
-    std::vector<double> disparity_px;
+  struct Error {
+    double range_m;
+    double across_m[2];
+    double along_m;
   };
   double focal_px_;
   double baseline_m_;
-  std::map<std::string, Errors> by_type_;
+  std::map<std::string, std::vector<Error>> by_type_;
 };
 
 }  // namespace vsl::tools

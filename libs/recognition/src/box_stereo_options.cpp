@@ -35,7 +35,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
                        "snap_min_band_px",
                        "min_correlation",
                        "max_template_px",
-                       "noise_px",
+                       "noise",
                        "rectangle_types",
                        "fit_rectangle",
                        "pair_by_surroundings",
@@ -63,17 +63,20 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   number("snap_min_band_px", out.snap_min_band_px, 0.0, 100.0);
   number("min_correlation", out.min_correlation, -1.0, 1.0);
   number("max_template_px", out.max_template_px, 16.0, 1e7);
-  // {type: [reference_sigma_px, disparity_sigma_px], ...} replacing the defaults.
-  if (const auto noise = section.find("noise_px")) {
+  // {type: {reference_px, disparity_px, floor_m}, ...} replacing the defaults.
+  if (const auto noise = section.find("noise")) {
     noise->expect_map();
-    out.noise_px.clear();
+    out.noise.clear();
     for (const std::string& type : noise->keys()) {
-      const config::Node sigmas = noise->at(type);
-      const auto values = sigmas.as_array<2>();
-      if (!(values[0] > 0.0 && values[0] <= 100.0 && values[1] > 0.0 && values[1] <= 100.0)) {
-        sigmas.fail("expected [reference_sigma_px, disparity_sigma_px], each in (0, 100]");
+      const config::Node model = noise->at(type);
+      model.expect_keys({"reference_px", "disparity_px", "floor_m"});
+      out.noise.push_back({type, model.at("reference_px").as_double_in(0.0, 100.0),
+                           model.at("disparity_px").as_double_in(0.0, 100.0),
+                           model.at("floor_m").as_double_in(0.0, 10.0)});
+      const BoxStereoOptions::Noise& n = out.noise.back();
+      if (n.reference_px + n.disparity_px <= 0.0 && n.floor_m <= 0.0) {
+        model.fail("a noise model of all zeros gives no covariance");
       }
-      out.noise_px.push_back({type, values[0], values[1]});
     }
   }
   if (const auto types = section.find("rectangle_types")) {

@@ -139,14 +139,29 @@ class PairPlacer {
     return continuous_px - Eigen::Vector2d(0.5, 0.5);
   }
 
-  // The class's noise of a matched pixel pair (BoxStereoOptions::noise_px).
-  Eigen::Matrix4d pixel_covariance(const std::string& type) const {
+  // The class's noise model (BoxStereoOptions::noise).
+  BoxStereoOptions::Noise noise_of(const std::string& type) const {
     BoxStereoOptions::Noise noise;
-    for (const BoxStereoOptions::Noise& n : options_.noise_px) {
+    for (const BoxStereoOptions::Noise& n : options_.noise) {
       if (n.type == type) noise = n;
     }
-    return detail::reference_disparity_covariance(noise.reference_sigma_px,
-                                                  noise.disparity_sigma_px);
+    return noise;
+  }
+
+  // A triangulation's covariance from the class's noise model: the pixel pair's through the
+  // triangulation, plus the floor in every direction.
+  std::optional<detail::Triangulation> triangulate_with_noise(const std::string& type,
+                                                              const detail::IdealPixel& left,
+                                                              const detail::IdealPixel& right,
+                                                              double offset_m) const {
+    const BoxStereoOptions::Noise noise = noise_of(type);
+    auto t = triangulator_.triangulate(
+        left, right, detail::reference_disparity_covariance(noise.reference_px, noise.disparity_px),
+        offset_m);
+    if (t) {
+      t->left_camera_covariance_m2 += noise.floor_m * noise.floor_m * Eigen::Matrix3d::Identity();
+    }
+    return t;
   }
 
   // A left camera point's ideal pixel in camera k (0 left, 1 right).
@@ -159,9 +174,9 @@ class PairPlacer {
                                                    const Eigen::Vector2d& left_raw,
                                                    const Eigen::Vector2d& right_raw,
                                                    double offset_m) const {
-    return triangulator_.triangulate(detail::undistort({left_raw}, calibration_.left).front(),
-                                     detail::undistort({right_raw}, calibration_.right).front(),
-                                     pixel_covariance(type), offset_m);
+    return triangulate_with_noise(type, detail::undistort({left_raw}, calibration_.left).front(),
+                                  detail::undistort({right_raw}, calibration_.right).front(),
+                                  offset_m);
   }
 
   std::optional<Placed> place_point(const BoxDetection& box, const Eigen::Vector2d& shift,
@@ -294,9 +309,8 @@ class PairPlacer {
     placed.right_px = placed.left_px + 0.5 * (shifts[0] + shifts[1]);
     // The position: the fit's centre, or the corners'. The covariance: the class's noise model
     // at the centre's projections into both images.
-    const auto t = triangulator_.triangulate(detail::IdealPixel{ideal_projection(0, centre)},
-                                             detail::IdealPixel{ideal_projection(1, centre)},
-                                             pixel_covariance(box.type), 0.0);
+    const auto t = triangulate_with_noise(box.type, detail::IdealPixel{ideal_projection(0, centre)},
+                                          detail::IdealPixel{ideal_projection(1, centre)}, 0.0);
     if (!t) {
       refusal = "depth";
       return std::nullopt;

@@ -86,16 +86,20 @@ TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
     return box_stereo_options_from(
         config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
   };
-  const BoxStereoOptions o =
-      options("  noise_px: {handle: [2.5, 0.1]}\n  thickness_range_m: {handle: [0.0, 0.08]}\n");
-  ASSERT_EQ(o.noise_px.size(), 1u);
-  EXPECT_EQ(o.noise_px[0].type, "handle");
-  EXPECT_EQ(o.noise_px[0].reference_sigma_px, 2.5);
-  EXPECT_EQ(o.noise_px[0].disparity_sigma_px, 0.1);
+  const BoxStereoOptions o = options(
+      "  noise: {handle: {reference_px: 2.5, disparity_px: 0.1, floor_m: 0.01}}\n"
+      "  thickness_range_m: {handle: [0.0, 0.08]}\n");
+  ASSERT_EQ(o.noise.size(), 1u);
+  EXPECT_EQ(o.noise[0].type, "handle");
+  EXPECT_EQ(o.noise[0].reference_px, 2.5);
+  EXPECT_EQ(o.noise[0].disparity_px, 0.1);
+  EXPECT_EQ(o.noise[0].floor_m, 0.01);
   ASSERT_EQ(o.thickness_range_m.size(), 1u);
   EXPECT_EQ(o.thickness_range_m[0].max_m, 0.08);
-  for (const std::string bad : {"  noise_px: {handle: [0.0, 0.1]}\n", "  noise_px: {handle: 2}\n",
-                                "  thickness_range_m: {handle: [0.1, 0.05]}\n"}) {
+  for (const std::string bad :
+       {"  noise: {handle: {reference_px: -1, disparity_px: 0.1, floor_m: 0}}\n",
+        "  noise: {handle: {reference_px: 1, disparity_px: 0.1}}\n",
+        "  thickness_range_m: {handle: [0.1, 0.05]}\n"}) {
     try {
       options(bad);
       ADD_FAILURE() << "accepted " << bad;

@@ -49,16 +49,19 @@ struct BoxStereoOptions {
   double min_correlation = 0.5;
   // Templates larger than this many pixels are correlated at a reduced scale.
   double max_template_px = 3000.0;
-  // Per class, the noise of a percept's reference point in pixels: where the left image places
-  // it (sigma of each coordinate) and the disparity the right image gives it (triangulation.hpp,
-  // reference_disparity_covariance), measured against simulation's ground truth by
-  // vsl-eval-recognition ("noise of the true positives"). Classes not listed: 1 px and 1 px.
+  // Per class, the noise model of a percept's position: where the left image places its
+  // reference point (sigma of each coordinate, pixels), the disparity the right image gives it
+  // (pixels; triangulation.hpp, reference_disparity_covariance), and a floor in every direction
+  // that does not shrink with the range (metres: where on the object the reference point is
+  // taken). Fitted to simulation's ground truth by vsl-eval-recognition ("noise model of the
+  // true positives"). Classes not listed: 1 px, 1 px, no floor.
   struct Noise {
     std::string type;
-    double reference_sigma_px = 1.0;
-    double disparity_sigma_px = 1.0;
+    double reference_px = 1.0;
+    double disparity_px = 1.0;
+    double floor_m = 0.0;
   };
-  std::vector<Noise> noise_px{{"door", 3.9, 0.27}, {"handle", 3.2, 0.17}};
+  std::vector<Noise> noise{{"door", 0.0, 0.15, 0.016}, {"handle", 2.2, 0.11, 0.0095}};
   // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
   std::vector<std::string> rectangle_types{"door"};
   // Candidate pairs are also scored by how well the boxes' surroundings correlate at the pair's
