@@ -16,6 +16,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -37,6 +38,7 @@
 #include "vsl/recognition/recognizer_factory.hpp"
 #include "vsl/render/renderer.hpp"
 #include "vsl/world/world_io.hpp"
+#include "vsl/worldgen/randomize_looks.hpp"
 
 namespace {
 
@@ -67,6 +69,9 @@ options:
   --models LIST         comma-separated model files instead of the config's (paper's recognizer)
   --realism LEVEL       the rendered frames' realism: off (default), materials or full
                         (docs/rendering.md)
+  --looks K             every K views a look of the world of their own (materials, lamps,
+                        clutter: vsl::worldgen::randomize_looks, seeded by --seed), as the
+                        detector's training renders; default: the world's own look
   --max-distance M      ground truth: objects within M metres of the left camera (default 4)
   --match-distance M    a percept within M metres of its object is a true positive (default 0.1)
   --dump DIR            write DIR/frame_NNNN.png per frame: the left image with the blobs
@@ -113,6 +118,7 @@ double parse_positive(const std::string& text, const std::string& option) {
 
 struct Options {
   std::string world_file;
+  std::uint64_t views_per_look = 0;  // --looks K; 0: the world's own look
   std::uint64_t views = 100;
   std::uint64_t seed = 2;
   std::string config_file = "config/recognition.yaml";
@@ -167,6 +173,9 @@ Options parse(int argc, char** argv) {
       options.max_distance_m = parse_positive(value_of(i, arg), arg);
     } else if (arg == "--match-distance") {
       options.match_distance_m = parse_positive(value_of(i, arg), arg);
+    } else if (arg == "--looks") {
+      options.views_per_look = parse_count(value_of(i, arg), arg);
+      if (options.views_per_look == 0) usage_error("--looks wants a count of at least 1");
     } else if (arg == "--dump") {
       options.dump_dir = value_of(i, arg);
     } else if (arg == "--json") {
@@ -512,30 +521,50 @@ bool evaluate_world(const std::string& world_file, std::uint64_t first, std::uin
   const world::WorldModel world = world::load_world(world_file);
   render::RenderOptions camera = tools::simulated_camera_options();
   camera.realism.level = options.realism;
-  const render::Renderer renderer(world, camera);
   const tools::ViewSampler sampler(world, run.head);
-  const tools::GroundTruthRenderer truth_renderer(world, run.head, run.types);
   recognition::GroundTruthOptions truth_options;
   truth_options.max_distance_m = options.max_distance_m;
-  for (std::uint64_t k = 0; k < options.views; ++k) {
-    const tools::ViewPose view = sampler.sample(options.seed, k);
-    const tools::StereoRender frame =
-        tools::render_view(renderer, run.head, view, (options.seed << 32) + k);
-    std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
-    recognition::mark_ground_truth_visible(truth, truth_options);
-    const auto start = std::chrono::steady_clock::now();
-    const recognition::FrameResult result =
-        run.recognizer.recognize(frame.left.image, frame.right.image, view.joints);
-    const double frame_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    const std::vector<recognition::PerceptMatch> matches = tools::tally_frame(
-        truth, result, frame_ms, options.max_distance_m, options.match_distance_m, run.tally);
-    run.noise.add(truth, result, matches);
-    if (!options.dump_dir.empty() &&
-        !dump_frame(first + k, world, frame, view, truth, result, matches, run)) {
-      return false;
+  // Views in blocks of one look each: the world's own, or with --looks K a randomized one per K
+  // views, kept clear of the block's robot poses.
+  const std::uint64_t per_look =
+      options.views_per_look > 0 ? options.views_per_look : options.views;
+  for (std::uint64_t block = 0; block * per_look < options.views; ++block) {
+    const std::uint64_t begin = block * per_look;
+    const std::uint64_t end = std::min(options.views, begin + per_look);
+    std::vector<tools::ViewPose> views;
+    for (std::uint64_t k = begin; k < end; ++k) views.push_back(sampler.sample(options.seed, k));
+    std::optional<world::WorldModel> looks;
+    if (options.views_per_look > 0) {
+      worldgen::LookRandomization randomization;
+      for (const tools::ViewPose& view : views) {
+        randomization.keep_clear.push_back({view.world_T_ego.translation().head<2>(), 0.6});
+      }
+      looks = worldgen::randomize_looks(world, (options.seed << 32) + block, randomization);
     }
-    if (!options.quiet) print_status(first + k + 1, total, run.tally);
+    const world::WorldModel& seen = looks ? *looks : world;
+    const render::Renderer renderer(seen, camera);
+    const tools::GroundTruthRenderer truth_renderer(seen, run.head, run.types);
+    for (std::uint64_t k = begin; k < end; ++k) {
+      const tools::ViewPose& view = views[k - begin];
+      const tools::StereoRender frame =
+          tools::render_view(renderer, run.head, view, (options.seed << 32) + k);
+      std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
+      recognition::mark_ground_truth_visible(truth, truth_options);
+      const auto start = std::chrono::steady_clock::now();
+      const recognition::FrameResult result =
+          run.recognizer.recognize(frame.left.image, frame.right.image, view.joints);
+      const double frame_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+      const std::vector<recognition::PerceptMatch> matches = tools::tally_frame(
+          truth, result, frame_ms, options.max_distance_m, options.match_distance_m, run.tally);
+      run.noise.add(truth, result, matches);
+      if (!options.dump_dir.empty() &&
+          !dump_frame(first + k, seen, frame, view, truth, result, matches, run)) {
+        return false;
+      }
+      if (!options.quiet) print_status(first + k + 1, total, run.tally);
+    }
   }
   return true;
 }
