@@ -27,7 +27,10 @@
 // s the residuals' RMS (at least pixel_sigma_px). The samples along one side share its edge's
 // systematic error (a shading gradient, the stile's bevel), so they are not independent
 // measurements: the covariance is multiplied by the samples per side, as if each side in each
-// image were one measurement of its position.
+// image were one measurement of its position. Against simulation's ground truth it is still far
+// too narrow across the viewing ray (a door's centre is off by a centimetre or two wherever it is
+// seen from: a worktop's lip hides its top, a chair its bottom), so the learned recognizer gives
+// its doors the class noise model instead (BoxStereoOptions::noise).
 #pragma once
 
 #include <Eigen/Core>
