@@ -72,7 +72,7 @@ struct Placed {
 };
 
 // Why a rectangle fit was refused: the first side no image saw enough (cut by the border or
-// hidden), else its residuals.
+// hidden), else its residuals, else its information matrix (the rectangle undetermined).
 std::string fit_refusal(const std::optional<detail::DoorFit>& fit) {
   if (!fit) return "fit: degenerate";
   static constexpr std::array<const char*, 4> kSides{"left", "right", "top", "bottom"};
@@ -85,7 +85,7 @@ std::string fit_refusal(const std::optional<detail::DoorFit>& fit) {
     const bool cut = std::max(fit->cut_fraction[0][side], fit->cut_fraction[1][side]) >= 0.5;
     return std::string("fit: ") + kSides[side] + (cut ? " cut" : " hidden");
   }
-  return "fit: residuals";
+  return fit->rms_px > defaults.max_rms_px ? "fit: residuals" : "fit: undetermined";
 }
 
 class PairPlacer {
