@@ -5,8 +5,10 @@
 #include <opencv2/core.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <string>
 
 namespace vsl::recognition::detail {
 namespace {
@@ -365,13 +367,15 @@ std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
     const double s = std::max(options.pixel_sigma_px, fit.rms_px);
     fit.centre_covariance_m2 = s * s * options.samples_per_side * inverse->topLeftCorner<3, 3>();
   }
-  bool every_side_seen = true;
-  for (int side = 0; side < 4; ++side) {
-    const double seen = std::max(search.seen[0][static_cast<std::size_t>(side)],
-                                 search.seen[1][static_cast<std::size_t>(side)]);
-    every_side_seen = every_side_seen && seen >= options.min_seen_fraction;
+  static constexpr std::array<const char*, 4> kSides{"left", "right", "top", "bottom"};
+  for (std::size_t side = 0; side < 4 && fit.refusal.empty(); ++side) {
+    if (std::max(search.seen[0][side], search.seen[1][side]) >= options.min_seen_fraction) continue;
+    const bool cut = std::max(search.cut[0][side], search.cut[1][side]) >= 0.5;
+    fit.refusal = std::string(kSides[side]) + (cut ? " cut" : " hidden");
   }
-  fit.accepted = inverse && every_side_seen && fit.rms_px <= options.max_rms_px;
+  if (fit.refusal.empty() && fit.rms_px > options.max_rms_px) fit.refusal = "residuals";
+  if (fit.refusal.empty() && !inverse) fit.refusal = "undetermined";
+  fit.accepted = fit.refusal.empty();
   return fit;
 }
 

@@ -38,6 +38,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace cv {
@@ -85,6 +86,11 @@ struct DoorFit {
   std::array<std::array<double, 4>, 2> cut_fraction{};
   double rms_px = 0.0;
   bool accepted = false;  // every side seen enough, residuals within max_rms_px
+  // When not accepted, why: the first side (left, right, top, bottom) no image saw in
+  // min_seen_fraction of its samples, "cut" when most of them lie outside an image, else
+  // "hidden" ("left hidden"); else "residuals" (RMS above max_rms_px); else "undetermined" (the
+  // information matrix singular). Empty when accepted.
+  std::string refusal;
 };
 
 // The rectangle through a vertical door's two sides' ends (left camera frame, metres: the first

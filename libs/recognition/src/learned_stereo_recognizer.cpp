@@ -71,23 +71,6 @@ struct Placed {
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();
 };
 
-// Why a rectangle fit was refused: the first side no image saw enough (cut by the border or
-// hidden), else its residuals, else its information matrix (the rectangle undetermined).
-std::string fit_refusal(const std::optional<detail::DoorFit>& fit) {
-  if (!fit) return "fit: degenerate";
-  static constexpr std::array<const char*, 4> kSides{"left", "right", "top", "bottom"};
-  const detail::DoorFitOptions defaults;
-  for (std::size_t side = 0; side < 4; ++side) {
-    if (std::max(fit->seen_fraction[0][side], fit->seen_fraction[1][side]) >=
-        defaults.min_seen_fraction) {
-      continue;
-    }
-    const bool cut = std::max(fit->cut_fraction[0][side], fit->cut_fraction[1][side]) >= 0.5;
-    return std::string("fit: ") + kSides[side] + (cut ? " cut" : " hidden");
-  }
-  return fit->rms_px > defaults.max_rms_px ? "fit: residuals" : "fit: undetermined";
-}
-
 class PairPlacer {
  public:
   // `ideal_greys`: both images undistorted (the rectangle fit's pinhole images); `up_in_left`:
@@ -280,7 +263,7 @@ class PairPlacer {
       const auto fit = detail::fit_door_rectangle(detail::rectangle_from_ends(ends, up_in_left_),
                                                   up_in_left_, fit_cameras_, {});
       if (!fit || !fit->accepted) {
-        refusal = fit_refusal(fit);
+        refusal = "fit: " + (fit ? fit->refusal : std::string("degenerate"));
         return std::nullopt;
       }
       centre = fit->rectangle.centre_m;
