@@ -55,6 +55,14 @@ std::optional<RequestResult> parse_result(const std::string& out) {
   return result;
 }
 
+// The milliseconds of vsl-request's "from the last scan frame's <what> to the pose: N ms" line.
+std::optional<double> latency_ms(const std::string& out, const std::string& what) {
+  const std::string key = "from the last scan frame's " + what + " to the pose: ";
+  const std::size_t at = out.rfind(key);
+  if (at == std::string::npos) return std::nullopt;
+  return std::stod(out.substr(at + key.size()));
+}
+
 std::string describe(const ChildProcess& p) {
   return "stdout:\n" + p.out() + "\nstderr:\n" + p.err();
 }
@@ -204,6 +212,13 @@ TEST_P(FullPipeline, LocalizesWithinFiveCentimetresAndTwoDegrees) {
   const std::optional<RequestResult> result = Pipeline::finish(*request);
   // On a failure, vsl-request's whole progress and pose table tell what went wrong.
   expect_localized_near_truth(result, c.name + std::string("\n") + request->out());
+  // The latency from the frame's capture stamp counts the simulated head's rendering too; from
+  // its arrival on STEREO_FRAME only recognition, fusion and the localizer.
+  const std::optional<double> from_capture = latency_ms(request->out(), "capture");
+  const std::optional<double> from_arrival = latency_ms(request->out(), "arrival");
+  ASSERT_TRUE(from_capture && from_arrival) << request->out();
+  EXPECT_GT(*from_arrival, 0.0);
+  EXPECT_LE(*from_arrival, *from_capture);
 }
 
 // The default pose of config/sim_head.yaml, as processes over real LCM. The other poses of

@@ -26,6 +26,7 @@
 #include "vsl/runtime/config.hpp"
 #include "vsl/runtime/lcm_bus.hpp"
 #include "vsl/runtime/typed.hpp"
+#include "vsl/stereo_frame_t.hpp"
 
 namespace {
 
@@ -51,6 +52,9 @@ options:
   --heartbeat-gaps     also print, per process, the longest time between two of its
                        heartbeats while the request ran (tools/vsl-soak reads it)
 exit codes: 0 localized, 1 ambiguous, failed or timed out, 2 bad usage
+With a pose it prints the time from the last scan frame to the pose, from the frame's capture
+stamp and from its arrival on STEREO_FRAME (a simulated head stamps a frame before rendering it,
+so only the second is what recognition, fusion and the localizer spend).
 Besides the table it prints one line for scripts:
   result: status=LOCALIZED x_m=.. y_m=.. z_m=.. yaw_deg=.. [position_error_m=.. rotation_error_deg=..]
 )";
@@ -172,6 +176,10 @@ int main(int argc, char** argv) {
   // Capture time of the newest frame recognized so far, and of the last one before FUSING (us).
   std::int64_t newest_percepts_frame_utime = 0;
   std::int64_t last_scan_frame_utime = 0;
+  // When each recent stereo frame (by its capture utime) arrived here, wall utime. A simulated
+  // head stamps a frame before it renders it, so its capture stamp counts the simulator's
+  // rendering too; from the arrival counts only what the robot's own processes spend.
+  std::map<std::int64_t, std::int64_t> frame_arrival_utime;
   int last_seen_state = -1;  // a status of our request arrived: the localizer has it
   int last_state = -1;
   double last_progress = -1.0;
@@ -229,6 +237,14 @@ int main(int argc, char** argv) {
   vsl::runtime::subscribe<vsl::percept_list_t>(
       bus, "PERCEPTS", [&](const vsl::percept_list_t& m, std::int64_t) {
         newest_percepts_frame_utime = std::max(newest_percepts_frame_utime, m.frame_utime);
+      });
+  vsl::runtime::subscribe<vsl::stereo_frame_t>(
+      bus, "STEREO_FRAME", [&](const vsl::stereo_frame_t& m, std::int64_t receive_utime) {
+        frame_arrival_utime.emplace(m.utime, receive_utime);
+        constexpr std::size_t kFramesKept = 256;
+        if (frame_arrival_utime.size() > kFramesKept) {
+          frame_arrival_utime.erase(frame_arrival_utime.begin());
+        }
       });
   vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, options.pose_channel,
                                                 [&](const vsl::pose_estimate_t& m, std::int64_t) {
@@ -335,6 +351,11 @@ int main(int argc, char** argv) {
     // look) to the published pose: recognition of that frame, fusion and localization.
     std::printf("  from the last scan frame's capture to the pose: %.1f ms\n",
                 1e-3 * static_cast<double>(estimate->utime - last_scan_frame_utime));
+    const auto arrival = frame_arrival_utime.find(last_scan_frame_utime);
+    if (arrival != frame_arrival_utime.end() && estimate->utime > arrival->second) {
+      std::printf("  from the last scan frame's arrival to the pose: %.1f ms\n",
+                  1e-3 * static_cast<double>(estimate->utime - arrival->second));
+    }
   }
   if (options.heartbeat_gaps) {
     std::string gaps;
