@@ -43,11 +43,6 @@ struct DoorScene {
   DoorRectangle door{Eigen::Vector3d(0.15, 0.05, 3.0), 0.35, 0.5, 0.7};
   // An occluder: the image rows below this fraction of the door's projected height are covered.
   double hidden_below_fraction = 0.0;
-  int wall_grey = 170;
-  int face_grey = 90;
-  // When >= 0: the outline drawn as a one-pixel line of this grey (the dark gap around a door
-  // the shade of its carcass).
-  int gap_grey = -1;
 };
 
 // Both images: a grey wall, the door face darker, drawn with 1/256-pixel vertex precision and
@@ -57,7 +52,7 @@ inline std::array<cv::Mat, 2> render(const DoorScene& scene, std::array<FitCamer
   cv::RNG rng(7);
   const std::array<Eigen::Vector3d, 4> c = rectangle_corners(scene.door, up_in_left());
   for (int k = 0; k < 2; ++k) {
-    cv::Mat image(480, 640, CV_8UC1, cv::Scalar(scene.wall_grey));
+    cv::Mat image(480, 640, CV_8UC1, cv::Scalar(170));
     const FitCamera& camera = cameras[static_cast<std::size_t>(k)];
     std::vector<cv::Point> polygon;
     std::vector<Eigen::Vector2d> projected;
@@ -67,10 +62,7 @@ inline std::array<cv::Mat, 2> render(const DoorScene& scene, std::array<FitCamer
       polygon.emplace_back(static_cast<int>(std::lround((h.x() / h.z() + 0.5) * 256.0 - 128.0)),
                            static_cast<int>(std::lround((h.y() / h.z() + 0.5) * 256.0 - 128.0)));
     }
-    cv::fillConvexPoly(image, polygon, cv::Scalar(scene.face_grey), cv::LINE_AA, 8);
-    if (scene.gap_grey >= 0) {
-      cv::polylines(image, polygon, true, cv::Scalar(scene.gap_grey), 1, cv::LINE_8, 8);
-    }
+    cv::fillConvexPoly(image, polygon, cv::Scalar(90), cv::LINE_AA, 8);
     if (scene.hidden_below_fraction > 0.0) {
       const double top = std::min(projected[0].y(), projected[1].y());
       const double bottom = std::max(projected[2].y(), projected[3].y());
