@@ -178,18 +178,6 @@ std::optional<std::vector<ProjectedSample>> project_side(
   return out;
 }
 
-// The step an edge must reach grows with the search line's length: on a line of N positions the
-// strongest step of noise alone grows as sqrt(2 ln N) (the largest of N Gaussian samples), so
-// min_edge_step holds for the first round's lines (2 r_0 + 1 positions, r_0 the first radius)
-// and longer lines ask sqrt(ln N / ln N_0) times as much: a side beyond the border is not pulled
-// inside onto the image's noise by the wide search.
-double edge_step_for(double radius, const DoorFitOptions& options) {
-  const double reference = options.search_radii_px.empty() ? 5.0 : options.search_radii_px.front();
-  if (radius <= reference) return options.min_edge_step;
-  return options.min_edge_step *
-         std::sqrt(std::log(2.0 * radius + 1.0) / std::log(2.0 * reference + 1.0));
-}
-
 // One side's edges in both images within `radius` of its projection. A side's edge has one
 // polarity in both images (the door's face against the same background): the majority of the
 // strongest steps' signs over both images sets it, and only steps of that polarity are taken
@@ -203,13 +191,12 @@ struct SideSearch {
 SideSearch search_side(const std::array<std::vector<ProjectedSample>, 2>& projected,
                        const std::array<FitCamera, 2>& cameras, double radius,
                        const DoorFitOptions& options) {
-  const double min_step = edge_step_for(radius, options);
   int votes = 0;
   for (int k = 0; k < 2; ++k) {
     for (const ProjectedSample& s : projected[static_cast<std::size_t>(k)]) {
       int sign = 0;
       if (!s.cut && strongest_step(*cameras[static_cast<std::size_t>(k)].grey, s.px, s.outward,
-                                   radius, min_step, 0, &sign)) {
+                                   radius, options.min_edge_step, 0, &sign)) {
         votes += sign;
       }
     }
@@ -225,7 +212,7 @@ SideSearch search_side(const std::array<std::vector<ProjectedSample>, 2>& projec
       }
       int sign = 0;
       const auto at = strongest_step(*cameras[static_cast<std::size_t>(k)].grey, s.px, s.outward,
-                                     radius, min_step, polarity, &sign);
+                                     radius, options.min_edge_step, polarity, &sign);
       if (!at) continue;
       ++seen;
       out.measurements.push_back({k, s.alpha_beta, s.outward, s.px + *at * s.outward});

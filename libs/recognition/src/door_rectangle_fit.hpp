@@ -68,12 +68,7 @@ struct DoorFitOptions {
   // A side not seen within the radius is searched again within this fraction of its distance
   // from the projected centre (door_rectangle_fit.cpp, search_edges).
   double wide_search_fraction = 0.15;
-  // Grey levels per pixel (a central difference) for an edge to count as seen on the first
-  // round's search lines; longer lines ask more (door_rectangle_fit.cpp, edge_step_for). With
-  // a camera's noise of about 2 grey levels (a central difference's: 1.4), 4 is 2.8 sigma at
-  // each of the 11 positions of a line: noise alone rarely wins a sample, and a side needs half
-  // its samples.
-  double min_edge_step = 4.0;
+  double min_edge_step = 6.0;      // grey levels per pixel for an edge to count as seen
   double huber_px = 1.0;           // where the Huber loss turns linear
   double min_seen_fraction = 0.5;  // of each side's samples, in at least one image
   double max_rms_px = 1.2;         // of the seen samples' residuals at the solution
