@@ -1,6 +1,7 @@
 #include "vsl/fusion/fuse.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <map>
@@ -18,20 +19,37 @@ struct Member {
   const Percept* percept;
 };
 
+// E_i = Sigma_i - B of fuse.hpp, its eigenvalues kept at or above a floor: a recognizer whose
+// covariance is narrower than the shared part in some direction leaves its own part tiny there.
+Eigen::Matrix3d own_part(const Eigen::Matrix3d& covariance_m2, double shared_variance_m2) {
+  if (shared_variance_m2 <= 0.0) return covariance_m2;
+  constexpr double kMinOwnVarianceM2 = 1e-8;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(0.5 * (covariance_m2 + covariance_m2.transpose()));
+  const Eigen::Vector3d own =
+      (eigen.eigenvalues().array() - shared_variance_m2).cwiseMax(kMinOwnVarianceM2);
+  return eigen.eigenvectors() * own.asDiagonal() * eigen.eigenvectors().transpose();
+}
+
 // The fused percept of one cluster (formula in fuse.hpp).
 FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& members,
-                          const std::vector<Frame>& frames, const FieldOfView& field_of_view) {
+                          const std::vector<Frame>& frames, const FieldOfView& field_of_view,
+                          const FusionOptions& options) {
   FusedPercept out;
   out.type = type;
   out.num_percepts = static_cast<int>(members.size());
+  const auto shared = options.shared_sigma_m.find(type);
+  const double shared_variance_m2 =
+      shared == options.shared_sigma_m.end() ? 0.0 : shared->second * shared->second;
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   Eigen::Vector3d information_position = Eigen::Vector3d::Zero();
   std::vector<Eigen::Matrix3d> inverses;
   inverses.reserve(members.size());
   std::set<std::size_t> supporting;
   for (const Member& m : members) {
-    const Eigen::Matrix3d inverse =
-        m.percept->ego_covariance_m2.llt().solve(Eigen::Matrix3d::Identity());
+    const Eigen::Matrix3d inverse = own_part(m.percept->ego_covariance_m2, shared_variance_m2)
+                                        .llt()
+                                        .solve(Eigen::Matrix3d::Identity());
     inverses.push_back(inverse);
     information += inverse;
     information_position += inverse * m.percept->ego_position_m;
@@ -48,6 +66,7 @@ FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& me
     const double reduced = chi2 / (3.0 * static_cast<double>(members.size() - 1));
     covariance *= std::max(1.0, reduced);
   }
+  covariance += shared_variance_m2 * Eigen::Matrix3d::Identity();
   out.ego_covariance_m2 = 0.5 * (covariance + covariance.transpose());
   // C: frames, not percepts, so that C <= T_s (a frame sees an object once).
   out.support = static_cast<int>(supporting.size());
@@ -113,7 +132,7 @@ FusionResult fuse(const std::vector<Frame>& frames, const FieldOfView& field_of_
       clusters[static_cast<std::size_t>(modes.cluster[i])].push_back(members[i]);
     }
     for (const std::vector<Member>& cluster : clusters) {
-      FusedPercept fused = fuse_cluster(type, cluster, frames, field_of_view);
+      FusedPercept fused = fuse_cluster(type, cluster, frames, field_of_view, options);
       if (passes_confidence(fused.support, fused.expected, options)) {
         result.fused.push_back(std::move(fused));
       } else {

@@ -2,13 +2,20 @@
 // 3D over the kept ones, T_s per mode from the frames' camera poses and the field of view, the
 // confidence criterion Eq. 4, and the fused percepts H_f.
 //
-// Fused location and covariance of a mode with supporting percepts (x_i, Sigma_i), i = 1..n:
-//   information-weighted mean   Sigma = (sum_i Sigma_i^-1)^-1,  x = Sigma sum_i Sigma_i^-1 x_i
-//   scaled by the reduced chi-square when the percepts scatter more than their covariances say:
-//   chi2 = sum_i (x_i - x)^T Sigma_i^-1 (x_i - x),  Sigma *= max(1, chi2 / (3 (n - 1)))  (n > 1).
+// Fused location and covariance of a mode with supporting percepts (x_i, Sigma_i), i = 1..n.
+// Each percept's error is a part b shared by every frame of the scan (covariance B = s^2 I, s the
+// type's FusionOptions::shared_sigma_m; 0 when not named) and a part e_i of its own:
+//   x_i = x_true + b + e_i,   Sigma_i = B + E_i,   E_i = Sigma_i - B (eigenvalues kept >= 1e-8
+//   m^2).
+// The best linear estimate of x_true + b weighs the percepts by E_i^-1; b stays in it:
+//   Sigma_e = (sum_i E_i^-1)^-1,   x = Sigma_e sum_i E_i^-1 x_i,   Sigma = Sigma_e + B,
+// Sigma_e scaled first by the reduced chi-square when the percepts scatter more than their own
+// parts say (b cancels in x_i - x):
+//   chi2 = sum_i (x_i - x)^T E_i^-1 (x_i - x),  Sigma_e *= max(1, chi2 / (3 (n - 1)))  (n > 1).
 // The percepts of consecutive frames are not independent (one calibration, one ego-mapping), so
 // the unscaled information sum would be overconfident whenever they disagree; the scale keeps the
-// covariance at least as large as the scatter of the mean.
+// covariance at least as large as the scatter of the mean. With B = 0 this is the
+// information-weighted mean of the Sigma_i.
 #pragma once
 
 #include <cstddef>
