@@ -239,13 +239,17 @@ int main(int argc, char** argv) {
         newest_percepts_frame_utime = std::max(newest_percepts_frame_utime, m.frame_utime);
       });
   vsl::runtime::subscribe<vsl::stereo_frame_t>(
-      bus, "STEREO_FRAME", [&](const vsl::stereo_frame_t& m, std::int64_t receive_utime) {
+      bus, "STEREO_FRAME",
+      [&](const vsl::stereo_frame_t& m, std::int64_t receive_utime) {
         frame_arrival_utime.emplace(m.utime, receive_utime);
         constexpr std::size_t kFramesKept = 256;
         if (frame_arrival_utime.size() > kFramesKept) {
           frame_arrival_utime.erase(frame_arrival_utime.begin());
         }
-      });
+      },
+      // Frames are large (two images each): a few queued at most; one dropped only loses its
+      // arrival time.
+      8);
   vsl::runtime::subscribe<vsl::pose_estimate_t>(bus, options.pose_channel,
                                                 [&](const vsl::pose_estimate_t& m, std::int64_t) {
                                                   if (options.follow && !estimate)
