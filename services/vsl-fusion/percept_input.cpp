@@ -37,6 +37,22 @@ std::string covariance_problem(const double* c) {
   return "";
 }
 
+// Why `sigma_m` cannot be the shared part of the (valid) covariance `c`, or "": its variance is
+// part of the covariance, so it is at most the smallest eigenvalue (to rounding).
+std::string shared_sigma_problem(double sigma_m, const double* c) {
+  if (!std::isfinite(sigma_m) || sigma_m < 0.0 || sigma_m > kMaxSharedSigma_m) {
+    return "shared_sigma_m " + std::to_string(sigma_m) + " is not in [0, 1] m";
+  }
+  const Eigen::Matrix3d m = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c);
+  const double smallest_m2 =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  if (sigma_m * sigma_m > smallest_m2 * (1.0 + 1e-6)) {
+    return "shared_sigma_m " + std::to_string(sigma_m) +
+           " exceeds the covariance's smallest sigma " + std::to_string(std::sqrt(smallest_m2));
+  }
+  return "";
+}
+
 }  // namespace
 
 std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& list) {
@@ -81,8 +97,13 @@ std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& l
     if (const std::string problem = covariance_problem(p.ego_covariance_m2); !problem.empty()) {
       return which + problem;
     }
+    if (const std::string problem = shared_sigma_problem(p.shared_sigma_m, p.ego_covariance_m2);
+        !problem.empty()) {
+      return which + problem;
+    }
     fusion::Percept percept;
     percept.type = p.type;
+    percept.shared_sigma_m = p.shared_sigma_m;
     percept.ego_position_m =
         Eigen::Vector3d(p.ego_position_m[0], p.ego_position_m[1], p.ego_position_m[2]);
     percept.ego_covariance_m2 =

@@ -24,6 +24,9 @@ inline constexpr double kMinCovarianceEigenvalue_m2 = 1e-12;
 // fused positions, which the localizer then drops, failing with the wrong reason.
 inline constexpr double kMaxPerceptDistance_m = 100.0;
 inline constexpr double kMaxCovariance_m2 = 1e4;
+// The largest shared error sigma a percept may claim (m): where on an object a recognizer takes
+// its reference point is wrong by centimetres, not metres.
+inline constexpr double kMaxSharedSigma_m = 1.0;
 
 // The frame (percepts and left camera pose) or the list's problem ("percept 2 (door): covariance
 // is not positive definite").

@@ -33,14 +33,14 @@ Eigen::Matrix3d own_part(const Eigen::Matrix3d& covariance_m2, double shared_var
 
 // The fused percept of one cluster (formula in fuse.hpp).
 FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& members,
-                          const std::vector<Frame>& frames, const FieldOfView& field_of_view,
-                          const FusionOptions& options) {
+                          const std::vector<Frame>& frames, const FieldOfView& field_of_view) {
   FusedPercept out;
   out.type = type;
   out.num_percepts = static_cast<int>(members.size());
-  const auto shared = options.shared_sigma_m.find(type);
-  const double shared_variance_m2 =
-      shared == options.shared_sigma_m.end() ? 0.0 : shared->second * shared->second;
+  // B: the part every member shares is at most the smallest any of them claims.
+  double shared_sigma_m = members.front().percept->shared_sigma_m;
+  for (const Member& m : members) shared_sigma_m = std::min(shared_sigma_m, m.percept->shared_sigma_m);
+  const double shared_variance_m2 = shared_sigma_m * shared_sigma_m;
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   Eigen::Vector3d information_position = Eigen::Vector3d::Zero();
   std::vector<Eigen::Matrix3d> inverses;
@@ -132,7 +132,7 @@ FusionResult fuse(const std::vector<Frame>& frames, const FieldOfView& field_of_
       clusters[static_cast<std::size_t>(modes.cluster[i])].push_back(members[i]);
     }
     for (const std::vector<Member>& cluster : clusters) {
-      FusedPercept fused = fuse_cluster(type, cluster, frames, field_of_view, options);
+      FusedPercept fused = fuse_cluster(type, cluster, frames, field_of_view);
       if (passes_confidence(fused.support, fused.expected, options)) {
         result.fused.push_back(std::move(fused));
       } else {

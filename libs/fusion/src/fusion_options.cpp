@@ -28,7 +28,7 @@ FusionOptions fusion_options_from(const Node& section) {
   section.expect_map();
   section.expect_keys({"isolation_distance_m", "bandwidth_m", "max_mean_shift_iterations",
                        "mode_merge_distance_m", "image_margin_px", "min_depth_m", "max_range_m",
-                       "e_min", "iota_frames", "shared_sigma_m"});
+                       "e_min", "iota_frames"});
   if (const auto n = section.find("isolation_distance_m")) {
     options.isolation_distance_m = n->as_double_in(1e-3, 100.0);
   }
@@ -47,12 +47,6 @@ FusionOptions fusion_options_from(const Node& section) {
     options.max_range_m = n->as_double_in(0.1, 1000.0);
   if (const auto n = section.find("e_min")) options.e_min = n->as_double_in(0.0, 1.0);
   if (const auto n = section.find("iota_frames")) options.iota_frames = int_in(*n, 0, 1000);
-  if (const auto n = section.find("shared_sigma_m")) {
-    n->expect_map();
-    for (const std::string& type : n->keys()) {
-      options.shared_sigma_m[type] = n->at(type).as_double_in(0.0, 1.0);
-    }
-  }
   // Cross-key rules, reported at the second key of the pair.
   if (options.min_depth_m >= options.max_range_m) {
     section.at(section.has("min_depth_m") ? "min_depth_m" : "max_range_m")

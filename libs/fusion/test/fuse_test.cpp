@@ -176,19 +176,24 @@ TEST(Fuse, InformationWeightedMeanAndCovariance) {
 
 // Four frames of one door, each percept 2 cm per axis of which 1.5 cm is shared by the scan:
 // the fused covariance keeps the shared part, (4e-4 - 2.25e-4) / 4 + 2.25e-4, instead of
-// shrinking to 4e-4 / 4; the mean is the same. Another type keeps the independent rule.
+// shrinking to 4e-4 / 4; the mean is the same. Handles claiming no shared part keep the
+// independent rule.
 TEST(Fuse, SharedErrorIsNotAveragedDown) {
   const Eigen::Vector3d camera(0.05, 0.045, 1.5);
   const Eigen::Vector3d at(2.0, 0.0, 1.0);
-  std::vector<Frame> frames(4);
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    frames[f].ego_T_left_camera = look_at(camera, at);
-    frames[f].percepts = {percept("door", at, 0.02),
-                          percept("handle", at + Eigen::Vector3d::UnitY(), 0.02)};
-  }
-  FusionOptions options;
-  options.shared_sigma_m["door"] = 0.015;
-  const FusionResult result = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  const auto scan = [&](double door_shared_sigma_m) {
+    std::vector<Frame> frames(4);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      frames[f].ego_T_left_camera = look_at(camera, at);
+      frames[f].percepts = {percept("door", at, 0.02),
+                            percept("handle", at + Eigen::Vector3d::UnitY(), 0.02)};
+      frames[f].percepts[0].shared_sigma_m = door_shared_sigma_m;
+    }
+    return frames;
+  };
+  const FusionOptions options;
+  const FusionResult result =
+      fuse(scan(0.015), FieldOfView(head::CameraIntrinsics{}, options), options);
   ASSERT_EQ(result.fused.size(), 2u);
   for (const FusedPercept& fused : result.fused) {
     const double expected = fused.type == "door" ? (4e-4 - 2.25e-4) / 4.0 + 2.25e-4 : 4e-4 / 4.0;
@@ -198,11 +203,18 @@ TEST(Fuse, SharedErrorIsNotAveragedDown) {
   }
   // A percept narrower than the shared part: its own part is kept at the floor, and the fused
   // covariance is the shared part.
-  options.shared_sigma_m["door"] = 0.05;
-  const FusionResult narrow = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  const FusionResult narrow =
+      fuse(scan(0.05), FieldOfView(head::CameraIntrinsics{}, options), options);
   ASSERT_EQ(narrow.fused.size(), 2u);
   EXPECT_NEAR(narrow.fused[0].ego_covariance_m2(0, 0), 0.05 * 0.05, 1e-8);
   EXPECT_EQ(narrow.fused[0].type, "door");
+  // Percepts claiming different shared parts: only the smallest is shared by all of them.
+  std::vector<Frame> mixed = scan(0.015);
+  mixed[0].percepts[0].shared_sigma_m = 0.0;
+  const FusionResult independent =
+      fuse(mixed, FieldOfView(head::CameraIntrinsics{}, options), options);
+  ASSERT_EQ(independent.fused.size(), 2u);
+  EXPECT_NEAR(independent.fused[0].ego_covariance_m2(0, 0), 4e-4 / 4.0, 1e-12);
 }
 
 TEST(Fuse, EmptyScan) {

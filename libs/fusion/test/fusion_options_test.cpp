@@ -34,8 +34,7 @@ TEST(FusionOptions, DefaultsAndEveryKey) {
       "  min_depth_m: 0.3\n"
       "  max_range_m: 4\n"
       "  e_min: 0.6\n"
-      "  iota_frames: 2\n"
-      "  shared_sigma_m: {door: 0.02, handle: 0.01}\n");
+      "  iota_frames: 2\n");
   EXPECT_DOUBLE_EQ(o.isolation_distance_m, 0.3);
   EXPECT_DOUBLE_EQ(o.bandwidth_m, 0.08);
   EXPECT_EQ(o.max_mean_shift_iterations, 20);
@@ -45,10 +44,6 @@ TEST(FusionOptions, DefaultsAndEveryKey) {
   EXPECT_DOUBLE_EQ(o.max_range_m, 4.0);
   EXPECT_DOUBLE_EQ(o.e_min, 0.6);
   EXPECT_EQ(o.iota_frames, 2);
-  EXPECT_TRUE(defaults.shared_sigma_m.empty());
-  EXPECT_EQ(o.shared_sigma_m.size(), 2u);
-  EXPECT_DOUBLE_EQ(o.shared_sigma_m.at("door"), 0.02);
-  EXPECT_DOUBLE_EQ(o.shared_sigma_m.at("handle"), 0.01);
 }
 
 TEST(FusionOptions, BadValuesAreOneLineWithFileLineAndKey) {
@@ -72,12 +67,6 @@ TEST(FusionOptions, BadValuesAreOneLineWithFileLineAndKey) {
                       "exceed bandwidth_m"),
             std::string::npos);
   EXPECT_NE(error_of("fusion: [1, 2]\n").find("fusion.yaml:1: fusion"), std::string::npos);
-  EXPECT_NE(error_of("fusion:\n  shared_sigma_m: {door: -0.1}\n")
-                .find("fusion.yaml:2: fusion.shared_sigma_m.door"),
-            std::string::npos);
-  EXPECT_NE(
-      error_of("fusion:\n  shared_sigma_m: 0.02\n").find("fusion.yaml:2: fusion.shared_sigma_m"),
-      std::string::npos);
 }
 
 }  // namespace

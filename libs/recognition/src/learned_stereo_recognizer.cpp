@@ -63,6 +63,15 @@ double depth_offset_of(const BoxStereoOptions& options, const std::string& type)
   return 0.0;
 }
 
+// The class's noise model (BoxStereoOptions::noise).
+BoxStereoOptions::Noise noise_of(const BoxStereoOptions& options, const std::string& type) {
+  BoxStereoOptions::Noise noise;
+  for (const BoxStereoOptions::Noise& n : options.noise) {
+    if (n.type == type) noise = n;
+  }
+  return noise;
+}
+
 // One matched pair of boxes placed in the left camera frame.
 struct Placed {
   std::string type;  // the detection's, or what its size retypes it to
@@ -122,22 +131,13 @@ class PairPlacer {
     return continuous_px - Eigen::Vector2d(0.5, 0.5);
   }
 
-  // The class's noise model (BoxStereoOptions::noise).
-  BoxStereoOptions::Noise noise_of(const std::string& type) const {
-    BoxStereoOptions::Noise noise;
-    for (const BoxStereoOptions::Noise& n : options_.noise) {
-      if (n.type == type) noise = n;
-    }
-    return noise;
-  }
-
   // A triangulation's covariance from the class's noise model: the pixel pair's through the
   // triangulation, plus the floor in every direction.
   std::optional<detail::Triangulation> triangulate_with_noise(const std::string& type,
                                                               const detail::IdealPixel& left,
                                                               const detail::IdealPixel& right,
                                                               double offset_m) const {
-    const BoxStereoOptions::Noise noise = noise_of(type);
+    const BoxStereoOptions::Noise noise = noise_of(options_, type);
     auto t = triangulator_.triangulate(
         left, right, detail::reference_disparity_covariance(noise.reference_px, noise.disparity_px),
         offset_m);
@@ -415,6 +415,9 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
     p.ego_position_m = result.ego_T_left_camera * placed->triangulation.left_camera_position_m;
     p.ego_covariance_m2 =
         ego_R_left * placed->triangulation.left_camera_covariance_m2 * ego_R_left.transpose();
+    // The floor is where on the object the reference point falls from this robot pose: the same
+    // in every frame of a scan (percept_t.shared_sigma_m).
+    p.shared_sigma_m = noise_of(options_, left.type).floor_m;  // the covariance's model
     p.left_px = placed->left_px;
     p.right_px = placed->right_px;
     p.confidence = std::sqrt(left.confidence * right.confidence);

@@ -23,6 +23,7 @@ vsl::percept_list_t good_list() {
   p.ego_covariance_m2[1] = p.ego_covariance_m2[3] = 2e-5;
   list.percepts = {p, p};
   list.percepts[1].type = "handle";
+  list.percepts[1].shared_sigma_m = 0.008;
   list.num_percepts = 2;
   return list;
 }
@@ -41,6 +42,8 @@ TEST(PerceptInput, GoodListBecomesAFrame) {
   ASSERT_EQ(frame.percepts.size(), 2u);
   EXPECT_EQ(frame.percepts[1].type, "handle");
   EXPECT_DOUBLE_EQ(frame.percepts[0].ego_covariance_m2(0, 1), 2e-5);
+  EXPECT_DOUBLE_EQ(frame.percepts[0].shared_sigma_m, 0.0);
+  EXPECT_DOUBLE_EQ(frame.percepts[1].shared_sigma_m, 0.008);
   EXPECT_DOUBLE_EQ(frame.ego_T_left_camera.translation().z(), 1.5);
 }
 
@@ -80,6 +83,18 @@ TEST(PerceptInput, MalformedListsAreOneLineProblems) {
   l = good_list();
   for (double& c : l.percepts[1].ego_covariance_m2) c = 0.0;
   EXPECT_EQ(problem_of(l), "percept 1 (handle): covariance is not positive definite");
+  // The shared part is inside the covariance: at most its smallest sigma, sqrt(8e-5) m here.
+  l = good_list();
+  l.percepts[1].shared_sigma_m = 0.0095;
+  EXPECT_EQ(problem_of(l),
+            "percept 1 (handle): shared_sigma_m 0.009500 exceeds the covariance's smallest sigma "
+            "0.008944");
+  l = good_list();
+  l.percepts[1].shared_sigma_m = -0.01;
+  EXPECT_EQ(problem_of(l), "percept 1 (handle): shared_sigma_m -0.010000 is not in [0, 1] m");
+  l = good_list();
+  l.percepts[1].shared_sigma_m = nan;
+  EXPECT_EQ(problem_of(l), "percept 1 (handle): shared_sigma_m nan is not in [0, 1] m");
   l = good_list();
   l.percepts[1].frame_id = 5;
   EXPECT_EQ(problem_of(l), "percept 1 (handle): frame_id 5, the list's is 4");

@@ -4,7 +4,8 @@
 //
 // Fused location and covariance of a mode with supporting percepts (x_i, Sigma_i), i = 1..n.
 // Each percept's error is a part b shared by every frame of the scan (covariance B = s^2 I, s the
-// type's FusionOptions::shared_sigma_m; 0 when not named) and a part e_i of its own:
+// smallest Percept::shared_sigma_m of the mode's percepts, which the recognizer sets) and a part
+// e_i of its own:
 //   x_i = x_true + b + e_i,   Sigma_i = B + E_i,   E_i = Sigma_i - B
 // (E_i's eigenvalues kept at or above 1e-8 m^2).
 // The best linear estimate of x_true + b weighs the percepts by E_i^-1; b stays in it:

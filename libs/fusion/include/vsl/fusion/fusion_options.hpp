@@ -1,7 +1,6 @@
 // Parameters of fusion (paper §2.1.1, Eq. 4), with the defaults used by config/fusion.yaml.
 #pragma once
 
-#include <map>
 #include <string>
 
 namespace vsl::config {
@@ -34,11 +33,6 @@ struct FusionOptions {
   // percepts and ego-mapping errors (a place at the image border, a camera pose a little off);
   // T_s is relaxed by this many frames in Eq. 4.
   int iota_frames = 1;
-  // Per type, the part of every percept's error (sigma per axis, m) that all frames of one scan
-  // share: where on the object recognition puts its reference point, seen from one robot pose
-  // (a worktop's lip hiding a door's top hides it in every frame). Fusion does not average it
-  // down (fuse.hpp). Types not named: every percept's error independent of the others'.
-  std::map<std::string, double> shared_sigma_m;
 };
 
 // Reads a `fusion:` section (keys as the fields above; every key optional, unknown keys

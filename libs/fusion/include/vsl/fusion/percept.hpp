@@ -17,6 +17,9 @@ struct Percept {
   std::string type;                // the world model's type ("door", "handle", ...): alpha
   Eigen::Vector3d ego_position_m;  // ego frame
   Eigen::Matrix3d ego_covariance_m2 = Eigen::Matrix3d::Identity();  // ego frame, symmetric PD
+  // sigma of the error part every frame of the scan shares, m, isotropic, inside the covariance
+  // (percept_t.shared_sigma_m; fuse.hpp)
+  double shared_sigma_m = 0.0;
 };
 
 // One stereo frame of the scan, also when nothing was recognized in it: its camera pose still

@@ -18,6 +18,9 @@ struct FramePercept {
   std::string type;
   Eigen::Vector3d ego_position_m = Eigen::Vector3d::Zero();  // reference point, ego frame
   Eigen::Matrix3d ego_covariance_m2 = Eigen::Matrix3d::Zero();
+  // The part of the error every frame of a scan shares (percept_t.shared_sigma_m), metres,
+  // isotropic; its variance is inside ego_covariance_m2.
+  double shared_sigma_m = 0.0;
   Eigen::Vector2d left_px = Eigen::Vector2d::Zero();   // reference point, raw left image
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();  // reference point, raw right image
   // 0 .. 1: sqrt(c_left c_right) of the two detections (stereo_match.hpp says why); for a
