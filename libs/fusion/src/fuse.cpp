@@ -39,7 +39,8 @@ FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& me
   out.num_percepts = static_cast<int>(members.size());
   // B: the part every member shares is at most the smallest any of them claims.
   double shared_sigma_m = members.front().percept->shared_sigma_m;
-  for (const Member& m : members) shared_sigma_m = std::min(shared_sigma_m, m.percept->shared_sigma_m);
+  for (const Member& m : members)
+    shared_sigma_m = std::min(shared_sigma_m, m.percept->shared_sigma_m);
   const double shared_variance_m2 = shared_sigma_m * shared_sigma_m;
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   Eigen::Vector3d information_position = Eigen::Vector3d::Zero();

@@ -3,8 +3,8 @@
 // points of doors and handles, and frames of the wrong size are refused.
 #include "vsl/recognition/learned_stereo_recognizer.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <limits>
