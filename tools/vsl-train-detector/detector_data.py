@@ -140,11 +140,12 @@ def split(samples, fraction, seed):
 
 
 def letterbox(image, width, height):
-    """Scales the image to fit width x height (aspect kept), pads right and bottom with grey.
-    Returns the input image and the scale (input pixels per image pixel)."""
+    """Scales the image to fit width x height (aspect kept, bilinear as the C++ detector does),
+    pads right and bottom with grey. Returns the input image and the scale (input pixels per
+    image pixel)."""
     scale = min(width / image.shape[1], height / image.shape[0])
     resized = cv2.resize(image, (max(1, round(image.shape[1] * scale)), max(1, round(image.shape[0] * scale))),
-                         interpolation=cv2.INTER_AREA if scale < 1 else cv2.INTER_LINEAR)
+                         interpolation=cv2.INTER_LINEAR)
     out = np.full((height, width, 3), 114, np.uint8)
     out[: resized.shape[0], : resized.shape[1]] = resized
     return out, scale

@@ -155,12 +155,15 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
   const cv::Size fitted(std::max(1, static_cast<int>(std::lround(bgr.cols * scale))),
                         std::max(1, static_cast<int>(std::lround(bgr.rows * scale))));
   cv::Mat input(options_.input_height, options_.input_width, CV_8UC3, cv::Scalar::all(114));
+  // Bilinear, also when shrinking: OpenCV's area average at a factor that is not whole (640 ->
+  // 384) takes 3 ms on one core, bilinear 1 ms, and the held-out photographs' AP50 is the same
+  // with either (docs/learned-detector.md).
   cv::resize(bgr,
              input(cv::Rect(0, 0, std::min(fitted.width, options_.input_width),
                             std::min(fitted.height, options_.input_height))),
              cv::Size(std::min(fitted.width, options_.input_width),
                       std::min(fitted.height, options_.input_height)),
-             0, 0, scale < 1.0 ? cv::INTER_AREA : cv::INTER_LINEAR);
+             0, 0, cv::INTER_LINEAR);
   cv::Mat output;
   {
     const std::lock_guard lock(network_->mutex);

@@ -61,7 +61,7 @@ struct BoxStereoOptions {
     double disparity_px = 1.0;
     double floor_m = 0.0;
   };
-  std::vector<Noise> noise{{"door", 0.0, 0.19, 0.021}, {"handle", 1.8, 0.10, 0.013}};
+  std::vector<Noise> noise{{"door", 0.0, 0.18, 0.022}, {"handle", 1.6, 0.115, 0.013}};
   // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
   std::vector<std::string> rectangle_types{"door"};
   // Candidate pairs are also scored by how well the boxes' surroundings correlate at the pair's
