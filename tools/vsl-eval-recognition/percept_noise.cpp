@@ -13,6 +13,12 @@
 namespace vsl::tools {
 namespace {
 
+double median(std::vector<double> values) {
+  const auto middle = values.begin() + static_cast<long>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
 double robust_sigma(std::vector<double> values) {
   for (double& v : values) v = std::abs(v);
   const auto middle = values.begin() + static_cast<long>(values.size() / 2);
@@ -146,6 +152,32 @@ void PerceptNoiseTally::print(std::ostream& out) const {
     }
     out << line;
   }
+  // The model has no bias term; a bias shows here (a door centre found in front of its face,
+  // handles found low), and the same bias in every percept of a scan moves the pose.
+  out << "median signed error of the true positives, mm: across the ray (image right, image "
+         "down) and along it (away from the camera)\n";
+  std::snprintf(line, sizeof line, "%-14s %8s %10s %10s %10s\n", "class", "n", "right", "down",
+                "along");
+  out << line;
+  for (const auto& [type, errors] : by_type_) {
+    const auto b = bias_m(type);
+    if (!b) continue;
+    std::snprintf(line, sizeof line, "%-14s %8zu %10.1f %10.1f %10.1f\n", type.c_str(),
+                  errors.size(), 1e3 * b->x(), 1e3 * b->y(), 1e3 * b->z());
+    out << line;
+  }
+}
+
+std::optional<Eigen::Vector3d> PerceptNoiseTally::bias_m(const std::string& type) const {
+  const auto it = by_type_.find(type);
+  if (it == by_type_.end() || it->second.empty()) return std::nullopt;
+  std::vector<double> right, down, along;
+  for (const Error& e : it->second) {
+    right.push_back(e.across_m[0]);
+    down.push_back(e.across_m[1]);
+    along.push_back(e.along_m);
+  }
+  return Eigen::Vector3d(median(right), median(down), median(along));
 }
 
 }  // namespace vsl::tools

@@ -18,6 +18,8 @@
 // estimated s^2 is about 2 s^4 / n), with the three unknowns non-negative.
 #pragma once
 
+#include <Eigen/Core>
+
 #include <map>
 #include <optional>
 #include <ostream>
@@ -48,6 +50,10 @@ class PerceptNoiseTally {
   };
   // The fitted model of a class; nullopt when it has fewer than two bins of true positives.
   std::optional<Sigmas> sigmas(const std::string& type) const;
+  // The median signed error of a class's true positives, metres: across the viewing ray (image
+  // right, image down) and along it (away from the camera); nullopt without true positives.
+  // The noise model has no bias; one shows here.
+  std::optional<Eigen::Vector3d> bias_m(const std::string& type) const;
   void print(std::ostream& out) const;
 
  private:
