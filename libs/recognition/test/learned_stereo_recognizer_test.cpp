@@ -44,7 +44,7 @@ TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
       errors.push_back(nearest);
       // The noise model's floor is the part every frame of a scan shares, and it is inside the
       // covariance (percept_t.shared_sigma_m).
-      EXPECT_DOUBLE_EQ(p.shared_sigma_m, p.type == "handle" ? 0.013 : 0.022) << p.type;
+      EXPECT_DOUBLE_EQ(p.shared_sigma_m, p.type == "handle" ? 0.012 : 0.022) << p.type;
       const double smallest_m2 =
           Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.ego_covariance_m2).eigenvalues()(0);
       EXPECT_LE(p.shared_sigma_m * p.shared_sigma_m, smallest_m2 * (1.0 + 1e-9)) << p.type;
