@@ -14,8 +14,9 @@ bool finite(const double* values, int n) {
   return true;
 }
 
-// Why the row-major 3x3 `c` is no covariance, or "".
-std::string covariance_problem(const double* c) {
+// Why the row-major 3x3 `c` is no covariance, or "" with its smallest eigenvalue in
+// `smallest_m2`.
+std::string covariance_problem(const double* c, double& smallest_m2) {
   if (!finite(c, 9)) return "covariance is not finite";
   for (int i = 0; i < 9; ++i) {
     if (std::abs(c[i]) > kMaxCovariance_m2) return "covariance entry beyond 1e4 m^2";
@@ -34,18 +35,16 @@ std::string covariance_problem(const double* c) {
       !(eigen.eigenvalues().minCoeff() >= kMinCovarianceEigenvalue_m2)) {
     return "covariance is not positive definite";
   }
+  smallest_m2 = eigen.eigenvalues().minCoeff();
   return "";
 }
 
-// Why `sigma_m` cannot be the shared part of the (valid) covariance `c`, or "": its variance is
-// part of the covariance, so it is at most the smallest eigenvalue (to rounding).
-std::string shared_sigma_problem(double sigma_m, const double* c) {
+// Why `sigma_m` cannot be the shared part of a covariance whose smallest eigenvalue is
+// `smallest_m2`, or "": its variance is part of the covariance, so at most that (to rounding).
+std::string shared_sigma_problem(double sigma_m, double smallest_m2) {
   if (!std::isfinite(sigma_m) || sigma_m < 0.0 || sigma_m > kMaxSharedSigma_m) {
     return "shared_sigma_m " + std::to_string(sigma_m) + " is not in [0, 1] m";
   }
-  const Eigen::Matrix3d m = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c);
-  const double smallest_m2 =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues()(0);
   if (sigma_m * sigma_m > smallest_m2 * (1.0 + 1e-6)) {
     return "shared_sigma_m " + std::to_string(sigma_m) +
            " exceeds the covariance's smallest sigma " + std::to_string(std::sqrt(smallest_m2));
@@ -94,10 +93,12 @@ std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& l
         kMaxPerceptDistance_m) {
       return which + "ego_position_m is more than 100 m away";
     }
-    if (const std::string problem = covariance_problem(p.ego_covariance_m2); !problem.empty()) {
+    double smallest_m2 = 0.0;
+    if (const std::string problem = covariance_problem(p.ego_covariance_m2, smallest_m2);
+        !problem.empty()) {
       return which + problem;
     }
-    if (const std::string problem = shared_sigma_problem(p.shared_sigma_m, p.ego_covariance_m2);
+    if (const std::string problem = shared_sigma_problem(p.shared_sigma_m, smallest_m2);
         !problem.empty()) {
       return which + problem;
     }
