@@ -4,6 +4,7 @@
 // and runs; bad input is one line and exit code 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -86,6 +87,43 @@ TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
       {VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--input", "300x200", "--out", (dir / "m").string()});
   EXPECT_EQ(input.exit_code, 2);
   EXPECT_NE(input.err.find("multiples of 32"), std::string::npos) << input.err;
+}
+
+// The training layouts' variants: each one a layout vsl-worldgen generates, the same files for the
+// same seed, and together more than one door style and handle kind.
+TEST(LayoutVariants, WritesLayoutsTheGeneratorMakesDeterministically) {
+  const fs::path dir = scratch("variants");
+  const auto written = run_command({VSL_LAYOUT_VARIANTS, "--per-layout", "6", "--seed", "3",
+                                    "--out", (dir / "a").string(), "-q",
+                                    "config/layouts/kitchen.yaml"});
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  const auto again = run_command({VSL_LAYOUT_VARIANTS, "--per-layout", "6", "--seed", "3", "--out",
+                                  (dir / "b").string(), "-q", "config/layouts/kitchen.yaml"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  std::string styles, kinds;
+  for (int k = 0; k < 6; ++k) {
+    const std::string name = "kitchen_v" + std::to_string(k) + ".yaml";
+    const std::string layout = read(dir / "a" / name);
+    EXPECT_EQ(layout, read(dir / "b" / name)) << name;
+    const auto generated = run_command({VSL_WORLDGEN_BIN, "kitchen", (dir / "a" / name).string(),
+                                        "-o", (dir / ("world_" + name)).string(), "-q"});
+    EXPECT_EQ(generated.exit_code, 0) << name << ": " << generated.err;
+    const auto style = layout.find("doors: {style: ");
+    const auto kind = layout.find("handles: {kind: ");
+    ASSERT_NE(style, std::string::npos) << layout;
+    ASSERT_NE(kind, std::string::npos) << layout;
+    if (styles.find(layout.substr(style + 15, 4)) == std::string::npos)
+      styles += layout.substr(style + 15, 4) + " ";
+    if (kinds.find(layout.substr(kind + 16, 4)) == std::string::npos)
+      kinds += layout.substr(kind + 16, 4) + " ";
+  }
+  EXPECT_GE(styles.size(), 10u) << styles;  // at least two of slab, shaker, glass, framed
+  EXPECT_GE(kinds.size(), 10u) << kinds;    // at least two of bar, knob, cup_pull, rail
+  const auto bad = run_command(
+      {VSL_LAYOUT_VARIANTS, "--out", (dir / "c").string(), "no/such/layout.yaml"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("no/such/layout.yaml"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
 }  // namespace

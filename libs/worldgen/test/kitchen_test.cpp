@@ -231,12 +231,12 @@ TEST(Kitchen, ShippedWorldIsExactlyWhatTheGeneratorMakes) {
 }
 
 // The evaluation layouts of recognition (docs/recognition.md): the galley, the L-shaped check
-// layout, the two tuning layouts and the two kitchens of unseen looks are shipped as generated
+// layout, the two tuning layouts and the kitchens of unseen looks are shipped as generated
 // worlds too, and must stay what their layouts make.
 TEST(Kitchen, ShippedEvaluationWorldsAreWhatTheirLayoutsMake) {
   for (const std::string name :
        {"kitchen_galley", "kitchen_l", "kitchen_tuning_corner", "kitchen_tuning_parallel",
-        "kitchen_white_rails", "kitchen_oak_knobs"}) {
+        "kitchen_white_rails", "kitchen_oak_knobs", "kitchen_navy_brass", "kitchen_sage_cups"}) {
     const std::string layout = "config/layouts/" + name + ".yaml";
     const std::string world = "config/worlds/" + name + ".yaml";
     std::ifstream in(world, std::ios::binary);
@@ -319,7 +319,8 @@ TEST(Kitchen, UnseenLooksAreGoodLocalizationWorlds) {
 TEST(Kitchen, ShippedLightsShineDown) {
   for (const std::string name :
        {"kitchen", "kitchen_galley", "kitchen_l", "kitchen_tuning_corner",
-        "kitchen_tuning_parallel", "kitchen_white_rails", "kitchen_oak_knobs"}) {
+        "kitchen_tuning_parallel", "kitchen_white_rails", "kitchen_oak_knobs",
+        "kitchen_navy_brass", "kitchen_sage_cups"}) {
     const world::WorldModel world = world::load_world("config/worlds/" + name + ".yaml");
     int lights = 0;
     for (const auto& o : world.objects) {
