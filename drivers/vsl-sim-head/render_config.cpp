@@ -35,8 +35,7 @@ render::RenderOptions render_options_from(const config::Node& section) {
   section.expect_map();
   section.expect_keys({"ambient", "diffuse", "world_light_direction", "noise_sigma_grey",
                        "exposure_variation", "apply_distortion", "background", "near_clip_m",
-                       "far_clip_m", "cylinder_segments", "samples",
-                       "slot_occlusion_max_width_m"});
+                       "far_clip_m", "cylinder_segments", "samples", "slot_occlusion_max_width_m"});
   if (const auto v = section.find("ambient")) out.ambient = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("diffuse")) out.diffuse = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("world_light_direction")) {

@@ -33,10 +33,10 @@ std::string read(const fs::path& path) {
 
 TEST(VslTrainDetector, FineTunesOnABoxLabelFileAndTheModelRunsInCpp) {
   const fs::path dir = scratch("fine-tune");
-  const auto dataset = run_command({VSL_MAKE_DATASET_BIN, "--world", "config/worlds/kitchen.yaml",
-                                    "--views", "6", "--seed", "5", "--realism", "off", "--out",
-                                    (dir / "data").string(), "-q"},
-                                   300.0);
+  const auto dataset =
+      run_command({VSL_MAKE_DATASET_BIN, "--world", "config/worlds/kitchen.yaml", "--views", "6",
+                   "--seed", "5", "--realism", "off", "--out", (dir / "data").string(), "-q"},
+                  300.0);
   ASSERT_EQ(dataset.exit_code, 0) << dataset.err;
   const auto trained = run_command(
       {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--out",
@@ -47,20 +47,20 @@ TEST(VslTrainDetector, FineTunesOnABoxLabelFileAndTheModelRunsInCpp) {
     EXPECT_TRUE(fs::exists(dir / "model" / file)) << file;
   }
   const std::string description = read(dir / "model" / "door_handle.yaml");
-  for (const char* text : {"model: door_handle.onnx", "min_confidence: {door: ", "provenance:",
-                           "command: \"vsl-train-detector --labels", "init: \"door_handle.pt\"",
-                           "held_out:"}) {
+  for (const char* text :
+       {"model: door_handle.onnx", "min_confidence: {door: ", "provenance:",
+        "command: \"vsl-train-detector --labels", "init: \"door_handle.pt\"", "held_out:"}) {
     EXPECT_NE(description.find(text), std::string::npos) << text << "\n" << description;
   }
   // 12 images: 2 held out (0.2) for the thresholds.
   EXPECT_NE(description.find("images: {real_or_own: 10, rendered: 0, held_out: 2}"),
             std::string::npos)
       << description;
-  const auto evaluated = run_command(
-      {VSL_EVAL_RECOGNITION_BIN, "--images", (dir / "data" / "images").string(), "--yolo-labels",
-       (dir / "data" / "labels").string(), "--detector",
-       (dir / "model" / "door_handle.yaml").string(), "--json", "-", "-q"},
-      120.0);
+  const auto evaluated =
+      run_command({VSL_EVAL_RECOGNITION_BIN, "--images", (dir / "data" / "images").string(),
+                   "--yolo-labels", (dir / "data" / "labels").string(), "--detector",
+                   (dir / "model" / "door_handle.yaml").string(), "--json", "-", "-q"},
+                  120.0);
   ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
   EXPECT_NE(evaluated.out.find("\"images\":12"), std::string::npos) << evaluated.out;
   EXPECT_NE(evaluated.out.find("\"type\":\"handle\""), std::string::npos) << evaluated.out;
@@ -68,8 +68,8 @@ TEST(VslTrainDetector, FineTunesOnABoxLabelFileAndTheModelRunsInCpp) {
 
 TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
   const fs::path dir = scratch("bad");
-  const auto missing = run_command({VSL_TRAIN_DETECTOR, "--labels", "no/such/labels.yaml", "--out",
-                                    (dir / "m").string()});
+  const auto missing = run_command(
+      {VSL_TRAIN_DETECTOR, "--labels", "no/such/labels.yaml", "--out", (dir / "m").string()});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.err, "vsl-train-detector: no/such/labels.yaml: no such file or folder\n");
   fs::create_directories(dir);
@@ -83,8 +83,8 @@ TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
   const auto usage = run_command({VSL_TRAIN_DETECTOR, "--out", (dir / "m").string()});
   EXPECT_EQ(usage.exit_code, 2);
   EXPECT_NE(usage.err.find("no training data"), std::string::npos) << usage.err;
-  const auto input = run_command(
-      {VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--input", "300x200", "--out", (dir / "m").string()});
+  const auto input = run_command({VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--input", "300x200",
+                                  "--out", (dir / "m").string()});
   EXPECT_EQ(input.exit_code, 2);
   EXPECT_NE(input.err.find("multiples of 32"), std::string::npos) << input.err;
 }
@@ -93,9 +93,9 @@ TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
 // same seed, and together more than one door style and handle kind.
 TEST(LayoutVariants, WritesLayoutsTheGeneratorMakesDeterministically) {
   const fs::path dir = scratch("variants");
-  const auto written = run_command({VSL_LAYOUT_VARIANTS, "--per-layout", "6", "--seed", "3",
-                                    "--out", (dir / "a").string(), "-q",
-                                    "config/layouts/kitchen.yaml"});
+  const auto written =
+      run_command({VSL_LAYOUT_VARIANTS, "--per-layout", "6", "--seed", "3", "--out",
+                   (dir / "a").string(), "-q", "config/layouts/kitchen.yaml"});
   ASSERT_EQ(written.exit_code, 0) << written.err;
   const auto again = run_command({VSL_LAYOUT_VARIANTS, "--per-layout", "6", "--seed", "3", "--out",
                                   (dir / "b").string(), "-q", "config/layouts/kitchen.yaml"});
@@ -119,8 +119,8 @@ TEST(LayoutVariants, WritesLayoutsTheGeneratorMakesDeterministically) {
   }
   EXPECT_GE(styles.size(), 10u) << styles;  // at least two of slab, shaker, glass, framed
   EXPECT_GE(kinds.size(), 10u) << kinds;    // at least two of bar, knob, cup_pull, rail
-  const auto bad = run_command(
-      {VSL_LAYOUT_VARIANTS, "--out", (dir / "c").string(), "no/such/layout.yaml"});
+  const auto bad =
+      run_command({VSL_LAYOUT_VARIANTS, "--out", (dir / "c").string(), "no/such/layout.yaml"});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("no/such/layout.yaml"), std::string::npos) << bad.err;
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;

@@ -10,10 +10,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
-#include <optional>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 

@@ -317,10 +317,9 @@ TEST(Kitchen, UnseenLooksAreGoodLocalizationWorlds) {
 
 // A lamp shines along its primitive's -z: every light of every shipped kitchen shines down.
 TEST(Kitchen, ShippedLightsShineDown) {
-  for (const std::string name :
-       {"kitchen", "kitchen_galley", "kitchen_l", "kitchen_tuning_corner",
-        "kitchen_tuning_parallel", "kitchen_white_rails", "kitchen_oak_knobs",
-        "kitchen_navy_brass", "kitchen_sage_cups"}) {
+  for (const std::string name : {"kitchen", "kitchen_galley", "kitchen_l", "kitchen_tuning_corner",
+                                 "kitchen_tuning_parallel", "kitchen_white_rails",
+                                 "kitchen_oak_knobs", "kitchen_navy_brass", "kitchen_sage_cups"}) {
     const world::WorldModel world = world::load_world("config/worlds/" + name + ".yaml");
     int lights = 0;
     for (const auto& o : world.objects) {
