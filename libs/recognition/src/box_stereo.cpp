@@ -51,7 +51,13 @@ std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
       }
       const double width_ratio = std::abs(std::log(left[l].width_px() / right[r].width_px()));
       const double height_ratio = std::abs(std::log(left[l].height_px() / right[r].height_px()));
-      if (width_ratio > max_log_ratio || height_ratio > max_log_ratio) continue;
+      const bool widths_agree =
+          width_ratio <= max_log_ratio ||
+          std::abs(left[l].width_px() - right[r].width_px()) <= options.size_tolerance_px;
+      const bool heights_agree =
+          height_ratio <= max_log_ratio ||
+          std::abs(left[l].height_px() - right[r].height_px()) <= options.size_tolerance_px;
+      if (!widths_agree || !heights_agree) continue;
       const Eigen::Vector2d right_centre = ideal_centre(right[r], right_intrinsics);
       const double height = std::min(left[l].height_px(), right[r].height_px());
       const double epipolar_px = epipolar.distance_px(left_centre, right_centre);

@@ -28,7 +28,8 @@ struct BoxPair {
 // Pairs boxes of one class across the images, one to one: a right box is admissible for a left
 // box when its centre lies within max_epipolar_distance_px + epipolar_box_fraction * height of
 // the left centre's epipolar line, the centres triangulate to a depth in the disparity range, and
-// the widths and heights differ by at most max_size_ratio. Admissible pairs are taken greedily,
+// the widths and heights differ by at most max_size_ratio or by at most size_tolerance_px
+// pixels. Admissible pairs are taken greedily,
 // the lowest cost first: epipolar distance over box height plus the two log size ratios. Boxes
 // within border_margin_px of the border take no part. `appearance(l, r)`, when given, is the
 // normalized cross-correlation (-1 .. 1) of the two boxes' surroundings at the pair's shift, and

@@ -30,6 +30,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
                        "min_depth_m",
                        "max_depth_m",
                        "max_size_ratio",
+                       "size_tolerance_px",
                        "border_margin_px",
                        "snap_band_fraction",
                        "snap_min_band_px",
@@ -58,6 +59,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
         .fail("min_depth_m must be below max_depth_m");
   }
   number("max_size_ratio", out.max_size_ratio, 1.0, 100.0);
+  number("size_tolerance_px", out.size_tolerance_px, 0.0, 100.0);
   number("border_margin_px", out.border_margin_px, 0.0, 1000.0);
   number("snap_band_fraction", out.snap_band_fraction, 0.0, 0.5);
   number("snap_min_band_px", out.snap_min_band_px, 0.0, 100.0);

@@ -118,5 +118,29 @@ TEST(PairBoxes, RefusesOffTheLineTooFarTooDifferentAndCutBoxes) {
   EXPECT_EQ(pairs_of(box(0, 0, 100, 100, 300), box(0, 0, 100, 80, 300)), 0u);  // at the border
 }
 
+// A small box's sides jitter by a few pixels from image to image: within size_tolerance_px the
+// sizes agree whatever their ratio, beyond it the ratio decides.
+TEST(PairBoxes, SizesAgreeWithinAToleranceInPixelsOrARatio) {
+  const ParallelRig rig;
+  BoxStereoOptions options;
+  const auto pairs_of = [&](const BoxDetection& l, const BoxDetection& r) {
+    return detail::pair_boxes({l}, {r}, rig.intrinsics, rig.intrinsics, rig.epipolar,
+                              rig.triangulator, options)
+        .size();
+  };
+  // A handle 40 x 6 px at 2 m; in the right image 40 x 11 px (ratio 1.83, 5 px more).
+  const BoxDetection handle = box(1, 300, 200, 340, 206);
+  const BoxDetection taller = box(1, 275, 198, 315, 209);
+  options.size_tolerance_px = 0.0;
+  EXPECT_EQ(pairs_of(handle, taller), 0u);
+  options.size_tolerance_px = 5.0;
+  EXPECT_EQ(pairs_of(handle, taller), 1u);
+  options.size_tolerance_px = 4.0;
+  EXPECT_EQ(pairs_of(handle, taller), 0u);
+  // A door twice as wide differs by 100 px: no tolerance of a few pixels pairs it.
+  options.size_tolerance_px = 6.0;
+  EXPECT_EQ(pairs_of(box(0, 100, 100, 200, 300), box(0, 75, 100, 275, 300)), 0u);
+}
+
 }  // namespace
 }  // namespace vsl::recognition

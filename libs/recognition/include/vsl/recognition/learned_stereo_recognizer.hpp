@@ -31,12 +31,15 @@ namespace vsl::recognition {
 struct BoxStereoOptions {
   // A right box's centre may lie this far from the left box centre's epipolar line, pixels,
   // plus this fraction of the box's height (a box's centre is only as good as its sides).
-  double max_epipolar_distance_px = 4.0;
+  double max_epipolar_distance_px = 8.0;
   double epipolar_box_fraction = 0.1;
   double min_depth_m = 0.3;  // disparity range, as depths along the left optical axis
   double max_depth_m = 6.0;
-  // Larger over smaller of the two boxes' widths, and of their heights.
+  // Larger over smaller of the two boxes' widths, and of their heights; or, whatever the
+  // ratio, a difference of at most size_tolerance_px: a box side is good to a few pixels at any
+  // size, so on a handle 8 px high a ratio alone would refuse the detector's usual jitter.
   double max_size_ratio = 1.6;
+  double size_tolerance_px = 15.0;
   // Boxes nearer than this to the image border are cut by it: their centre is not the object's,
   // and they are not used.
   double border_margin_px = 8.0;
