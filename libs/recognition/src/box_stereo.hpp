@@ -29,12 +29,12 @@ struct BoxPair {
 // box when its centre lies within max_epipolar_distance_px + epipolar_box_fraction * height of
 // the left centre's epipolar line, the centres triangulate to a depth in the disparity range, and
 // the widths and heights differ by at most max_size_ratio or by at most size_tolerance_px
-// pixels. Admissible pairs are taken greedily,
-// the lowest cost first: epipolar distance over box height plus the two log size ratios. Boxes
-// within border_margin_px of the border take no part. `appearance(l, r)`, when given, is the
-// normalized cross-correlation (-1 .. 1) of the two boxes' surroundings at the pair's shift, and
-// adds (1 - it) to the cost: a row of identical handles at one height lies along the epipolar
-// line, and only what is around each (a door's edge, the next handle) tells them apart.
+// pixels. Admissible pairs are taken greedily, the lowest cost first: epipolar distance over box
+// height plus the two log size ratios. Boxes within border_margin_px of the border take no part.
+// `appearance(l, r)`, when given, is the normalized cross-correlation (-1 .. 1) of the two boxes'
+// surroundings at the pair's shift, and adds (1 - it) to the cost: a row of identical handles at
+// one height lies along the epipolar line, and only what is around each (a door's edge, the next
+// handle) tells them apart.
 std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
                                 const std::vector<BoxDetection>& right,
                                 const head::CameraIntrinsics& left_intrinsics,

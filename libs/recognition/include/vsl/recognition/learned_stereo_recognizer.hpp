@@ -36,8 +36,9 @@ struct BoxStereoOptions {
   double min_depth_m = 0.3;  // disparity range, as depths along the left optical axis
   double max_depth_m = 6.0;
   // Larger over smaller of the two boxes' widths, and of their heights; or, whatever the
-  // ratio, a difference of at most size_tolerance_px: a box side is good to a few pixels at any
-  // size, so on a handle 8 px high a ratio alone would refuse the detector's usual jitter.
+  // ratio, a difference of at most size_tolerance_px: the detector's box sides jitter by
+  // several pixels from image to image at any size, so on a handle 8 px high a ratio alone
+  // refuses the usual jitter (one pair in three on the selection worlds).
   double max_size_ratio = 1.6;
   double size_tolerance_px = 15.0;
   // Boxes nearer than this to the image border are cut by it: their centre is not the object's,
