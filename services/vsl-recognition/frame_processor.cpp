@@ -1,7 +1,9 @@
 #include "frame_processor.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
+#include <cmath>
 #include <exception>
 #include <stdexcept>
 #include <variant>
@@ -37,8 +39,10 @@ bool decode(runtime::Bytes bytes, vsl::stereo_frame_t& frame) {
 }  // namespace
 
 FrameProcessor::FrameProcessor(const recognition::StereoRecognizer& recognizer,
-                               bool draw_debug_image)
-    : recognizer_(recognizer), draw_debug_image_(draw_debug_image) {}
+                               bool draw_debug_image, std::optional<double> max_joint_speed_rad_s)
+    : recognizer_(recognizer),
+      draw_debug_image_(draw_debug_image),
+      max_joint_speed_rad_s_(max_joint_speed_rad_s) {}
 
 FrameOutcome FrameProcessor::process(runtime::Bytes bytes, std::int64_t now_utime) const {
   const Clock::time_point start = Clock::now();
@@ -58,6 +62,17 @@ FrameOutcome FrameProcessor::process(runtime::Bytes bytes, std::int64_t now_utim
     return out;
   }
   const StereoInput& stereo = std::get<StereoInput>(input);
+  if (max_joint_speed_rad_s_) {
+    const std::vector<double>& velocities = stereo.joints_at_capture.velocities_rad_s;
+    const auto fastest =
+        std::max_element(velocities.begin(), velocities.end(),
+                         [](double a, double b) { return std::abs(a) < std::abs(b); });
+    if (fastest != velocities.end() && std::abs(*fastest) > *max_joint_speed_rad_s_) {
+      out.kind = FrameOutcome::Kind::kMoving;
+      out.total_ms = ms_since(start);
+      return out;
+    }
+  }
   try {
     const recognition::FrameResult result =
         recognizer_.recognize(stereo.left_bgr, stereo.right_bgr, stereo.joints_at_capture);

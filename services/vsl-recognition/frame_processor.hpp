@@ -21,6 +21,7 @@ struct FrameOutcome {
     kUndecodable,  // the bytes are not a stereo_frame_t: a decode error of the bus
     kInvalid,      // decoded, but recognition cannot use it: `problem` says why
     kFailed,       // the recognizer threw something other than std::invalid_argument
+    kMoving,       // captured while a joint turned faster than the limit: not recognized
   };
   Kind kind = Kind::kRecognized;
   std::string problem;
@@ -38,8 +39,10 @@ struct FrameOutcome {
 
 class FrameProcessor {
  public:
-  // `recognizer` must outlive the processor.
-  FrameProcessor(const recognition::StereoRecognizer& recognizer, bool draw_debug_image);
+  // `recognizer` must outlive the processor. `max_joint_speed_rad_s`: frames captured while a
+  // head joint turned faster are not recognized (RecognitionConfig); none: every frame is.
+  FrameProcessor(const recognition::StereoRecognizer& recognizer, bool draw_debug_image,
+                 std::optional<double> max_joint_speed_rad_s = std::nullopt);
 
   // Never throws for bad input: every failure is an outcome. Const and thread-safe.
   // `now_utime`: the percept list's utime (its publication).
@@ -48,6 +51,7 @@ class FrameProcessor {
  private:
   const recognition::StereoRecognizer& recognizer_;
   bool draw_debug_image_;
+  std::optional<double> max_joint_speed_rad_s_;
 };
 
 }  // namespace vsl::recognition_daemon

@@ -36,7 +36,8 @@ RecognitionConfig read_recognition_config(const Node& root, const runtime::Chann
   const Node section = root.at("recognition");
   section.expect_map();
   section.expect_keys({"head", "calibration", "recognizer", "detector", "box_stereo", "models",
-                       "segmentation", "stereo", "debug_image", "status_period_s"});
+                       "segmentation", "stereo", "debug_image", "max_joint_speed_rad_s",
+                       "status_period_s"});
   RecognitionConfig out;
   out.head_path = path_relative_to_file(section.at("head"));
   if (const auto calibration = section.find("calibration")) {
@@ -85,6 +86,9 @@ RecognitionConfig read_recognition_config(const Node& root, const runtime::Chann
       (channel ? *channel : *debug)
           .fail("channel '" + out.debug_channel + "' is already used for " + std::string(key));
     }
+  }
+  if (const auto speed = section.find("max_joint_speed_rad_s")) {
+    out.max_joint_speed_rad_s = speed->as_double_in(0.0, 100.0);
   }
   if (const auto period = section.find("status_period_s")) {
     out.status_period_s = period->as_double_in(0.1, 3600.0);

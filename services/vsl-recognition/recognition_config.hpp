@@ -38,6 +38,14 @@ struct RecognitionConfig {
   // and 0.9 MB on the bus per frame.
   bool debug_image = false;
   std::string debug_channel = kDefaultDebugChannel;
+  // Frames captured while a head joint turned faster than this (its velocity in the frame's
+  // head state, rad/s) are not recognized and nothing is published for them: over the exposure
+  // the image smears along the turn, which is across the boxes' sides and along the epipolar
+  // lines, so a detector trained on still frames misplaces what it finds there, and stereo
+  // pairs the smeared boxes at wrong disparities. Unpublished, such a frame is not counted by
+  // fusion among the frames that should have seen an object (T_s of Eq. 4). Absent: every frame
+  // is recognized.
+  std::optional<double> max_joint_speed_rad_s;
   // Period of the status line in the log and in the heartbeat's state, seconds.
   double status_period_s = 10.0;
 };

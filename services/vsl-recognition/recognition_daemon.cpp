@@ -12,7 +12,8 @@ RecognitionDaemon::RecognitionDaemon(runtime::Daemon& daemon, RecognitionSetup s
     : daemon_(daemon),
       setup_(std::move(setup)),
       processing_(processing),
-      processor_(*setup_.recognizer, setup_.config.debug_image),
+      processor_(*setup_.recognizer, setup_.config.debug_image,
+                 setup_.config.max_joint_speed_rad_s),
       worker_([this](runtime::Bytes bytes, std::int64_t) {
         // The wall clock (the worker's mode) may be read from any thread.
         finished_.push(processor_.process(bytes, daemon_.now_utime()));
@@ -70,6 +71,11 @@ void RecognitionDaemon::handle(FrameOutcome& outcome) {
       ++stats_.invalid;
       daemon_.log().warn(channel, ": skipped frame ", outcome.frame_id, ": ", outcome.problem, " (",
                          stats_.invalid, " invalid so far)");
+      return;
+    case FrameOutcome::Kind::kMoving:
+      ++stats_.moving;
+      daemon_.log().debug(channel, ": frame ", outcome.frame_id,
+                          " taken while the head turned: not recognized");
       return;
     case FrameOutcome::Kind::kFailed:
       // A bug, not bad input: the runtime's rule for a failing handler (log, exit code 1).

@@ -35,6 +35,7 @@ std::string RecognitionStats::summary() const {
   }
   return std::to_string(frames_in) + " frames in, " + std::to_string(processed) + " processed, " +
          std::to_string(dropped) + " dropped, " + std::to_string(invalid) + " invalid, " +
+         (moving > 0 ? std::to_string(moving) + " taken moving, " : std::string()) +
          std::to_string(percepts) + " percepts, " + times;
 }
 

@@ -16,6 +16,7 @@ struct RecognitionStats {
   std::int64_t processed = 0;
   std::int64_t dropped = 0;
   std::int64_t invalid = 0;
+  std::int64_t moving = 0;  // taken while the head turned faster than the limit: not recognized
   std::int64_t percepts = 0;
   // Since the last status line (start_period()).
   std::int64_t period_processed = 0;
@@ -31,7 +32,8 @@ struct RecognitionStats {
 
   // "120 frames in, 100 processed, 20 dropped, 0 invalid, 340 percepts, 14.2 ms/frame (max 20.1:
   // segmentation 9.0, classification 1.2, stereo 0.3)"; the times are the period's, "no frame
-  // processed" when there was none.
+  // processed" when there was none. "N taken moving, " follows "invalid, " when the joint speed
+  // limit left frames unrecognized.
   std::string summary() const;
 };
 

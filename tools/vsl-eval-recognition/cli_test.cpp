@@ -77,11 +77,12 @@ TEST(VslEvalRecognition, SeveralWorldsTogetherAndTheLearnedRecognizersDump) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("vsl_eval_learned_" + std::to_string(::getpid())) / "new";
   std::filesystem::remove_all(dir.parent_path());
-  const auto result = run_command(
-      {VSL_EVAL_RECOGNITION_BIN, "--world",
-       "config/worlds/kitchen.yaml,config/worlds/kitchen_galley.yaml", "--views", "2", "--config",
-       "config/recognition_learned.yaml", "--realism", "full", "--dump", dir.string()},
-      300.0);
+  const auto result =
+      run_command({VSL_EVAL_RECOGNITION_BIN, "--world",
+                   "config/worlds/kitchen.yaml,config/worlds/kitchen_galley.yaml", "--views", "2",
+                   "--config", "config/recognition_learned.yaml", "--realism", "full",
+                   "--target-distance", "6", "--dump", dir.string()},
+                  300.0);
   ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
   for (const char* text : {"4 stereo frames", "what became of the left detections",
                            "noise model of the true positives", "median d2"}) {
@@ -99,6 +100,7 @@ TEST(VslEvalRecognition, BadInputExitsTwoWithOneLine) {
       {},
       {"--world", "config/worlds/kitchen.yaml", "--views", "-3"},
       {"--world", "config/worlds/kitchen.yaml", "--max-distance", "0"},
+      {"--world", "config/worlds/kitchen.yaml", "--target-distance", "0.5"},
       {"--world", "no/such/world.yaml"},
       {"--world", "config/worlds/kitchen.yaml", "--models", "no/such/model.yaml"},
       {"--world", "config/worlds/kitchen.yaml", "--config", "config/localizer.yaml"},

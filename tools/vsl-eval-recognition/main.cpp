@@ -73,6 +73,8 @@ options:
                         clutter: vsl::worldgen::randomize_looks, seeded by --seed), as the
                         detector's training renders; default: the world's own look
   --max-distance M      ground truth: objects within M metres of the left camera (default 4)
+  --target-distance M   each view looks at an object up to M metres from the robot (default 4;
+                        a scan from the middle of a room sees its far wall at 5-6 m)
   --match-distance M    a percept within M metres of its object is a true positive (default 0.1)
   --dump DIR            write DIR/frame_NNNN.png per frame: the left image with the blobs
                         (grey), detections (yellow; learned handles orange, with why a
@@ -124,6 +126,7 @@ struct Options {
   std::string config_file = "config/recognition.yaml";
   std::vector<std::string> model_files;
   double max_distance_m = 4.0;
+  double max_target_distance_m = 4.0;
   double match_distance_m = 0.10;
   std::string json_file;
   std::string dump_dir;
@@ -171,6 +174,11 @@ Options parse(int argc, char** argv) {
       }
     } else if (arg == "--max-distance") {
       options.max_distance_m = parse_positive(value_of(i, arg), arg);
+    } else if (arg == "--target-distance") {
+      options.max_target_distance_m = parse_positive(value_of(i, arg), arg);
+      if (options.max_target_distance_m < 1.0 || options.max_target_distance_m > 20.0) {
+        usage_error("--target-distance wants metres in 1..20");
+      }
     } else if (arg == "--match-distance") {
       options.match_distance_m = parse_positive(value_of(i, arg), arg);
     } else if (arg == "--looks") {
@@ -521,7 +529,9 @@ bool evaluate_world(const std::string& world_file, std::uint64_t first, std::uin
   const world::WorldModel world = world::load_world(world_file);
   render::RenderOptions camera = tools::simulated_camera_options();
   camera.realism.level = options.realism;
-  const tools::ViewSampler sampler(world, run.head);
+  tools::ViewSamplingOptions sampling;
+  sampling.max_target_distance_m = options.max_target_distance_m;
+  const tools::ViewSampler sampler(world, run.head, sampling);
   recognition::GroundTruthOptions truth_options;
   truth_options.max_distance_m = options.max_distance_m;
   // Views in blocks of one look each: the world's own, or with --looks K a randomized one per K

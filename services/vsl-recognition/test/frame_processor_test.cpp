@@ -99,6 +99,25 @@ TEST_F(RecognitionFrameProcessor, AFrameWithNothingInItStillGivesAList) {
   EXPECT_EQ(outcome.percepts.num_percepts, 0);
 }
 
+TEST_F(RecognitionFrameProcessor, FramesTakenWhileTheHeadTurnsFastAreNotRecognized) {
+  const FrameProcessor limited(recognizer_, false, 0.1);
+  vsl::stereo_frame_t turning = testing::stereo_frame(recognizer_.head(), left_, right_, 5);
+  turning.head.joint_velocities_rad_s[0] = -0.8;
+  const FrameOutcome moving = limited.process(encode(turning), 42);
+  EXPECT_EQ(moving.kind, FrameOutcome::Kind::kMoving);
+  EXPECT_EQ(moving.frame_id, 5);
+  EXPECT_EQ(moving.percepts.num_percepts, 0);
+
+  vsl::stereo_frame_t settling = turning;
+  settling.head.joint_velocities_rad_s[0] = 0.05;
+  const FrameOutcome slow = limited.process(encode(settling), 42);
+  EXPECT_EQ(slow.kind, FrameOutcome::Kind::kRecognized);
+  EXPECT_GT(slow.percepts.num_percepts, 0);
+
+  const FrameProcessor unlimited(recognizer_, false);
+  EXPECT_EQ(unlimited.process(encode(turning), 42).kind, FrameOutcome::Kind::kRecognized);
+}
+
 TEST_F(RecognitionFrameProcessor, BadBytesAndBadFramesAreOutcomesNotExceptions) {
   const FrameProcessor processor(recognizer_, true);
   const std::vector<std::uint8_t> garbled(64, 0xff);

@@ -48,7 +48,18 @@ TEST(RecognitionConfigFile, DefaultsAreOffAndRecognitionDebug) {
   EXPECT_FALSE(config.debug_image);
   EXPECT_EQ(config.debug_channel, "RECOGNITION_DEBUG");
   EXPECT_FALSE(config.calibration_path.has_value());
+  EXPECT_FALSE(config.max_joint_speed_rad_s.has_value());
   EXPECT_EQ(config.status_period_s, 10.0);
+}
+
+TEST(RecognitionConfigFile, AJointSpeedLimitIsReadAndChecked) {
+  EXPECT_EQ(read("recognition: {head: h.yaml, models: [m.yaml], max_joint_speed_rad_s: 0.1}\n")
+                .max_joint_speed_rad_s,
+            0.1);
+  EXPECT_EQ(error_of("recognition:\n  head: h.yaml\n  models: [m.yaml]\n"
+                     "  max_joint_speed_rad_s: -1\n"),
+            "dir/recognition.yaml:4: recognition.max_joint_speed_rad_s: must be in [0, 100], "
+            "got -1");
 }
 
 TEST(RecognitionConfigFile, BadValuesAreOneLineWithFileLineAndKey) {
