@@ -5,12 +5,8 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/triangulation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_correlation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/single_view.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/border_cut.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/side_cut_door.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/corner_cut_door.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/occluder_cut_door.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/partly_seen_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/occluded_corner_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/twin_handle_split.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/cut_bar.cpp
@@ -25,6 +21,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/cut_bar_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/partly_seen_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/occluder_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_cut_door_test.cpp

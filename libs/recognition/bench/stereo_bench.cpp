@@ -5,16 +5,16 @@
 // wide), twice per door pair (the correlator's set-up included: it keeps the sweeps it made).
 // BM_SingleViewDoor: a door outline placed from its own image alone
 // (single_view.hpp), both sides swept over the whole depth range. BM_BorderCutPair: one pair of
-// door outlines cut by the top border matched and placed (border_cut.hpp), both sides correlated,
-// the correlators' set-up included. BM_OneSideDoor: the same door, its outline in the left image
-// only, placed from its right side swept over the whole depth range and the level plane of its
-// bottom edge, its left side found in the right image where that plane puts it (one_side_door.hpp),
-// the correlators' set-up included. BM_OccludedCornerDoor: a pair of door outlines whose
-// bottom-left corner an occluder hides in both images, placed from the other three corners
-// (occluded_corner_door.hpp). BM_OccluderCutDoor: a pair of door outlines whose lower part the
-// table's top hides in both images, placed from their level top edge (occluder_cut_door.hpp).
-// BM_SideCutDoor: a pair of door outlines cut by the left border,
-// placed from their whole side and the typical width (side_cut_door.hpp). BM_TwinHandleSplit: 20
+// door outlines cut by the top border matched and placed (partly_seen_door.hpp), both sides
+// correlated, the correlators' set-up included. BM_OneSideDoor: the same door, its outline in the
+// left image only, placed from its right side swept over the whole depth range and the level plane
+// of its bottom edge, its left side found in the right image where that plane puts it
+// (one_side_door.hpp), the correlators' set-up included. BM_OccludedCornerDoor: a pair of door
+// outlines whose bottom-left corner an occluder hides in both images, placed from the other three
+// corners (partly_seen_door.hpp, a hidden corner). BM_OccluderCutDoor: a pair of door outlines
+// whose lower part the table's top hides in both images, placed with their lower corners on the
+// sides (partly_seen_door.hpp). BM_SideCutDoor: a pair of door outlines cut by the left border,
+// placed from their whole side and the typical width (partly_seen_door.hpp). BM_TwinHandleSplit: 20
 // door outlines each split between a double door's two handles (twin_handle_split.hpp).
 // BM_CutBarPair: a handle cut by the top border in both images, placed from its own end and the
 // class's typical length (cut_bar.hpp). No main
@@ -263,7 +263,8 @@ void BM_OccluderCutDoor(benchmark::State& state) {
   const Eigen::Isometry3d left_T_right = calibration.left_T_right();
   // A base unit's door 0.5 m x 0.716 m turned 0.5 rad, 2.2 m ahead; the table's top in front of
   // it hides all of it from 0.40 m (left side) and 0.45 m (right side) below its top edge in
-  // both images: too short for a door, placed from its top edge (occluder_cut_door.hpp).
+  // both images: too short for a door, placed with its lower corners on the sides
+  // (partly_seen_door.hpp).
   const Eigen::Vector3d down(0.0, 1.0, 0.0);
   const Eigen::Vector3d across(std::cos(0.5), 0.0, std::sin(0.5));
   const Eigen::Vector3d centre(0.1, 0.5, 2.2);

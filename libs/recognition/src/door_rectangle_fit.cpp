@@ -13,14 +13,6 @@
 namespace vsl::recognition::detail {
 namespace {
 
-// The horizontal basis (e1, e2) of the model (door_rectangle_fit.hpp).
-std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontal_basis(const Eigen::Vector3d& up) {
-  Eigen::Vector3d e1 = Eigen::Vector3d::UnitX() - up.x() * up;
-  if (e1.norm() < 1e-6) e1 = Eigen::Vector3d::UnitZ() - up.z() * up;
-  e1.normalize();
-  return {e1, up.cross(e1)};
-}
-
 // Where on the square's border sample j of side s lies, (alpha, beta). Sides: 0 alpha = -1,
 // 1 alpha = +1, 2 beta = +1 (top), 3 beta = -1 (bottom); samples avoid the corners, where the
 // other side's edge crosses the search line.
@@ -36,19 +28,6 @@ Eigen::Vector2d side_sample(int side, int j, int samples) {
     default:
       return {t, -1.0};
   }
-}
-
-// X(alpha, beta) of the model, in the left camera frame, for any scalar type (Ceres' Jets).
-template <class T>
-Eigen::Matrix<T, 3, 1> model_point(const T* theta, const Eigen::Vector3d& e1,
-                                   const Eigen::Vector3d& e2, const Eigen::Vector3d& up,
-                                   const Eigen::Vector2d& alpha_beta) {
-  using std::cos;
-  using std::sin;
-  const Eigen::Matrix<T, 3, 1> a = cos(theta[3]) * e1.cast<T>() + sin(theta[3]) * e2.cast<T>();
-  const Eigen::Matrix<T, 3, 1> c(theta[0], theta[1], theta[2]);
-  return c + a * (T(0.5 * alpha_beta.x()) * theta[4]) +
-         up.cast<T>() * (T(0.5 * alpha_beta.y()) * theta[5]);
 }
 
 template <class T>
@@ -260,6 +239,15 @@ SearchResult search_edges(const double* theta, const Eigen::Vector3d& e1, const 
   return result;
 }
 
+}  // namespace
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontal_basis(const Eigen::Vector3d& up) {
+  Eigen::Vector3d e1 = Eigen::Vector3d::UnitX() - up.x() * up;
+  if (e1.norm() < 1e-6) e1 = Eigen::Vector3d::UnitZ() - up.z() * up;
+  e1.normalize();
+  return {e1, up.cross(e1)};
+}
+
 // (J^T J)^-1 of the solved problem at its parameters (loss applied), or nullopt when singular.
 std::optional<Eigen::Matrix<double, 6, 6>> inverse_information(ceres::Problem& problem) {
   ceres::CRSMatrix jacobian;
@@ -282,8 +270,6 @@ std::optional<Eigen::Matrix<double, 6, 6>> inverse_information(ceres::Problem& p
   }
   return ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
 }
-
-}  // namespace
 
 DoorRectangle rectangle_from_ends(const std::array<Eigen::Vector3d, 4>& ends,
                                   const Eigen::Vector3d& up_in_left) {

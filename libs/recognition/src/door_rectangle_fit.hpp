@@ -37,12 +37,17 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cv {
 class Mat;
+}
+namespace ceres {
+class Problem;
 }
 
 namespace vsl::recognition::detail {
@@ -101,6 +106,27 @@ DoorRectangle rectangle_from_ends(const std::array<Eigen::Vector3d, 4>& ends,
 // The four corners (top first side, bottom first side, top second, bottom second) of a rectangle.
 std::array<Eigen::Vector3d, 4> rectangle_corners(const DoorRectangle& rectangle,
                                                  const Eigen::Vector3d& up_in_left);
+
+// The horizontal basis (e1, e2) of the model for the unit vertical `up`.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontal_basis(const Eigen::Vector3d& up);
+
+// X(alpha, beta) of the model, in the left camera frame, for any scalar type (Ceres' Jets):
+// theta = (c, psi, w, h).
+template <class T>
+Eigen::Matrix<T, 3, 1> model_point(const T* theta, const Eigen::Vector3d& e1,
+                                   const Eigen::Vector3d& e2, const Eigen::Vector3d& up,
+                                   const Eigen::Vector2d& alpha_beta) {
+  using std::cos;
+  using std::sin;
+  const Eigen::Matrix<T, 3, 1> a = cos(theta[3]) * e1.cast<T>() + sin(theta[3]) * e2.cast<T>();
+  const Eigen::Matrix<T, 3, 1> c(theta[0], theta[1], theta[2]);
+  return c + a * (T(0.5 * alpha_beta.x()) * theta[4]) +
+         up.cast<T>() * (T(0.5 * alpha_beta.y()) * theta[5]);
+}
+
+// (J^T J)^-1 of a solved problem over the six parameters theta (loss applied), or nullopt when
+// singular (a direction of theta no residual measures). Also partly_seen_door.cpp.
+std::optional<Eigen::Matrix<double, 6, 6>> inverse_information(ceres::Problem& problem);
 
 // Fits the rectangle from `initial`; nullopt when the problem is degenerate (the rectangle behind
 // a camera, no edge found). `up_in_left`: the world's vertical in the left camera frame.

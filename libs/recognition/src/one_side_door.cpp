@@ -38,7 +38,7 @@
 #include <utility>
 #include <vector>
 
-#include "border_cut.hpp"
+#include "partly_seen_door.hpp"
 #include "triangulation.hpp"
 
 namespace vsl::recognition::detail {
@@ -227,8 +227,8 @@ std::optional<OneSideDoor> place_one_side_door(
   if (!(up_in_own_camera.norm() > 0.0) || door.typical_heights_m.empty()) return std::nullopt;
   const bool swapped = swept == SweptSide::kOuter;
   if (swapped && cut != BorderCut::kNone) return std::nullopt;
-  // An outline cut by the left or right border shows one vertical side only (side_cut_door.hpp
-  // and corner_cut_door.hpp place those).
+  // An outline cut by the left or right border shows one vertical side only (pairs of them are
+  // doors seen in part: partly_seen_door.hpp).
   if (cut != BorderCut::kNone && cut != BorderCut::kTop && cut != BorderCut::kBottom) {
     return std::nullopt;
   }

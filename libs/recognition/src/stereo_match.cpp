@@ -1,7 +1,8 @@
 // Left-right cross match and triangulation (paper §2.1): the gates of each pair, in order. The
-// door outlines' own gates and centre: door_pair.hpp; doors cut by the image border:
-// border_cut.hpp; doors from one image: single_view.hpp. Geometry: epipolar.hpp (gate) and
-// triangulation.hpp (point and covariance); the one-to-one assignment: stereo_assignment.hpp.
+// door outlines' own gates and centre: door_pair.hpp; doors seen in part (cut by the image
+// border, or by an occluder): partly_seen_door.hpp; doors from one image: single_view.hpp.
+// Geometry: epipolar.hpp (gate) and triangulation.hpp (point and covariance); the one-to-one
+// assignment: stereo_assignment.hpp.
 #include "vsl/recognition/stereo_match.hpp"
 
 #include <algorithm>
@@ -12,18 +13,14 @@
 #include <optional>
 
 #include "bars_on_outline.hpp"
-#include "border_cut.hpp"
 #include "convex_polygon.hpp"
-#include "corner_cut_door.hpp"
 #include "cut_bar.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
-#include "occluded_corner_door.hpp"
-#include "occluder_cut_door.hpp"
 #include "one_side_door.hpp"
 #include "pair_refusal.hpp"
+#include "partly_seen_door.hpp"
 #include "side_correlation.hpp"
-#include "side_cut_door.hpp"
 #include "single_view.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
@@ -109,12 +106,50 @@ const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& op
   return nullptr;
 }
 
-// A door cut by the left border in the right image only (the right camera sees less beyond its
-// left border), or by the right border in the left image only, pairs with a whole outline in the
-// other image (side_cut_door.hpp).
-bool is_side_cut_by_one(BorderCut left, BorderCut right) {
-  return (left == BorderCut::kNone && right == BorderCut::kLeft) ||
-         (left == BorderCut::kRight && right == BorderCut::kNone);
+// The cut an image shows of a door that the other image shows cut by `cut`, less its left or
+// right border: the right camera sees less beyond its left border, the left camera less beyond
+// its right one.
+BorderCut without_left(BorderCut cut) {
+  switch (cut) {
+    case BorderCut::kLeft:
+      return BorderCut::kNone;
+    case BorderCut::kTopLeft:
+      return BorderCut::kTop;
+    case BorderCut::kBottomLeft:
+      return BorderCut::kBottom;
+    default:
+      return cut;
+  }
+}
+BorderCut without_right(BorderCut cut) {
+  switch (cut) {
+    case BorderCut::kRight:
+      return BorderCut::kNone;
+    case BorderCut::kTopRight:
+      return BorderCut::kTop;
+    case BorderCut::kBottomRight:
+      return BorderCut::kBottom;
+    default:
+      return cut;
+  }
+}
+
+// Whether two cut views can be one door: cut alike, or the right image cut by its left border
+// where the left image is not, or the left image by its right border where the right is not.
+bool cuts_of_one_door(BorderCut left, BorderCut right) {
+  const bool at_image_corner = left == BorderCut::kTopLeft || left == BorderCut::kTopRight ||
+                               left == BorderCut::kBottomLeft || left == BorderCut::kBottomRight;
+  return (left == right && !at_image_corner) ||
+         (right != without_left(right) && without_left(right) == left) ||
+         (left != without_right(left) && without_right(left) == right);
+}
+
+// Whole outlines refused in a way an occluder hiding the door's lower part explains: too short,
+// an edge sloping, or one side shorter than the other.
+bool may_be_occluder_cut(const StereoPairTrace& refusal) {
+  return (refusal.refused_by == StereoGate::kHeight && refusal.value < refusal.limit) ||
+         refusal.refused_by == StereoGate::kEdgeSlope ||
+         refusal.refused_by == StereoGate::kSideHeights;
 }
 
 // Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
@@ -148,6 +183,8 @@ struct StereoViews {
         up(up_in),
         epipolar(left_intrinsics, right_intrinsics, left_T_right),
         triangulator(left_intrinsics, right_intrinsics, left_T_right),
+        rig{detail::camera_matrix(left_intrinsics), detail::camera_matrix(right_intrinsics),
+            left_T_right.inverse(), up.norm() > 0.0 ? up.normalized() : up},
         log_max_area_ratio(std::log(std::max(options.max_area_ratio, 1.0 + 1e-9))) {
     std::vector<Eigen::Vector2d> left_raw, right_raw;
     for (const Detection& d : left) left_raw.push_back(d.reference_px);
@@ -195,12 +232,6 @@ struct StereoViews {
   detail::DoorOutlines outlines(int l, int r) const {
     return {corner_array(left_corners[l]), corner_array(right_corners[r])};
   }
-  detail::BorderCutView left_view(int l) const {
-    return {left[l], corner_array(left_corners[l]), left_ideal[l]};
-  }
-  detail::BorderCutView right_view(int r) const {
-    return {right[r], corner_array(right_corners[r]), right_ideal[r]};
-  }
   const detail::SideCorrelator* forward() const { return correlator ? &*correlator : nullptr; }
   const detail::SideCorrelator* reverse() const {
     return reverse_correlator ? &*reverse_correlator : nullptr;
@@ -215,6 +246,7 @@ struct StereoViews {
   const Eigen::Vector3d& up;  // in the left camera frame; zero when unknown
   const detail::EpipolarGeometry epipolar;
   const detail::Triangulator triangulator;
+  const detail::DoorRig rig;  // the ideal pinholes and `up` for door fits
   const double log_max_area_ratio;
   std::vector<detail::IdealPixel> left_ideal, right_ideal;
   std::optional<detail::SideCorrelator> correlator, reverse_correlator;
@@ -297,12 +329,12 @@ class PairJudge {
                     : o_.max_epipolar_distance_px;
     if (!(epipolar_px_ <= max_epipolar_px_)) {
       detail::refuse(trace_, StereoGate::kEpipolar, epipolar_px_, max_epipolar_px_);
-      if (!place_occluded_corner()) return false;
+      return false;
     }
-    if (rectangles_ && !occluded_) {
+    if (rectangles_) {
       sides_ = detail::judge_door_sides(v_.outlines(l_, r_), v_.triangulator, v_.up,
                                         v_.correlator.has_value(), o_, trace_);
-      if (!sides_ && !place_occluded_corner()) return false;
+      if (!sides_) return false;
     }
     return true;
   }
@@ -328,25 +360,6 @@ class PairJudge {
       detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
       return false;
     }
-    return true;
-  }
-
-  // Two door outlines that the position or the side gate refuses may show a door with one corner
-  // hidden by an occluder in both images (occluded_corner_door.hpp).
-  bool place_occluded_corner() {
-    const StereoMatchOptions::BorderCutDoor* door = border_cut_door(o_, dl_.type);
-    if (!rectangles_ || !door || !door->occluded_corner || !(v_.up.norm() > 0.0) ||
-        v_.judge_bars(dl_, dr_, o_.single_view_max_bars_inside).gate != StereoGate::kNone) {
-      return false;
-    }
-    occluded_ = detail::place_occluded_corner_door(
-        v_.outlines(l_, r_), v_.triangulator, v_.up.normalized(), o_.max_side_tilt_rad,
-        o_.max_epipolar_distance_px, *door, height_range(o_, dl_.type));
-    if (!occluded_) return false;
-    trace_.refused_by = StereoGate::kNone;
-    trace_.value = trace_.limit = 0.0;
-    trace_.occluded_corner = true;
-    epipolar_px_ = occluded_->residual_px;
     return true;
   }
 
@@ -383,8 +396,8 @@ class PairJudge {
 
   // The 3D point: triangulated from the reference points, with the covariance the pixel noise
   // gives it; a bar's from its span (the middle), a bar cut by one border in both images from its
-  // own end (cut_bar.hpp); two door outlines' from their vertical sides (door_pair.hpp,
-  // occluded_corner_door.hpp), with the reference points' covariance.
+  // own end (cut_bar.hpp); two door outlines' from their vertical sides (door_pair.hpp), with
+  // the reference points' covariance.
   bool place_point() {
     offset_m_ = reference_depth_offset(o_, dl_.type);
     triangulation_ = v_.triangulator.triangulate(v_.left_ideal[l_], v_.right_ideal[r_],
@@ -404,10 +417,7 @@ class PairJudge {
       set_point(placed->centre_m);
       triangulation_->left_camera_covariance_m2 += placed->length_covariance_m2;
     }
-    if (occluded_) {
-      set_point(occluded_->centre_m);
-      rectangle_ = true;
-    } else if (rectangles_) {
+    if (rectangles_) {
       const detail::DoorCentre door = detail::door_centre(
           v_.outlines(l_, r_), *sides_, v_.triangulator, v_.forward(), v_.reverse(),
           v_.left_T_right, v_.up, o_, class_max_width_m(o_, dl_.type), trace_);
@@ -464,7 +474,6 @@ class PairJudge {
   const CutBarViews* cut_bar_;
   const bool rectangles_;
   std::optional<detail::Triangulator::BarSpan> bar_;
-  std::optional<detail::OccludedCornerDoor> occluded_;
   std::optional<detail::DoorSides> sides_;
   std::optional<detail::Triangulation> triangulation_;
   Eigen::Vector3d point_ = Eigen::Vector3d::Zero();  // the visible surface, left camera frame
@@ -474,36 +483,200 @@ class PairJudge {
   bool rectangle_ = false;
 };
 
-// A pair of door views one or both of which the image border cuts, or two whole views whose
-// judgement suggests an occluder hides the door's lower part: the judge for its case
-// (border_cut.hpp, side_cut_door.hpp, corner_cut_door.hpp, occluder_cut_door.hpp), or none.
-// `trace` ends as the judge that decided left it.
+// Each vertical side of the left outline placed where the images around it correlate, searched
+// around the outlines' depth (side_correlation.hpp): one image's outline often lacks a stile that
+// the other keeps. The right view's corners on that side become where the right camera sees the
+// side so placed. A side that does not correlate, or not unambiguously (a run of equal doors
+// repeats every edge: BorderCutDoor::min_peak_margin), keeps the right outline's.
+void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDoor& door,
+                     std::array<detail::DoorOutlineView, 2>& views) {
+  using detail::CornerState;
+  const auto on_side = [](CornerState s) {
+    return s == CornerState::kSeen || s == CornerState::kOnSide;
+  };
+  const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
+  std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
+  const double width_px = 0.5 * ((left[1] - left[0]).norm() + (left[2] - left[3]).norm());
+  const double search_px = detail::kSideSearchPx + detail::kSideSearchWidthFraction * width_px;
+  for (const auto& [top, bottom] : {std::array<std::size_t, 2>{0, 3}, {1, 2}}) {
+    if (!on_side(views[0].states[top]) || !on_side(views[0].states[bottom]) ||
+        !on_side(views[1].states[top]) || !on_side(views[1].states[bottom])) {
+      continue;
+    }
+    const auto top_point = v.triangulator.point(left[top], right[top]);
+    const auto bottom_point = v.triangulator.point(left[bottom], right[bottom]);
+    if (!top_point || !bottom_point) continue;
+    const double initial_m = 0.5 * (v.correlator->horizontal_distance(*top_point) +
+                                    v.correlator->horizontal_distance(*bottom_point));
+    const auto depth = v.correlator->correlate(left[top], left[bottom], initial_m, search_px,
+                                               v.options.min_depth_m, v.options.max_depth_m);
+    if (!depth || depth->correlation < v.options.min_side_correlation ||
+        depth->second_correlation > depth->correlation - door.min_peak_margin) {
+      continue;
+    }
+    const auto top_at = v.correlator->point_at(left[top], depth->horizontal_distance_m);
+    const auto bottom_at = v.correlator->point_at(left[bottom], depth->horizontal_distance_m);
+    if (!top_at || !bottom_at) continue;
+    const auto top_px = v.triangulator.project_right(*top_at);
+    const auto bottom_px = v.triangulator.project_right(*bottom_at);
+    if (!top_px || !bottom_px) continue;
+    right[top] = *top_px;
+    right[bottom] = *bottom_px;
+    views[1].sigma_px[top] = views[1].sigma_px[bottom] = 0.0;
+  }
+}
+
+// The pair (l, r) judged as one door seen in part (partly_seen_door.hpp), each view's corners in
+// `states`.
+std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, int r,
+                                                   const std::array<detail::CornerState, 4>& left,
+                                                   const std::array<detail::CornerState, 4>& right,
+                                                   StereoPairTrace& trace, bool occluder = false) {
+  const StereoMatchOptions& options = v.options;
+  const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, v.left[l].type);
+  std::array<detail::DoorOutlineView, 2> views{
+      detail::DoorOutlineView{corner_array(v.left_corners[l]), left, v.left[l].height_px},
+      detail::DoorOutlineView{corner_array(v.right_corners[r]), right, v.right[r].height_px}};
+  // An outline corner beyond the image is where the outline's sides would meet, not a corner
+  // the image shows: the door's own corner there is unseen.
+  for (int k = 0; k < 2; ++k) {
+    const Detection& d = k == 0 ? v.left[l] : v.right[r];
+    const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
+    for (std::size_t j = 0; j < 4; ++j) {
+      const Eigen::Vector2d& px = d.corners_px[j];
+      const bool beyond = px.x() < -0.5 - 1e-6 || px.y() < -0.5 - 1e-6 ||
+                          px.x() > camera.width_px - 0.5 + 1e-6 ||
+                          px.y() > camera.height_px - 0.5 + 1e-6;
+      if (beyond && views[static_cast<std::size_t>(k)].states[j] == detail::CornerState::kSeen) {
+        views[static_cast<std::size_t>(k)].states[j] = detail::CornerState::kHidden;
+      }
+    }
+  }
+  // Corners within the position gate of two door outlines: a strip that segmentation adds along a
+  // side in one image moves its corners by a few per cent of the height. An occluder's
+  // explanation of a refused pair is held to the pixel gate alone: its outlines already disagree
+  // with a whole door, and the explanation must fit where they do not.
+  detail::PartlySeenLimits limits;
+  limits.tolerance_px = options.max_epipolar_distance_px;
+  if (!occluder) {
+    limits.tolerance_px =
+        std::max(limits.tolerance_px,
+                 kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
+  } else {
+    limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
+  }
+  // Before the sides' correlation, what the outlines alone refuse: a corner both images show
+  // off the other's epipolar line (two doors at different heights).
+  for (std::size_t j = 0; j < 4; ++j) {
+    if (views[0].states[j] != detail::CornerState::kSeen ||
+        views[1].states[j] != detail::CornerState::kSeen) {
+      continue;
+    }
+    const double off_px =
+        v.epipolar.distance_px(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
+    if (off_px > limits.tolerance_px) {
+      return detail::refuse(trace, StereoGate::kEpipolar, off_px, limits.tolerance_px);
+    }
+  }
+  // Uncorrelated, a right outline's side is where segmentation put it: within the position
+  // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
+  // measured to that noise: correlate_sides).
+  views[1].sigma_px.fill(options.max_epipolar_distance_px);
+  if (v.correlator) correlate_sides(v, door, views);
+  return detail::judge_partly_seen_door(l, r, views, v.rig, v.triangulator, options, door,
+                                        reference_depth_offset(options, v.left[l].type), limits,
+                                        trace);
+}
+
+// Two whole door outlines that the cross match refused, explained by an occluder in front of the
+// door (a chair, the table's top): the lower corners on the sides (the occluder hides the door's
+// lower part: the pair was too short, an edge sloped or one side was shorter), or one corner
+// hidden in both images (its contour is where the position or side gate found no door edge).
+// Exactly one hidden corner must explain the pair: with two, the outlines do not say which one
+// the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
+// unless the pair is so placed.
+std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
+                                                     const StereoMatchOptions::BorderCutDoor& door,
+                                                     StereoPairTrace& trace) {
+  using detail::CornerState;
+  StereoPairTrace retry = trace;
+  retry.refused_by = StereoGate::kNone;
+  retry.value = retry.limit = 0.0;
+  if (door.occluder_cut && may_be_occluder_cut(trace)) {
+    constexpr std::array<CornerState, 4> kLowerOnSides{CornerState::kSeen, CornerState::kSeen,
+                                                       CornerState::kOnSide, CornerState::kOnSide};
+    StereoPairTrace t = retry;
+    if (auto c = judge_partly_seen(v, l, r, kLowerOnSides, kLowerOnSides, t, true)) {
+      trace = t;
+      return c;
+    }
+  }
+  const bool position_or_side =
+      trace.refused_by == StereoGate::kEpipolar || trace.refused_by == StereoGate::kSideTilt;
+  if (!door.occluded_corner || !position_or_side ||
+      v.judge_bars(v.left[l], v.right[r], v.options.single_view_max_bars_inside).gate !=
+          StereoGate::kNone) {
+    return std::nullopt;
+  }
+  // Two views of one door are about as large (the appearance gate), and the three corners an
+  // occluder leaves lie on each other's epipolar lines: pairs of two doors are not fitted.
+  const Detection& dl = v.left[l];
+  const Detection& dr = v.right[r];
+  if (dl.area_px > 0.0 && dr.area_px > 0.0 &&
+      std::abs(std::log(dl.area_px / dr.area_px)) > v.log_max_area_ratio) {
+    return std::nullopt;
+  }
+  const double tolerance_px =
+      std::max(v.options.max_epipolar_distance_px,
+               kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px));
+  std::array<bool, 4> on_epipolar{};
+  for (std::size_t j = 0; j < 4; ++j) {
+    on_epipolar[j] = v.epipolar.distance_px(v.left_corners[l][j].ideal_px,
+                                            v.right_corners[r][j].ideal_px) <= tolerance_px;
+  }
+  std::optional<detail::Candidate> found;
+  StereoPairTrace found_trace;
+  int explaining = 0;
+  for (std::size_t hidden = 0; hidden < 4; ++hidden) {
+    bool others_on_epipolar = true;
+    for (std::size_t j = 0; j < 4; ++j) others_on_epipolar &= j == hidden || on_epipolar[j];
+    if (!others_on_epipolar) continue;
+    std::array<CornerState, 4> states{CornerState::kSeen, CornerState::kSeen, CornerState::kSeen,
+                                      CornerState::kSeen};
+    states[hidden] = CornerState::kHidden;
+    StereoPairTrace t = retry;
+    auto placed = judge_partly_seen(v, l, r, states, states, t, true);
+    if (!placed) continue;
+    ++explaining;
+    found = std::move(placed);
+    found_trace = t;
+    found_trace.occluded_corner = true;
+  }
+  if (explaining != 1) return std::nullopt;
+  trace = found_trace;
+  return found;
+}
+
+// A pair of door views: two whole ones through the cross match's gates (PairJudge); one or
+// both cut by the image border as one door seen in part (partly_seen_door.hpp), its corners'
+// states from the cuts. A whole pair refused that an occluder may explain is added to
+// `occluded` (explain_unpaired_by_occluder).
 std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, int r,
-                                                 StereoPairTrace& trace) {
+                                                 StereoPairTrace& trace,
+                                                 std::vector<StereoPairTrace>& occluded) {
   const StereoMatchOptions& options = v.options;
   const Detection& dl = v.left[l];
   const Detection& dr = v.right[r];
   const bool cut = dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone;
-  const double offset_m = reference_depth_offset(options, dl.type);
   if (!cut) {
     std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, nullptr).judge();
-    // Too short for a door, an edge sloping or one side shorter than the other: perhaps an
-    // occluder hides the door's lower part in both images (occluder_cut_door.hpp). The first
-    // refusal stays in the trace unless the pair is so placed.
     const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
-    if (!c && door && door->occluder_cut && detail::may_be_occluder_cut(trace) &&
-        v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0) {
-      StereoPairTrace retry;
-      retry.left_detection = l;
-      retry.right_detection = r;
-      c = detail::judge_occluder_cut_pair(l, r, v.left_view(l), v.right_view(r), v.epipolar,
-                                          v.triangulator, v.forward(), v.up.normalized(), options,
-                                          *door, offset_m, retry);
-      if (c) trace = retry;
+    if (!c && door && v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 &&
+        v.up.norm() > 0.0) {
+      occluded.push_back(trace);
     }
     return c;
   }
-  const StereoMatchOptions::BorderCutDoor* cut_height = border_cut_door(options, dl.type);
   if (const detail::BarVerdict bars = v.judge_bars(
           dl, dr, options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
       bars.gate != StereoGate::kNone) {
@@ -512,47 +685,27 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
     // centimetres past the reveal, may lie inside the outline, and the bound is the pairs' (the
     // single views' 1 lost 16 true door percepts of the tuning set's cut doors and kept no false
     // one out).
-    trace.refused_by = bars.gate;
-    trace.value = bars.value;
-    trace.limit = bars.limit;
-    return std::nullopt;
+    return detail::refuse(trace, bars.gate, bars.value, bars.limit);
   }
-  if (detail::is_corner_cut_pair(dl.border_cut, dr.border_cut)) {
-    return detail::judge_corner_cut_pair(l, r, v.left_view(l), v.right_view(r), v.epipolar,
-                                         v.triangulator, v.up.normalized(), options, *cut_height,
-                                         offset_m, trace);
-  }
-  const bool side_cut = is_side_cut_by_one(dl.border_cut, dr.border_cut) ||
-                        dl.border_cut == BorderCut::kLeft || dl.border_cut == BorderCut::kRight;
-  if (side_cut) {
-    return detail::judge_side_cut_pair(
-        l, r, v.left_view(l), v.right_view(r), v.epipolar, v.triangulator, v.forward(),
-        v.up.normalized(), options, *cut_height, height_range(options, dl.type), offset_m, trace);
-  }
-  return detail::judge_border_cut_pair(l, r, v.left_view(l), v.right_view(r), v.epipolar,
-                                       v.triangulator, v.forward(), v.up.normalized(), options,
-                                       *cut_height, offset_m, trace);
+  return judge_partly_seen(v, l, r, detail::corner_states_of(dl.border_cut),
+                           detail::corner_states_of(dr.border_cut), trace);
 }
 
 // Whether a pair of door views is judged at all: whole views always; cut ones when their class
-// has a typical height (border_cut), both have four corners, the up direction is known, and
-// the cuts are along the same border (not at the same corner), or one of the mixed cases of
-// side_cut_door.hpp and corner_cut_door.hpp.
+// has a size prior (border_cut), both have four corners, the up direction is known, and the cuts
+// can be of one door (cuts_of_one_door).
 bool door_pair_is_judged(const StereoViews& v, int l, int r) {
   const BorderCut cl = v.left[l].border_cut, cr = v.right[r].border_cut;
   if (cl == BorderCut::kNone && cr == BorderCut::kNone) return true;
-  const BorderCut same = cl == cr ? cl : BorderCut::kNone;
-  const bool judged = same == BorderCut::kTop || same == BorderCut::kBottom ||
-                      same == BorderCut::kLeft || same == BorderCut::kRight ||
-                      is_side_cut_by_one(cl, cr) || detail::is_corner_cut_pair(cl, cr);
-  return judged && border_cut_door(v.options, v.left[l].type) != nullptr &&
+  return cuts_of_one_door(cl, cr) && border_cut_door(v.options, v.left[l].type) != nullptr &&
          v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
 }
 
 // The cross match (paper §2.1): every pair of same-type detections judged; the candidates, and
-// every judged pair's trace when `traces`.
+// every judged pair's trace when `traces`; the refused whole door pairs in `occluded`.
 std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
-                                               std::vector<StereoPairTrace>* traces) {
+                                               std::vector<StereoPairTrace>* traces,
+                                               std::vector<StereoPairTrace>& occluded) {
   std::vector<detail::Candidate> candidates;
   for (int l = 0; l < static_cast<int>(v.left.size()); ++l) {
     for (int r = 0; r < static_cast<int>(v.right.size()); ++r) {
@@ -574,10 +727,8 @@ std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
         if (!cut_bar.bar || (both && dl.border_cut != dr.border_cut)) continue;
         c = PairJudge(v, l, r, trace, &cut_bar).judge();
       } else {
-        // A door cut by the image border pairs only with one cut along the same border, judged
-        // by border_cut.hpp's gates when its class has a typical height.
         if (!door_pair_is_judged(v, l, r)) continue;
-        c = judge_door_pair(v, l, r, trace);
+        c = judge_door_pair(v, l, r, trace, occluded);
       }
       if (c) candidates.push_back(std::move(*c));
       if (traces) traces->push_back(trace);
@@ -619,6 +770,46 @@ std::vector<detail::Candidate> assign_pairs(const StereoViews& v,
   }
   detail::uncross(assigned, candidates, v.left, v.left_ideal, v.right_ideal);
   return assigned;
+}
+
+// The detections no pair took, paired by an occluder's explanation (explain_by_occluder) of
+// their pair's refusal in `occluded`, one to one; the pairs so placed are added to `assigned`
+// and their traces in `traces` (when given) replaced. After the cross match's assignment, so that
+// an occluder explains only what the whole views could not pair.
+void explain_unpaired_by_occluder(const StereoViews& v, std::vector<StereoPairTrace> occluded,
+                                  std::vector<detail::Candidate>& assigned,
+                                  std::vector<StereoPairTrace>* traces) {
+  std::vector<char> left_taken(v.left.size(), 0), right_taken(v.right.size(), 0);
+  for (const detail::Candidate& c : assigned) {
+    left_taken[static_cast<std::size_t>(c.left)] = 1;
+    right_taken[static_cast<std::size_t>(c.right)] = 1;
+  }
+  std::vector<detail::Candidate> explained;
+  std::vector<StereoPairTrace> explained_traces;
+  for (StereoPairTrace& t : occluded) {
+    if (left_taken[static_cast<std::size_t>(t.left_detection)] ||
+        right_taken[static_cast<std::size_t>(t.right_detection)]) {
+      continue;
+    }
+    const StereoMatchOptions::BorderCutDoor& door =
+        *border_cut_door(v.options, v.left[t.left_detection].type);
+    if (auto c = explain_by_occluder(v, t.left_detection, t.right_detection, door, t)) {
+      explained.push_back(std::move(*c));
+      explained_traces.push_back(t);
+    }
+  }
+  for (detail::Candidate& c : detail::assign(explained, static_cast<int>(v.left.size()),
+                                             static_cast<int>(v.right.size()))) {
+    if (traces) {
+      for (StereoPairTrace& t : *traces) {
+        if (t.left_detection != c.left || t.right_detection != c.right) continue;
+        for (const StereoPairTrace& e : explained_traces) {
+          if (e.left_detection == c.left && e.right_detection == c.right) t = e;
+        }
+      }
+    }
+    assigned.push_back(std::move(c));
+  }
 }
 
 StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {
@@ -741,10 +932,12 @@ std::vector<StereoPercept> match_and_triangulate(
   if (left.empty() && right.empty()) return {};
   const StereoViews views(left, right, left_intrinsics, right_intrinsics, left_T_right, options,
                           up_in_left_camera, images);
-  std::vector<StereoPairTrace> traces;
+  std::vector<StereoPairTrace> traces, occluded;
   const std::vector<detail::Candidate> candidates =
-      judge_all_pairs(views, pair_trace ? &traces : nullptr);
-  const std::vector<detail::Candidate> assigned = assign_pairs(views, candidates);
+      judge_all_pairs(views, pair_trace ? &traces : nullptr, occluded);
+  std::vector<detail::Candidate> assigned = assign_pairs(views, candidates);
+  explain_unpaired_by_occluder(views, std::move(occluded), assigned,
+                               pair_trace ? &traces : nullptr);
   std::vector<StereoPercept> out;
   for (const detail::Candidate& c : assigned) {
     out.push_back(to_percept(views, c));

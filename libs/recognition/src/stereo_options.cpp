@@ -64,17 +64,9 @@ StereoMatchOptions::BorderCutDoor border_cut_door_from(const config::Node& class
   }
   if (const auto v = door.find("occluded_corner")) {
     parsed.occluded_corner = v->as_bool();
-    // The rectangle's sides are judged by the whole outlines' side gate.
-    if (parsed.occluded_corner && !(out.max_side_tilt_rad > 0.0)) {
-      v->fail("needs max_side_tilt_rad > 0 (the good side's test)");
-    }
   }
   if (const auto v = door.find("occluder_cut")) {
     parsed.occluder_cut = v->as_bool();
-    // The sides are judged by the cut pairs' side gate.
-    if (parsed.occluder_cut && !(parsed.max_side_tilt_rad > 0.0)) {
-      v->fail("needs max_side_tilt_rad > 0 (the sides' test)");
-    }
   }
   if (const auto v = door.find("occluder_cut_min_level_visible_m")) {
     parsed.occluder_cut_min_level_visible_m = v->as_double_in(0.0, 100.0);
@@ -85,13 +77,14 @@ StereoMatchOptions::BorderCutDoor border_cut_door_from(const config::Node& class
                                          parsed.typical_width_m > parsed.max_width_m)) {
       v->fail("must be 0 (off) or within min_width_m .. max_width_m");
     }
-    // The whole side is judged by the whole outlines' side and height gates.
-    if (parsed.typical_width_m > 0.0 && !(out.max_side_tilt_rad > 0.0)) {
-      v->fail("needs max_side_tilt_rad > 0 (the whole side's test)");
-    }
   }
   if (const auto v = door.find("width_sigma_m")) {
     parsed.width_sigma_m = v->as_double_in(0.0, 100.0);
+  }
+  // The width prior of a door whose side neither image shows (partly_seen_door.hpp) needs a
+  // spread.
+  if (parsed.typical_width_m > 0.0 && !(parsed.width_sigma_m > 0.0)) {
+    door.at("typical_width_m").fail("needs width_sigma_m > 0 (the width prior's spread)");
   }
   return parsed;
 }

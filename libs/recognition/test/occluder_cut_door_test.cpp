@@ -1,6 +1,6 @@
 // Doors whose lower part an occluder hides in both images (BorderCutDoor::occluder_cut,
-// occluder_cut_door.hpp): a whole pair too short for a door, its top edge level, placed from
-// that edge and the typical height; and what keeps drawer fronts out.
+// partly_seen_door.hpp): a whole pair too short for a door, its top edge level, placed with
+// its lower corners on the sides and the typical height; and what keeps drawer fronts out.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -849,36 +849,24 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_NE(cut_door_error("merged_side: true")
                 .find("s.yaml:2: stereo.border_cut.door.merged_side: needs from_one_side"),
             std::string::npos);
-  // The good side of a door with an occluded corner is judged by the whole outlines' side gate.
-  EXPECT_NE(cut_door_error("occluded_corner: true")
-                .find("s.yaml:2: stereo.border_cut.door.occluded_corner: needs "
-                      "max_side_tilt_rad > 0"),
-            std::string::npos);
-  EXPECT_EQ(cut_door_error("occluded_corner: true", "  max_side_tilt_rad: 0.03\n"), "");
-  // A door cut by an occluder is judged by the cut doors' side gate.
-  EXPECT_NE(cut_door_error("occluder_cut: true")
-                .find("s.yaml:2: stereo.border_cut.door.occluder_cut: needs "
-                      "max_side_tilt_rad > 0"),
-            std::string::npos)
-      << cut_door_error("occluder_cut: true");
-  EXPECT_EQ(cut_door_error("occluder_cut: true, max_side_tilt_rad: 0.09"), "");
+  // Occluded corners and occluder cuts are states of the one fit: switches without other needs.
+  EXPECT_EQ(cut_door_error("occluded_corner: true"), "");
+  EXPECT_EQ(cut_door_error("occluder_cut: true"), "");
   EXPECT_NE(cut_door_error("occluder_cut_min_level_visible_m: -1")
                 .find("stereo.border_cut.door.occluder_cut_min_level_visible_m"),
             std::string::npos);
-  // Doors cut by the left or right border: a door's width, the whole side judged by
-  // the whole outlines' side gate.
-  EXPECT_NE(cut_door_error("typical_width_m: 0.2", "  max_side_tilt_rad: 0.03\n")
-                .find("s.yaml:3: stereo.border_cut.door.typical_width_m: must be 0 (off) or within "
+  // Doors whose left or right side neither image shows: a door's width, with a spread.
+  EXPECT_NE(cut_door_error("typical_width_m: 0.2, width_sigma_m: 0.1")
+                .find("s.yaml:2: stereo.border_cut.door.typical_width_m: must be 0 (off) or within "
                       "min_width_m .. max_width_m"),
             std::string::npos)
-      << cut_door_error("typical_width_m: 0.2", "  max_side_tilt_rad: 0.03\n");
+      << cut_door_error("typical_width_m: 0.2, width_sigma_m: 0.1");
   EXPECT_NE(cut_door_error("typical_width_m: 0.4")
-                .find("s.yaml:2: stereo.border_cut.door.typical_width_m: needs max_side_tilt_rad"),
-            std::string::npos);
+                .find("s.yaml:2: stereo.border_cut.door.typical_width_m: needs width_sigma_m > 0"),
+            std::string::npos)
+      << cut_door_error("typical_width_m: 0.4");
   EXPECT_EQ(cut_door_error("typical_width_m: 0", ""), "");
-  EXPECT_EQ(
-      cut_door_error("typical_width_m: 0.4, width_sigma_m: 0.1", "  max_side_tilt_rad: 0.03\n"),
-      "");
+  EXPECT_EQ(cut_door_error("typical_width_m: 0.4, width_sigma_m: 0.1"), "");
   EXPECT_NE(cut_door_error("width_sigma_m: -1").find("stereo.border_cut.door.width_sigma_m"),
             std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),

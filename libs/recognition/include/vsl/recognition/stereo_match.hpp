@@ -154,43 +154,32 @@ struct StereoMatchOptions {
   // door's two stand 3-6 cm either side of the reveal (twin_handle_split.hpp).
   // Needs bar_types; 0 turns it off.
   double max_twin_handle_gap = 0.0;
-  // Optional, per class: doors cut by the top or bottom image border along a whole side
-  // (Detection::border_cut), placed from the edge they show whole and the class's typical
-  // heights. Two detections cut along the same border make a pair when the ends of that edge lie
-  // on each other's epipolar lines (max_epipolar_distance_px, or kRectangleEpipolarFraction of the
-  // visible height), the edge is about as long in both images, the vertical sides are vertical in
-  // 3D (this struct's max_side_tilt_rad, in place of the whole outlines'), the edge is level
-  // (max_edge_slope_rad), min_width_m .. max_width_m long (a strip of a door that segmentation
-  // split off is narrower) and seen from within about 78 deg of head-on, the sides' visible
-  // length is at least half the least typical height (a door half in view; a drawer front of the
-  // same colour is shorter) and at most 1.05 times the tallest, at most
-  // pair_max_bars_inside bar detections (handles) lie inside each outline, and the centre
-  // is within the depth range. With min_side_correlation, each side is placed where the images
-  // around it correlate, as for whole outlines, when that peak is clear (min_peak_margin). The
-  // centre is the edge's middle moved half the door's height (typical_heights_m) along the up
-  // direction, towards the border that cuts it. Its covariance is the pixel noise's at the edge's
-  // middle plus (height_sigma_m / 2)^2 along the up direction: the spread of the class's
-  // heights. Detections cut along a border, of classes not listed here, are not paired. Needs the
-  // up direction.
+  // Optional, per class: the class's sizes, the prior of a door seen in part (partly_seen_door.hpp,
+  // docs/recognition.md). A pair of outlines that the image border cuts (Detection::border_cut),
+  // or two whole outlines refused in a way an occluder explains (occluded_corner, occluder_cut),
+  // is placed by one fit of a vertical rectangle to the corners each image shows, a size
+  // neither image gives taken from these. Each vertical side is placed where the images around it
+  // correlate (min_side_correlation), when that peak is clear (min_peak_margin). Detections cut
+  // along a border, of classes not listed here, are not paired. Needs the up direction.
   struct BorderCutDoor {
     std::string type;
-    // The class's common door heights, ascending, metres. A cut door is as tall as the least of
-    // them that its visible height does not exceed by more than 5%: a door seen taller than a
-    // wall cupboard's is a tall unit's. At least half of the least must be in view.
+    // The class's common door heights, ascending, metres. A door whose top or bottom neither
+    // image shows is as tall as the least of them that its visible height does not exceed by more
+    // than 5%, with the spread height_sigma_m; at least half of the least must be in view.
     std::vector<double> typical_heights_m;
     double height_sigma_m = 0.0;  // the spread of the class's heights about them, metres
-    double min_width_m = 0.0;     // of the whole edge
-    // Also the class's greatest width for whole outlines: a pair whose sides' correlated depths
-    // make the door wider keeps the outlines' depths, and a single view is refused: a side's
-    // correlation peak on another door's edge can move it a metre, and no door is that wide.
+    // A door's width, metres: a fitted door narrower than min_width_m is a strip of a door that
+    // segmentation split off, one wider than max_width_m two doors (also the single views' bound:
+    // a side's correlation peak on another door's edge can move it a metre).
+    double min_width_m = 0.0;
     double max_width_m = 0.0;
-    // The sides' tilt from vertical (as StereoMatchOptions::max_side_tilt_rad; 0 turns the test
-    // off). A cut outline's sides are shorter and end at the border rather than at a corner, so
-    // they are fitted less well than a whole outline's.
+    // With from_one_side: the greatest tilt from vertical (radians) of a cut outline's sides, as
+    // StereoMatchOptions::max_side_tilt_rad is of whole ones (a cut outline's sides are shorter and
+    // end at the border, so they are fitted less well). 0 turns the test off.
     double max_side_tilt_rad = 0.0;
     // With min_side_correlation: a side is placed by correlation only when its best score beats
     // its second-best distinct peak by this (SideCorrelator::SideDepth::second_correlation; a run
-    // of equal doors repeats every edge), else it keeps the outlines' depth. 0: any best peak.
+    // of equal doors repeats every edge), else it keeps the outlines'. 0: any best peak.
     double min_peak_margin = 0.0;
     // With min_single_view_correlation: a door outline that neither a pair nor a single view
     // placed (whole, or cut by its own image's top or bottom border) is placed from one vertical
@@ -214,48 +203,25 @@ struct StereoMatchOptions {
     // neighbour of its colour, unseen in the other image, where segmentation merged the two).
     // The other tests are from_one_side's.
     bool merged_side = false;
-    // A pair of whole door outlines that the position or the side gate refused, placed from
-    // three corners when an occluder in front of the door (a chair's back, a table top) hides
-    // the fourth in both images (occluded_corner_door.hpp): one vertical side is vertical in 3D
-    // in both images (max_side_tilt_rad above, the whole outlines') and both cameras see its
-    // ends at the same points; of the other side's corners exactly one is where the level plane
-    // of the good side's end at that edge puts it in both images (max_epipolar_distance_px), and
-    // the other lies within the
-    // rectangle so completed; the good side is a door's height (height_range_m), the level edge
-    // min_width_m .. max_width_m long and seen from within about 78 deg of head-on; at most
-    // single_view_max_bars_inside handles inside each outline. The other gates of a pair then
-    // apply; its covariance is a pair's.
+    // A pair of whole door outlines that the position or the side gate refused, placed with one
+    // corner hidden in both images (an occluder in front of the door: a chair's back, a table
+    // top): when exactly one corner so hidden lets the fit meet max_epipolar_distance_px and
+    // that corner's outline point lies inside the fitted door in both images, at least that far
+    // from the door's own corner in one.
     bool occluded_corner = false;
     // A pair of whole door outlines that the height gate finds too short (height_range_m), the
     // level-edge gate (max_edge_slope_rad) or the side-heights gate (max_side_height_mismatch)
-    // refuses, whose top edge is level in 3D (within 0.1
-    // rad), judged as a door cut along its bottom edge as the image border cuts one (the
-    // border_cut gates above: the sides vertical, the top edge level and min_width_m ..
-    // max_width_m long, the visible height at least half the least typical height, the centre
-    // from a typical height): an occluder in front of the door (a chair's seat, the table's top)
-    // hides its lower part in both images, and the outlines end at the occluder's contour
-    // (occluder_cut_door.hpp).
+    // refuses, placed with its lower corners on the door's sides (an occluder in front of the
+    // door, a chair's seat or the table's top, hides its lower part in both images), its height
+    // the class's (typical_heights_m), when the fit meets max_epipolar_distance_px.
     bool occluder_cut = false;
-    // With occluder_cut: a pair whose cut edge is level too (within 0.05 rad, as a table's
-    // edge along the cupboards is) shows at least this much of the door, metres: a drawer front
-    // of the door's colour, both edges level, is at most this tall.
+    // With occluder_cut: a pair whose lower edge is level on the door's face (within 0.05 rad, as
+    // a table's edge along the cupboards is) shows at least this much of the door, metres: a
+    // drawer front of the door's colour, both edges level, is at most this tall.
     double occluder_cut_min_level_visible_m = 0.0;
-    // Doors cut along a whole vertical side by the left or right image border (Detection::
-    // border_cut kLeft, kRight; side_cut_door.hpp), placed from the side they
-    // show whole and this width: two detections cut along the same border pair when that side's
-    // ends lie on each other's epipolar lines, it is about as long in both images, vertical in 3D
-    // (max_side_tilt_rad of whole outlines) and a door's height (height_range_m); the visible
-    // top and bottom edges, where the rays through their ends at the border meet the level
-    // planes of the side's ends in the image that sees more of the door, are parallel,
-    // half typical_width_m .. max_width_m long and seen from within about
-    // 78 deg of head-on; at most single_view_max_bars_inside handles inside each outline. The
-    // door is as wide as the greater of this and its visible width; the centre lies half that
-    // from the side's middle along the edges, its covariance the pixel noise's at the side's
-    // middle plus (width_sigma_m / 2)^2 along the edges. A detection cut by the left border in
-    // the right image only (the right camera sees less beyond its left border), or by the right
-    // border in the left image only, pairs with a whole outline in the other image the same way,
-    // the door then as wide as that outline shows it (no width term in the covariance). Metres;
-    // 0 pairs no such detections.
+    // A door whose left or right side neither image shows (the left or right image border cuts
+    // it) is as wide as this or as its visible width, the greater, with the spread
+    // width_sigma_m; at least half of it must be in view. Metres; 0 pairs no such detections.
     double typical_width_m = 0.0;
     double width_sigma_m = 0.0;  // the spread of the class's widths about it, metres
   };

@@ -1,0 +1,113 @@
+// One model of a door seen in part: a pair of door outlines that the image border or an occluder
+// cuts, or whose corner an occluder hides, placed by one least-squares fit of a vertical
+// rectangle over both images, with the class's sizes as a prior for what neither image shows.
+// Internal to vsl_recognition.
+//
+// Model (as door_rectangle_fit.hpp). In the left camera frame (metres), with u the world's
+// vertical (unit) and the horizontal basis e1 = normalize(x - (x.u) u), e2 = u x e1:
+//   theta = (c, psi, w, h),   a(psi) = cos(psi) e1 + sin(psi) e2,
+//   X_j = c + alpha_j (w / 2) a + beta_j (h / 2) u,
+// corners j clockwise from the top left as the outlines give them: (alpha, beta) = (-1, 1),
+// (1, 1), (1, -1), (-1, -1). Camera k sees X at p_k(X) = dehomogenize(K_k (R_k X + t_k)).
+//
+// Observations. Each image's outline contributes its four corners m_kj (ideal pixels), each in
+// one state:
+//   seen      the door's corner. Left image: r = p_L(X_j) - m (two residuals). Right image: the
+//             distance of m from the line through p_R(X_j) and p_R of the corner below or above
+//             it (one residual): stereo compares the vertical sides' horizontal positions, and
+//             where a side ends only the left image says (a strip that segmentation adds at the
+//             top or bottom in one image does not move the door); both residuals where the left
+//             image does not see that corner.
+//   on side   where a vertical side leaves the outline (the top or bottom image border, or an
+//             occluder's contour across the door): the distance of m from the projected side.
+//   on edge   where the top or bottom edge leaves the outline (the left or right border): the
+//             distance of m from the projected edge.
+//   hidden    nothing (the image's own corner where two borders cut the outline; a corner an
+//             occluder hides).
+// A side of the rectangle is measured when, in either image, a corner on it is seen (a vertical
+// side's in the right image too) or lies on it (on side for the vertical sides, on edge for the
+// top and bottom edges). Each dimension needs one of its two sides measured; an unmeasured one is
+// the class's (StereoMatchOptions::BorderCutDoor):
+//   height   r = (h - h_k) / sigma_h,   h_k the least typical height that the visible height
+//            does not exceed by more than kMaxVisibleOfTypical (at least half the least in view);
+//   width    r = (w - max(w_t, w_v)) / sigma_w,   w_t the typical width, w_v the visible one (at
+//            least half w_t in view).
+// The image residuals are divided by pixel_sigma_px, so all are in units of their sigma; the fit
+// is Gauss-Newton (Ceres, dense QR) from the outlines' triangulated corners, and the centre's
+// covariance the top left block of (J^T J)^-1 at the solution: along an unmeasured dimension it
+// holds the class's spread, (sigma / 2)^2 (the centre moves half of a size's error).
+//
+// Accepted when every image residual is within the caller's tolerance, the outlines' widths
+// agree within max_area_ratio, the door is a door's height (height_range_m) and width
+// (min_width_m .. max_width_m), seen from within about 78 deg of head-on, and within the depth
+// range. The cut, corner, occluder and one-hidden-corner cases are these states, not separate
+// constructions.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <optional>
+
+#include "stereo_assignment.hpp"
+#include "triangulation.hpp"
+#include "vsl/recognition/detection.hpp"
+#include "vsl/recognition/stereo_match.hpp"
+
+namespace vsl::recognition::detail {
+
+// A typical door seen whole up to the border or an occluder measures its height plus the noise
+// of its ends: up to this fraction of the typical height (also one_side_door.cpp).
+inline constexpr double kMaxVisibleOfTypical = 1.05;
+// The least cosine of the angle between the door's normal and the view (about 78 deg): at more
+// grazing angles no door of the evaluations was recognized whole either (also
+// one_side_door.cpp).
+inline constexpr double kMinCosViewing = 0.2;
+
+enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden };
+
+// One image's outline of the door: its corners (ideal pixels, clockwise from the top left) and
+// what each is.
+struct DoorOutlineView {
+  std::array<Eigen::Vector2d, 4> corners_ideal_px;
+  std::array<CornerState, 4> states{CornerState::kSeen, CornerState::kSeen, CornerState::kSeen,
+                                    CornerState::kSeen};
+  double height_px = 0.0;  // the outline's visible height (Detection::height_px)
+  // Each corner's standard deviation, pixels; 0: StereoMatchOptions::pixel_sigma_px.
+  std::array<double, 4> sigma_px{};
+};
+
+// The corner states of an outline that `cut` cuts along the image border: a corner whose row the
+// top or bottom border cuts is where its vertical side leaves the image (on side), one whose
+// column the left or right border cuts where its edge does (on edge), one both cut the image's
+// own corner (hidden).
+std::array<CornerState, 4> corner_states_of(BorderCut cut);
+
+// The two cameras (ideal pinholes) and the world's vertical, left camera frame.
+struct DoorRig {
+  Eigen::Matrix3d left_K = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d right_K = Eigen::Matrix3d::Identity();
+  Eigen::Isometry3d right_T_left = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d up = Eigen::Vector3d::Zero();  // unit
+};
+
+// What a fit must meet beyond the class: every corner within `tolerance_px` of the model (ideal
+// pixels), and an outline whose lower edge is level on the face at least `min_visible_if_level_m`
+// of the door in view (a drawer front is as short; 0: any).
+struct PartlySeenLimits {
+  double tolerance_px = 0.0;
+  double min_visible_if_level_m = 0.0;
+};
+
+// Judges the pair (left detection `l`, right detection `r`) as one door seen in the two views,
+// recording a refusal in `trace`; the candidate with its centre (left camera frame,
+// `reference_offset_m` behind the face along the ray) and covariance otherwise. The caller tests
+// the handles inside.
+std::optional<Candidate> judge_partly_seen_door(
+    int l, int r, const std::array<DoorOutlineView, 2>& views, const DoorRig& rig,
+    const Triangulator& triangulator, const StereoMatchOptions& options,
+    const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
+    const PartlySeenLimits& limits, StereoPairTrace& trace);
+
+}  // namespace vsl::recognition::detail
