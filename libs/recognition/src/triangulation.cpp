@@ -55,22 +55,6 @@ std::optional<Eigen::Vector3d> Triangulator::left_ray_on_level_plane(
   return Eigen::Vector3d(s * ray);
 }
 
-// The right camera's ray X = t + w b (b = R K_r^-1 (u, v, 1), unit) meets the plane
-// u . X = u . P at w = u . (P - t) / (u . b).
-std::optional<Eigen::Vector3d> Triangulator::right_ray_on_level_plane(
-    const Eigen::Vector2d& right_ideal_px, const Eigen::Vector3d& on_plane_m,
-    const Eigen::Vector3d& up) const {
-  if (!(up.norm() > 0.0)) return std::nullopt;
-  const Eigen::Vector3d u = up.normalized();
-  const Eigen::Vector3d ray =
-      (right_k_inverse_in_left_ * right_ideal_px.homogeneous()).normalized();
-  const double ur = u.dot(ray);
-  if (!(std::abs(ur) > kMinRayElevationSin)) return std::nullopt;
-  const double w = u.dot(on_plane_m - right_centre_m_) / ur;
-  if (!(w > 0.0)) return std::nullopt;
-  return Eigen::Vector3d(right_centre_m_ + w * ray);
-}
-
 namespace {
 
 double verticality(const std::array<Eigen::Vector2d, 4>& c, int i, int j) {
@@ -107,16 +91,6 @@ std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
     }
   }
   return tilts;
-}
-
-double Triangulator::max_side_tilt(const std::array<Eigen::Vector2d, 4>& left,
-                                   const std::array<Eigen::Vector2d, 4>& right,
-                                   const Eigen::Vector3d& up) const {
-  double tilt = 0.0;
-  for (const auto& side : side_tilts(left, right, up)) {
-    for (const double t : side) tilt = std::max(tilt, t);
-  }
-  return tilt;
 }
 
 std::optional<std::array<Eigen::Vector3d, 4>> Triangulator::rectangle_ends(

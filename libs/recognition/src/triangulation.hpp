@@ -171,15 +171,6 @@ class Triangulator {
   std::optional<Eigen::Vector3d> left_ray_on_level_plane(const Eigen::Vector2d& left_ideal_px,
                                                          const Eigen::Vector3d& on_plane_m,
                                                          const Eigen::Vector3d& up) const;
-  // The same for the right camera's ray through `right_ideal_px` (the point in the left camera
-  // frame).
-  std::optional<Eigen::Vector3d> right_ray_on_level_plane(const Eigen::Vector2d& right_ideal_px,
-                                                          const Eigen::Vector3d& on_plane_m,
-                                                          const Eigen::Vector3d& up) const;
-
-  double max_side_tilt(const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
-                       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
-                       const Eigen::Vector3d& up_in_left_camera) const;
 
   // The midpoint with its covariance, then moved `reference_depth_offset_m` further along the
   // left viewing ray (the class's reference point lies behind the visible surface).
