@@ -21,7 +21,7 @@
 //     Triangulator::rectangle_centre_from_one_side), and the inner side is a door's height (the
 //     outer corners are at its ends' heights);
 //   - cut outlines: the inner side's visible height h_v is at least half the least typical
-//     height and at most 1.05 times the tallest (border_cut.cpp).
+//     height and at most 1.05 times the tallest (as for pairs: partly_seen_door.hpp).
 // SweptSide::kOuter (BorderCutDoor::merged_side, whole outlines only) swaps the roles: the outer
 // side is swept and the inner one placed on the level planes, and the other image must show the
 // placed side where the planes put it, or no edge at all there: its window's contrast, searched

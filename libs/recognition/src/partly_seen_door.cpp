@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "convex_polygon.hpp"
 #include "door_rectangle_fit.hpp"
 #include "pair_refusal.hpp"
 
@@ -90,18 +91,26 @@ struct CornerResidual {
   template <class T>
   bool operator()(const T* theta, T* residual) const {
     const Eigen::Matrix<T, 3, 1> x = basis.corner(theta, corner);
-    if (!(camera->in_frame(x).z() > T(1e-3))) return false;
-    const Eigen::Matrix<T, 2, 1> p = camera->project(x);
     const Eigen::Matrix<T, 2, 1> m = measured_px.cast<T>();
     if (point) {
+      if (!(camera->in_frame(x).z() > T(1e-3))) return false;
+      const Eigen::Matrix<T, 2, 1> p = camera->project(x);
       residual[0] = (p.x() - m.x()) / T(sigma_px);
       residual[1] = (p.y() - m.y()) / T(sigma_px);
       return true;
     }
-    const Eigen::Matrix<T, 2, 1> d = camera->project(basis.corner(theta, partner)) - p;
-    const T length = d.norm();
+    // The image line of the 3D line through corner j towards `partner`: the homogeneous image of
+    // the corner crossed with the line's vanishing point, l = K (R x + t) x K R (x_p - x). It holds
+    // wherever the corner is, also beyond the image and behind the camera (a near door's unseen
+    // corner); m's distance from it is l . (m, 1) / |l_xy|.
+    const Eigen::Matrix<T, 3, 1> direction = basis.corner(theta, partner) - x;
+    const Eigen::Matrix<T, 3, 1> line =
+        (camera->K.template cast<T>() * camera->in_frame(x))
+            .cross(camera->K.template cast<T>() *
+                   (camera->camera_T_left.linear().template cast<T>() * direction));
+    const T length = line.template head<2>().norm();
     if (!(length > T(1e-9))) return false;
-    residual[0] = ((m.x() - p.x()) * d.y() - (m.y() - p.y()) * d.x()) / (length * T(sigma_px));
+    residual[0] = (line.x() * m.x() + line.y() * m.y() + line.z()) / (length * T(sigma_px));
     return true;
   }
 };
@@ -312,24 +321,6 @@ std::optional<Start> start_of(const std::array<DoorOutlineView, 2>& views,
   return start;
 }
 
-// How far `p` lies outside the convex quadrilateral `q` (corners in order), pixels; 0 inside.
-double distance_outside_px(const std::array<Eigen::Vector2d, 4>& q, const Eigen::Vector2d& p) {
-  const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-    return u.x() * v.y() - u.y() * v.x();
-  };
-  double area = 0.0;
-  for (std::size_t i = 0; i < 4; ++i) area += cross(q[i], q[(i + 1) % 4]);
-  const double orientation = area >= 0.0 ? 1.0 : -1.0;
-  double outside = 0.0;
-  for (std::size_t i = 0; i < 4; ++i) {
-    const Eigen::Vector2d edge = q[(i + 1) % 4] - q[i];
-    const double length = edge.norm();
-    if (length < 1e-9) continue;
-    outside = std::max(outside, -orientation * cross(edge, p - q[i]) / length);
-  }
-  return outside;
-}
-
 // A gate's refusal: which gate, its quantity and its limit (as refuse records them).
 struct Refusal {
   StereoGate gate;
@@ -389,9 +380,9 @@ std::vector<CornerResidual> corner_residuals(const std::array<DoorOutlineView, 2
 }
 
 // Solves for theta, from where it is, with the image residuals and the priors the views need
-// (Gauss-Newton, dense QR); (J^T J)^-1 at the solution, nullopt when the solution is unusable.
-// The width prior's mode is max(w_t, w_v); the height prior's the least typical height the visible
-// one does not exceed by more than kMaxVisibleOfTypical, else the greatest.
+// (Levenberg-Marquardt, dense QR); (J^T J)^-1 at the solution, nullopt when the solution is
+// unusable. The width prior's mode is max(w_t, w_v); the height prior's the least typical height
+// the visible one does not exceed by more than kMaxVisibleOfTypical, else the greatest.
 std::optional<Matrix6d> solve(Theta& theta, const std::vector<CornerResidual>& residuals,
                               const SizePriors& priors, const Start& start,
                               const StereoMatchOptions::BorderCutDoor& door) {
@@ -434,7 +425,9 @@ std::optional<double> worst_residual_px(const std::vector<CornerResidual>& resid
   for (const CornerResidual& c : residuals) {
     double r[2] = {0.0, 0.0};
     if (!c(theta.data(), r)) return std::nullopt;
-    worst_px = std::max(worst_px, std::hypot(r[0], c.point ? r[1] : 0.0) * c.sigma_px);
+    const double px = std::hypot(r[0], c.point ? r[1] : 0.0) * c.sigma_px;
+    if (!std::isfinite(px)) return std::nullopt;
+    worst_px = std::max(worst_px, px);
   }
   return worst_px;
 }
@@ -451,18 +444,26 @@ std::optional<Refusal> hidden_corner_refusal(const std::array<DoorOutlineView, 2
   double hidden_offset_px = 0.0;
   for (std::size_t k = 0; k < 2; ++k) {
     std::array<Eigen::Vector2d, 4> projected;
+    bool in_front = true;
     for (std::size_t j = 0; j < 4; ++j) {
-      projected[j] = cameras[k].project(basis.corner(theta.data(), j));
+      const Eigen::Vector3d x = basis.corner(theta.data(), j);
+      in_front &= cameras[k].in_frame(x).z() > 1e-3;
+      projected[j] = cameras[k].project(x);
     }
+    // A door corner behind the camera projects nowhere near the image: no test of this image.
+    if (!in_front) continue;
     for (std::size_t j = 0; j < 4; ++j) {
       if (views[k].states[j] != CornerState::kHidden) continue;
-      hidden_in_both |= k == 1 && views[0].states[j] == CornerState::kHidden;
       const Eigen::Vector2d& m = views[k].corners_ideal_px[j];
-      const double outside_px = distance_outside_px(projected, m);
+      const double outside_px = std::max(0.0, -depth_inside_convex(projected, 4, m));
       if (outside_px > tolerance_px) {
         return Refusal{StereoGate::kEpipolar, outside_px, tolerance_px};
       }
-      hidden_offset_px = std::max(hidden_offset_px, (m - projected[j]).norm());
+      if (views[0].states[j] == CornerState::kHidden &&
+          views[1].states[j] == CornerState::kHidden) {
+        hidden_in_both = true;
+        hidden_offset_px = std::max(hidden_offset_px, (m - projected[j]).norm());
+      }
     }
   }
   if (hidden_in_both && !(hidden_offset_px > tolerance_px)) {
@@ -489,21 +490,6 @@ std::optional<Refusal> fit_refusal(const std::array<DoorOutlineView, 2>& views,
   const auto has = [&](const DoorOutlineView& v, CornerState state) {
     return std::count(v.states.begin(), v.states.end(), state) > 0;
   };
-  // Two views of one door at about one depth are about as wide, where both show its width (no
-  // corner on an edge or hidden): their widths' ratio within max_area_ratio. An outline's width is
-  // the mean of its top and bottom edges' lengths (pixels).
-  if (std::none_of(views.begin(), views.end(), [&](const DoorOutlineView& v) {
-        return has(v, CornerState::kOnEdge) || has(v, CornerState::kHidden);
-      })) {
-    const auto width_px = [](const DoorOutlineView& v) {
-      return 0.5 * ((v.corners_ideal_px[1] - v.corners_ideal_px[0]).norm() +
-                    (v.corners_ideal_px[2] - v.corners_ideal_px[3]).norm());
-    };
-    const double a = width_px(views[0]), b = width_px(views[1]);
-    const double ratio = std::max(a, b) / std::max(std::min(a, b), 1e-9);
-    const double max_ratio = std::max(options.max_area_ratio, 1.0);
-    if (!(ratio <= max_ratio)) return Refusal{kAreaRatio, ratio, max_ratio};
-  }
   // A door's size: a measured height within the class's height_range_m, a measured width at least
   // min_width_m, and any width at most max_width_m (metres).
   const auto range =
@@ -588,7 +574,20 @@ std::optional<Candidate> judge_partly_seen_door(
   const DoorRectangle& s = start->rectangle;
   Theta theta{s.centre_m.x(), s.centre_m.y(), s.centre_m.z(), s.yaw_rad, s.width_m, s.height_m};
   std::optional<Matrix6d> inverse = solve(theta, residuals, priors, *start, door);
-  if (!inverse) return refuse(trace, kTriangulation, 0.0, 0.0);
+  if (!inverse) {
+    // Singular or unusable: a size the views do not measure at all. The class's sizes, from the
+    // start again.
+    const SizePriors all{priors.width || (door.typical_width_m > 0.0 && door.width_sigma_m > 0.0),
+                         true};
+    if (all.width == priors.width && all.height == priors.height) {
+      return refuse(trace, kTriangulation, 0.0, 0.0);
+    }
+    priors = all;
+    if (const auto refusal = prior_refusal(*start, door, priors)) return refuse_by(*refusal);
+    theta = {s.centre_m.x(), s.centre_m.y(), s.centre_m.z(), s.yaw_rad, s.width_m, s.height_m};
+    inverse = solve(theta, residuals, priors, *start, door);
+    if (!inverse) return refuse(trace, kTriangulation, 0.0, 0.0);
+  }
   // A size the views measure worse than the class knows it (its rays run nearly along the door's
   // level planes, or its sides' disparities are too few pixels) is the class's, as an unseen one
   // is: refitted from the first solution with its prior.

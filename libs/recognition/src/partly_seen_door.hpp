@@ -32,16 +32,22 @@
 //            does not exceed by more than kMaxVisibleOfTypical (at least half the least in view);
 //   width    r = (w - max(w_t, w_v)) / sigma_w,   w_t the typical width, w_v the visible one (at
 //            least half w_t in view).
-// The image residuals are divided by pixel_sigma_px, so all are in units of their sigma; the fit
-// is Gauss-Newton (Ceres, dense QR) from the outlines' triangulated corners, and the centre's
-// covariance the top left block of (J^T J)^-1 at the solution: along an unmeasured dimension it
-// holds the class's spread, (sigma / 2)^2 (the centre moves half of a size's error).
+// A size the views measure worse than the class's spread (its rays run nearly along the door's
+// level planes) takes the prior too, refitted. The image residuals are divided by each corner's
+// sigma (DoorOutlineView::sigma_px: the pixel noise, or the position gate's tolerance where the
+// caller could not correlate a right outline's side), so all are in units of their sigma; the
+// fit is Ceres' Levenberg-Marquardt (dense QR) from the outlines' triangulated corners, and the
+// centre's covariance the top left block of (J^T J)^-1 at the solution: along an unmeasured
+// dimension it holds the class's spread, (sigma / 2)^2 (the centre moves half of a size's error).
 //
-// Accepted when every image residual is within the caller's tolerance, the outlines' widths
-// agree within max_area_ratio, the door is a door's height (height_range_m) and width
-// (min_width_m .. max_width_m), seen from within about 78 deg of head-on, and within the depth
-// range. The cut, corner, occluder and one-hidden-corner cases are these states, not separate
-// constructions.
+// Accepted when every image residual is within the caller's tolerance (PartlySeenLimits); a
+// hidden corner's outline point lies within the door's projection (and, hidden in both images,
+// away from the door's own corner); a measured height is within height_range_m, a measured width
+// at least min_width_m, any width at most max_width_m; a size from the prior has at least half of
+// it in view; the door is seen from within about 78 deg of head-on, within the depth range; a
+// level lower edge shows PartlySeenLimits::min_visible_if_level_m; and, resting on a hidden
+// corner, the centre's standard deviation is at most 0.25 m. The cut, corner, occluder and
+// one-hidden-corner cases are these states, not separate constructions.
 #pragma once
 
 #include <Eigen/Core>
@@ -73,7 +79,6 @@ struct DoorOutlineView {
   std::array<Eigen::Vector2d, 4> corners_ideal_px;
   std::array<CornerState, 4> states{CornerState::kSeen, CornerState::kSeen, CornerState::kSeen,
                                     CornerState::kSeen};
-  double height_px = 0.0;  // the outline's visible height (Detection::height_px)
   // Each corner's standard deviation, pixels; 0: StereoMatchOptions::pixel_sigma_px.
   std::array<double, 4> sigma_px{};
 };

@@ -13,7 +13,6 @@
 #include <optional>
 
 #include "bars_on_outline.hpp"
-#include "convex_polygon.hpp"
 #include "cut_bar.hpp"
 #include "door_pair.hpp"
 #include "epipolar.hpp"
@@ -526,20 +525,61 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDo
   }
 }
 
+// What a fit of a door seen in part explains: the image border's cuts, an occluder hiding the
+// door's lower part, or one hiding a corner.
+enum class Explanation { kBorder, kLowerPartHidden, kCornerHidden };
+
+// Before the sides' correlation (the costliest step), what the two outlines alone refuse: a
+// corner both images show off the other's epipolar line (two doors at different heights), and,
+// where both show the door's width (no corner on an edge or hidden), unlike widths: two views of
+// one door at about one depth are about as wide (max_area_ratio; an outline's width is the mean
+// of its top and bottom edges' lengths, pixels).
+bool outlines_refused(const StereoViews& v, const std::array<detail::DoorOutlineView, 2>& views,
+                      double tolerance_px, StereoPairTrace& trace) {
+  using detail::CornerState;
+  for (std::size_t j = 0; j < 4; ++j) {
+    if (views[0].states[j] != CornerState::kSeen || views[1].states[j] != CornerState::kSeen) {
+      continue;
+    }
+    const double off_px =
+        v.epipolar.distance_px(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
+    if (off_px > tolerance_px) {
+      detail::refuse(trace, StereoGate::kEpipolar, off_px, tolerance_px);
+      return true;
+    }
+  }
+  const auto shows_width = [](const detail::DoorOutlineView& o) {
+    return std::all_of(o.states.begin(), o.states.end(), [](CornerState state) {
+      return state == CornerState::kSeen || state == CornerState::kOnSide;
+    });
+  };
+  if (!shows_width(views[0]) || !shows_width(views[1])) return false;
+  const auto width_px = [](const detail::DoorOutlineView& o) {
+    const std::array<Eigen::Vector2d, 4>& c = o.corners_ideal_px;
+    return 0.5 * ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
+  };
+  const double a = width_px(views[0]), b = width_px(views[1]);
+  const double ratio = std::max(a, b) / std::max(std::min(a, b), 1e-9);
+  const double max_ratio = std::max(v.options.max_area_ratio, 1.0);
+  if (ratio <= max_ratio) return false;
+  detail::refuse(trace, StereoGate::kAreaRatio, ratio, max_ratio);
+  return true;
+}
+
 // The pair (l, r) judged as one door seen in part (partly_seen_door.hpp), each view's corners in
-// `states`.
+// the states given; an outline corner beyond the image is where the outline's sides would meet,
+// not a corner the image shows, so the door's own corner there is hidden.
 std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, int r,
                                                    const std::array<detail::CornerState, 4>& left,
                                                    const std::array<detail::CornerState, 4>& right,
-                                                   StereoPairTrace& trace, bool occluder = false) {
+                                                   StereoPairTrace& trace,
+                                                   Explanation explanation = Explanation::kBorder) {
   const StereoMatchOptions& options = v.options;
   const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, v.left[l].type);
   std::array<detail::DoorOutlineView, 2> views{
-      detail::DoorOutlineView{corner_array(v.left_corners[l]), left, v.left[l].height_px},
-      detail::DoorOutlineView{corner_array(v.right_corners[r]), right, v.right[r].height_px}};
-  // An outline corner beyond the image is where the outline's sides would meet, not a corner
-  // the image shows: the door's own corner there is unseen.
-  for (int k = 0; k < 2; ++k) {
+      detail::DoorOutlineView{corner_array(v.left_corners[l]), left},
+      detail::DoorOutlineView{corner_array(v.right_corners[r]), right}};
+  for (std::size_t k = 0; k < 2; ++k) {
     const Detection& d = k == 0 ? v.left[l] : v.right[r];
     const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
     for (std::size_t j = 0; j < 4; ++j) {
@@ -547,8 +587,8 @@ std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, 
       const bool beyond = px.x() < -0.5 - 1e-6 || px.y() < -0.5 - 1e-6 ||
                           px.x() > camera.width_px - 0.5 + 1e-6 ||
                           px.y() > camera.height_px - 0.5 + 1e-6;
-      if (beyond && views[static_cast<std::size_t>(k)].states[j] == detail::CornerState::kSeen) {
-        views[static_cast<std::size_t>(k)].states[j] = detail::CornerState::kHidden;
+      if (beyond && views[k].states[j] == detail::CornerState::kSeen) {
+        views[k].states[j] = detail::CornerState::kHidden;
       }
     }
   }
@@ -558,26 +598,14 @@ std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, 
   // with a whole door, and the explanation must fit where they do not.
   detail::PartlySeenLimits limits;
   limits.tolerance_px = options.max_epipolar_distance_px;
-  if (!occluder) {
+  if (explanation == Explanation::kBorder) {
     limits.tolerance_px =
         std::max(limits.tolerance_px,
                  kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
-  } else {
+  } else if (explanation == Explanation::kLowerPartHidden) {
     limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
   }
-  // Before the sides' correlation, what the outlines alone refuse: a corner both images show
-  // off the other's epipolar line (two doors at different heights).
-  for (std::size_t j = 0; j < 4; ++j) {
-    if (views[0].states[j] != detail::CornerState::kSeen ||
-        views[1].states[j] != detail::CornerState::kSeen) {
-      continue;
-    }
-    const double off_px =
-        v.epipolar.distance_px(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
-    if (off_px > limits.tolerance_px) {
-      return detail::refuse(trace, StereoGate::kEpipolar, off_px, limits.tolerance_px);
-    }
-  }
+  if (outlines_refused(v, views, limits.tolerance_px, trace)) return std::nullopt;
   // Uncorrelated, a right outline's side is where segmentation put it: within the position
   // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
   // measured to that noise: correlate_sides).
@@ -606,7 +634,8 @@ std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l
     constexpr std::array<CornerState, 4> kLowerOnSides{CornerState::kSeen, CornerState::kSeen,
                                                        CornerState::kOnSide, CornerState::kOnSide};
     StereoPairTrace t = retry;
-    if (auto c = judge_partly_seen(v, l, r, kLowerOnSides, kLowerOnSides, t, true)) {
+    if (auto c = judge_partly_seen(v, l, r, kLowerOnSides, kLowerOnSides, t,
+                                   Explanation::kLowerPartHidden)) {
       trace = t;
       return c;
     }
@@ -645,9 +674,9 @@ std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l
                                       CornerState::kSeen};
     states[hidden] = CornerState::kHidden;
     StereoPairTrace t = retry;
-    auto placed = judge_partly_seen(v, l, r, states, states, t, true);
+    auto placed = judge_partly_seen(v, l, r, states, states, t, Explanation::kCornerHidden);
     if (!placed) continue;
-    ++explaining;
+    if (++explaining > 1) return std::nullopt;
     found = std::move(placed);
     found_trace = t;
     found_trace.occluded_corner = true;
@@ -671,8 +700,8 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
   if (!cut) {
     std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, nullptr).judge();
     const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
-    if (!c && door && v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 &&
-        v.up.norm() > 0.0) {
+    if (!c && door && (door->occluder_cut || door->occluded_corner) &&
+        v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0) {
       occluded.push_back(trace);
     }
     return c;
@@ -810,6 +839,8 @@ void explain_unpaired_by_occluder(const StereoViews& v, std::vector<StereoPairTr
     }
     assigned.push_back(std::move(c));
   }
+  std::sort(assigned.begin(), assigned.end(),
+            [](const detail::Candidate& a, const detail::Candidate& b) { return a.left < b.left; });
 }
 
 StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {

@@ -178,7 +178,7 @@ TEST_F(BorderCutTest, WidthLeaningSideAndEpipolarGates) {
   Pair narrow = p;
   for (const int k : {1, 2}) narrow.right.corners_px[k].x() -= 60.0;
   EXPECT_TRUE(match({narrow.left}, {narrow.right}, &trace).empty());
-  EXPECT_NE(trace[0].refused_by, StereoGate::kNone);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kAreaRatio);
 }
 
 TEST_F(BorderCutTest, ASideIsCorrelatedOnlyWhenItsPeakIsClear) {

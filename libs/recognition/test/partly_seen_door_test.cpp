@@ -55,10 +55,6 @@ class PartlySeenDoorTest : public ::testing::Test {
     }
     out[0].states = left;
     out[1].states = right;
-    for (DoorOutlineView& v : out) {
-      v.height_px = 0.5 * ((v.corners_ideal_px[3] - v.corners_ideal_px[0]).norm() +
-                           (v.corners_ideal_px[2] - v.corners_ideal_px[1]).norm());
-    }
     return out;
   }
 

@@ -312,8 +312,8 @@ struct StereoPairTrace {
   double limit = 0.0;
   double cost = 0.0;      // a candidate's normalized cost
   bool assigned = false;  // a candidate the assignment kept (a percept)
-  // A candidate placed by the occluded-corner construction after the position or side gate
-  // refused it (BorderCutDoor::occluded_corner, docs/recognition.md).
+  // A candidate placed with one corner hidden by an occluder in both images after the position
+  // or side gate refused it (BorderCutDoor::occluded_corner, docs/recognition.md).
   bool occluded_corner = false;
 };
 
@@ -342,9 +342,10 @@ struct StereoPairTrace {
 //
 // `pair_trace`, when given, receives one entry per pair of detections of the same type that is
 // judged: the first gate that refused it, or none and whether the assignment kept it (a debug
-// aid: where the evaluation's ground-truth pairs were lost). A door cut by the image border and
-// one not cut, or cut along the other border, are not judged as a pair, nor are cut doors of a
-// class without StereoMatchOptions::border_cut or without the up direction. `images`: the frame's
+// aid: where the evaluation's ground-truth pairs were lost). Two door views cut by the image
+// border are judged as a pair only when they can show one door (cut alike, or the image that sees
+// less beyond a left or right border cut there alone), not cut doors of a class without
+// StereoMatchOptions::border_cut or without the up direction. `images`: the frame's
 // grey images, for the door sides' correlation (StereoMatchOptions::min_side_correlation) and the
 // single-view doors; without them both are off.
 std::vector<StereoPercept> match_and_triangulate(
