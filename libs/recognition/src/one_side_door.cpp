@@ -15,11 +15,10 @@
 //     own sweep, searched kSideSearchPx around the horizontal distance D_o of the corners so
 //     placed, peaks at min_single_view_correlation or more within kMaxOuterDepthMismatch D_o;
 //   - each edge between an inner end and an outer corner is min_width_m .. max_width_m long and
-//     seen from within about 78 deg of head-on (as border_cut.cpp);
+//     seen from within about 78 deg of head-on (as partly_seen_door.cpp);
 //   - whole outlines: the outer side's two corners so placed are vertical (they lean
-//     horizontally by at most 30% of the inner side's length, as
-//     Triangulator::rectangle_centre_from_one_side), and the inner side is a door's height (the
-//     outer corners are at its ends' heights);
+//     horizontally by at most 30% of the inner side's length), and the inner side is a door's
+//     height (the outer corners are at its ends' heights);
 //   - cut outlines: the inner side's visible height h_v is at least half the least typical
 //     height and at most 1.05 times the tallest (as for pairs: partly_seen_door.hpp).
 // SweptSide::kOuter (BorderCutDoor::merged_side, whole outlines only) swaps the roles: the outer
@@ -54,10 +53,10 @@ constexpr double kMaxInsideBorderPx = 8.0;
 // only, 1.5%, 3% and 6% gave 269, 270 and 271 true door percepts, with 25, 25 and 27 false).
 constexpr double kMaxOuterDepthMismatch = 0.03;
 // A ray closer than this to the level plane it is intersected with gives no point (radians, as
-// Triangulator::rectangle_centre_from_one_side).
+// Triangulator::left_ray_on_level_plane).
 constexpr double kMinRayToPlaneRad = 0.05;
 // The outer side found by the level planes leans by at most this fraction of the inner side's
-// length (as Triangulator::rectangle_centre_from_one_side).
+// length: a sanity bound, since its two ends come from independent rays.
 constexpr double kMaxOuterLean = 0.3;
 // SweptSide::kOuter: the other image shows no edge where the placed side's window has less than
 // this fraction of the own window's contrast (standard deviation). On the kitchen any bound from

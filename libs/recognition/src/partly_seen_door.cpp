@@ -439,7 +439,7 @@ std::optional<double> worst_residual_px(const std::vector<CornerResidual>& resid
 std::optional<Refusal> hidden_corner_refusal(const std::array<DoorOutlineView, 2>& views,
                                              const std::array<RigCamera, 2>& cameras,
                                              const Basis& basis, const Theta& theta,
-                                             double tolerance_px) {
+                                             double tolerance_px, bool hidden_by_occluder) {
   bool hidden_in_both = false;
   double hidden_offset_px = 0.0;
   for (std::size_t k = 0; k < 2; ++k) {
@@ -466,7 +466,7 @@ std::optional<Refusal> hidden_corner_refusal(const std::array<DoorOutlineView, 2
       }
     }
   }
-  if (hidden_in_both && !(hidden_offset_px > tolerance_px)) {
+  if (hidden_by_occluder && hidden_in_both && !(hidden_offset_px > tolerance_px)) {
     return Refusal{StereoGate::kEpipolar, hidden_offset_px, tolerance_px};
   }
   return std::nullopt;
@@ -481,10 +481,13 @@ std::optional<Refusal> fit_refusal(const std::array<DoorOutlineView, 2>& views,
                                    const Matrix6d& inverse, double worst_px,
                                    const StereoMatchOptions& options,
                                    const StereoMatchOptions::BorderCutDoor& door,
-                                   double tolerance_px) {
+                                   const PartlySeenLimits& limits) {
   using enum StereoGate;
-  if (!(worst_px <= tolerance_px)) return Refusal{kEpipolar, worst_px, tolerance_px};
-  if (auto refusal = hidden_corner_refusal(views, cameras, basis, theta, tolerance_px)) {
+  if (!(worst_px <= limits.tolerance_px)) {
+    return Refusal{kRectangleFit, worst_px, limits.tolerance_px};
+  }
+  if (auto refusal = hidden_corner_refusal(views, cameras, basis, theta, limits.tolerance_px,
+                                           limits.hidden_by_occluder)) {
     return refusal;
   }
   const auto has = [&](const DoorOutlineView& v, CornerState state) {
@@ -519,6 +522,25 @@ std::optional<Refusal> fit_refusal(const std::array<DoorOutlineView, 2>& views,
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inverse.topLeftCorner<3, 3>());
   const double sigma_m = std::sqrt(std::max(eigen.eigenvalues().maxCoeff(), 0.0));
   return outside(kDepth, sigma_m, -kInf, kMaxCentreSigmaWithHiddenM);
+}
+
+// The a-posteriori variance factor of the fit, at least 1: chi^2 / (n - 6) over its image
+// residuals (in units of their sigma) and size priors, six unknowns; a prior's residual, where it
+// fills in what no image measures, is about zero at the solution and left out of chi^2.
+// Segmentation's corner errors are larger than the pixel noise and correlated along an outline's
+// edge, so (J^T J)^-1 alone would claim a door placed to a centimetre where its corners disagree by
+// pixels; scaled, the covariance grows with the disagreement the fit leaves.
+double variance_factor(const std::vector<CornerResidual>& residuals, const Theta& theta,
+                       const SizePriors& priors) {
+  double chi2 = 0.0;
+  int n = static_cast<int>(priors.width) + static_cast<int>(priors.height);
+  for (const CornerResidual& c : residuals) {
+    double r[2] = {0.0, 0.0};
+    if (!c(theta.data(), r)) continue;
+    chi2 += r[0] * r[0] + (c.point ? r[1] * r[1] : 0.0);
+    n += c.point ? 2 : 1;
+  }
+  return n > 6 ? std::max(1.0, chi2 / (n - 6)) : 1.0;
 }
 
 }  // namespace
@@ -607,7 +629,7 @@ std::optional<Candidate> judge_partly_seen_door(
   const std::optional<double> worst_px = worst_residual_px(residuals, theta);
   if (!worst_px) return refuse(trace, kTriangulation, 0.0, 0.0);
   if (const auto refusal = fit_refusal(views, cameras, basis, theta, priors, *inverse, *worst_px,
-                                       options, door, limits.tolerance_px)) {
+                                       options, door, limits)) {
     return refuse_by(*refusal);
   }
   // The candidate's cost is the worst residual's squared fraction of the tolerance; its reference
@@ -615,13 +637,15 @@ std::optional<Candidate> judge_partly_seen_door(
   // offset's own Jacobian is within a per cent of the identity at a door's range).
   const Eigen::Vector3d centre_m(theta[0], theta[1], theta[2]);
   const double cost = (*worst_px / limits.tolerance_px) * (*worst_px / limits.tolerance_px);
+  Eigen::Matrix3d covariance = inverse->topLeftCorner<3, 3>();
+  covariance *= variance_factor(residuals, theta, priors);
   trace.cost = cost;
-  return Candidate{.left = l,
-                   .right = r,
-                   .cost = cost,
-                   .rectangle = true,
-                   .triangulation = {centre_m + reference_offset_m * centre_m.normalized(),
-                                     inverse->topLeftCorner<3, 3>()}};
+  return Candidate{
+      .left = l,
+      .right = r,
+      .cost = cost,
+      .rectangle = true,
+      .triangulation = {centre_m + reference_offset_m * centre_m.normalized(), covariance}};
 }
 
 }  // namespace vsl::recognition::detail

@@ -1,7 +1,7 @@
-// One model of a door seen in part: a pair of door outlines that the image border or an occluder
-// cuts, or whose corner an occluder hides, placed by one least-squares fit of a vertical
-// rectangle over both images, with the class's sizes as a prior for what neither image shows.
-// Internal to vsl_recognition.
+// One model of a door, seen whole or in part: a pair of door outlines, whole, cut by the image
+// border or an occluder, or with a corner an occluder hides, placed by one least-squares fit of a
+// vertical rectangle over both images, with the class's sizes as a prior for what neither image
+// shows. Internal to vsl_recognition.
 //
 // Model (as door_rectangle_fit.hpp). In the left camera frame (metres), with u the world's
 // vertical (unit) and the horizontal basis e1 = normalize(x - (x.u) u), e2 = u x e1:
@@ -24,6 +24,9 @@
 //             distance of m from the projected edge.
 //   hidden    nothing (the image's own corner where two borders cut the outline; a corner an
 //             occluder hides).
+//   merged    nothing (a corner of a side that is no door edge in this image: an occluder's
+//             contour or a neighbour's strip that segmentation merged; the side gate,
+//             door_pair.hpp). Unlike a hidden corner, its outline point may lie outside the door.
 // A side of the rectangle is measured when, in either image, a corner on it is seen (a vertical
 // side's in the right image too) or lies on it (on side for the vertical sides, on edge for the
 // top and bottom edges). Each dimension needs one of its two sides measured; an unmeasured one is
@@ -39,15 +42,18 @@
 // fit is Ceres' Levenberg-Marquardt (dense QR) from the outlines' triangulated corners, and the
 // centre's covariance the top left block of (J^T J)^-1 at the solution: along an unmeasured
 // dimension it holds the class's spread, (sigma / 2)^2 (the centre moves half of a size's error).
+// It is scaled by the a-posteriori variance factor chi^2 / (n - 6) where that exceeds 1: a
+// segmented outline's corners scatter by more than the pixel noise, and by as much as the fit's
+// residuals show.
 //
 // Accepted when every image residual is within the caller's tolerance (PartlySeenLimits); a
-// hidden corner's outline point lies within the door's projection (and, hidden in both images,
-// away from the door's own corner); a measured height is within height_range_m, a measured width
+// hidden corner's outline point lies within the door's projection (and, hidden in both images by
+// an occluder, away from the door's own corner); a measured height is within height_range_m, a measured width
 // at least min_width_m, any width at most max_width_m; a size from the prior has at least half of
 // it in view; the door is seen from within about 78 deg of head-on, within the depth range; a
 // level lower edge shows PartlySeenLimits::min_visible_if_level_m; and, resting on a hidden
-// corner, the centre's standard deviation is at most 0.25 m. The cut, corner, occluder and
-// one-hidden-corner cases are these states, not separate constructions.
+// corner, the centre's standard deviation is at most 0.25 m. The whole, cut, corner, occluder,
+// one-hidden-corner and merged-side cases are these states, not separate constructions.
 #pragma once
 
 #include <Eigen/Core>
@@ -71,7 +77,7 @@ inline constexpr double kMaxVisibleOfTypical = 1.05;
 // one_side_door.cpp).
 inline constexpr double kMinCosViewing = 0.2;
 
-enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden };
+enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden, kMerged };
 
 // One image's outline of the door: its corners (ideal pixels, clockwise from the top left) and
 // what each is.
@@ -103,6 +109,9 @@ struct DoorRig {
 struct PartlySeenLimits {
   double tolerance_px = 0.0;
   double min_visible_if_level_m = 0.0;
+  // The hidden corners are an occluder's: one hidden in both images must be away from the door's
+  // own corner (else nothing hides it). Otherwise the image border hides them.
+  bool hidden_by_occluder = false;
 };
 
 // Judges the pair (left detection `l`, right detection `r`) as one door seen in the two views,

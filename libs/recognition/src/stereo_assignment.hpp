@@ -15,8 +15,8 @@ struct Candidate {
   int left = -1;
   int right = -1;
   double cost = 0.0;  // normalized: sum of (gate quantity / its limit)^2, each term <= 1
-  // True when the pair is two rectangle outlines whose centre comes from their vertical sides
-  // (Triangulator::rectangle_centre); false when from the reference points.
+  // True when the pair is two rectangle outlines placed by the door's fit (partly_seen_door.hpp);
+  // false when from the reference points.
   bool rectangle = false;
   Triangulation triangulation;
 };

@@ -1,6 +1,6 @@
 // Left-right cross match and triangulation (paper §2.1): the gates of each pair, in order. The
-// door outlines' own gates and centre: door_pair.hpp; doors seen in part (cut by the image
-// border, or by an occluder): partly_seen_door.hpp; doors from one image: single_view.hpp.
+// door outlines' own gates: door_pair.hpp; the door's fit, whole, cut by the image border or by
+// an occluder: partly_seen_door.hpp; doors from one image: single_view.hpp.
 // Geometry: epipolar.hpp (gate) and triangulation.hpp (point and covariance); the one-to-one
 // assignment: stereo_assignment.hpp.
 #include "vsl/recognition/stereo_match.hpp"
@@ -144,11 +144,10 @@ bool cuts_of_one_door(BorderCut left, BorderCut right) {
 }
 
 // Whole outlines refused in a way an occluder hiding the door's lower part explains: too short,
-// an edge sloping, or one side shorter than the other.
+// or corners off the door's fit (a sloping lower edge, one side shorter than the other).
 bool may_be_occluder_cut(const StereoPairTrace& refusal) {
   return (refusal.refused_by == StereoGate::kHeight && refusal.value < refusal.limit) ||
-         refusal.refused_by == StereoGate::kEdgeSlope ||
-         refusal.refused_by == StereoGate::kSideHeights;
+         refusal.refused_by == StereoGate::kRectangleFit;
 }
 
 // Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
@@ -253,6 +252,16 @@ struct StereoViews {
   std::vector<std::vector<detail::IdealPixel>> left_bar_ends, right_bar_ends;
 };
 
+// What a fit of a door explains: a whole pair, the image border's cuts, an occluder hiding the
+// door's lower part, or one hiding a corner.
+enum class Explanation { kWhole, kBorder, kLowerPartHidden, kCornerHidden };
+// The pair (l, r) as one door (partly_seen_door.hpp); defined below.
+std::optional<detail::Candidate> judge_door(const StereoViews& v, int l, int r,
+                                            const std::array<detail::CornerState, 4>& left,
+                                            const std::array<detail::CornerState, 4>& right,
+                                            StereoPairTrace& trace,
+                                            Explanation explanation = Explanation::kBorder);
+
 // Judges one pair of whole views against every gate, in order (paper §2.1: position on the
 // epipolar line, size, orientation, then the triangulated point's depth and extent); a pair that
 // passes all of them is a candidate with its triangulation. Triangulating here rather than after
@@ -331,8 +340,7 @@ class PairJudge {
       return false;
     }
     if (rectangles_) {
-      sides_ = detail::judge_door_sides(v_.outlines(l_, r_), v_.triangulator, v_.up,
-                                        v_.correlator.has_value(), o_, trace_);
+      sides_ = detail::judge_door_sides(v_.outlines(l_, r_), v_.triangulator, v_.up, o_, trace_);
       if (!sides_) return false;
     }
     return true;
@@ -395,8 +403,8 @@ class PairJudge {
 
   // The 3D point: triangulated from the reference points, with the covariance the pixel noise
   // gives it; a bar's from its span (the middle), a bar cut by one border in both images from its
-  // own end (cut_bar.hpp); two door outlines' from their vertical sides (door_pair.hpp), with
-  // the reference points' covariance.
+  // own end (cut_bar.hpp); two door outlines' by the door's fit (fit_door), with its
+  // covariance.
   bool place_point() {
     offset_m_ = reference_depth_offset(o_, dl_.type);
     triangulation_ = v_.triangulator.triangulate(v_.left_ideal[l_], v_.right_ideal[r_],
@@ -416,16 +424,34 @@ class PairJudge {
       set_point(placed->centre_m);
       triangulation_->left_camera_covariance_m2 += placed->length_covariance_m2;
     }
-    if (rectangles_) {
-      const detail::DoorCentre door = detail::door_centre(
-          v_.outlines(l_, r_), *sides_, v_.triangulator, v_.forward(), v_.reverse(),
-          v_.left_T_right, v_.up, o_, class_max_width_m(o_, dl_.type), trace_);
-      if (door.refused) return false;
-      if (door.centre) {
-        set_point(*door.centre);
-        rectangle_ = true;
-      }
+    if (rectangles_ && border_cut_door(o_, dl_.type) && v_.up.norm() > 0.0 &&
+        detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
+      return fit_door();
     }
+    return true;
+  }
+  // Two whole door outlines: the door fitted to all their corners (partly_seen_door.hpp), those
+  // of a side that is no door edge in one outline (the side gate) merged there; its centre and
+  // covariance the fit's.
+  bool fit_door() {
+    using detail::CornerState;
+    std::array<std::array<CornerState, 4>, 2> states;
+    states[0].fill(CornerState::kSeen);
+    states[1].fill(CornerState::kSeen);
+    if (sides_->tilted_side >= 0) {
+      std::array<CornerState, 4>& merged = states[sides_->tilted_in_left ? 0 : 1];
+      const std::array<std::size_t, 2> side = sides_->tilted_side == 0
+                                                  ? std::array<std::size_t, 2>{0, 3}
+                                                  : std::array<std::size_t, 2>{1, 2};
+      merged[side[0]] = merged[side[1]] = CornerState::kMerged;
+    }
+    const std::optional<detail::Candidate> fit =
+        judge_door(v_, l_, r_, states[0], states[1], trace_, Explanation::kWhole);
+    if (!fit) return false;
+    const Eigen::Vector3d& reference_m = fit->triangulation.left_camera_position_m;
+    set_point(reference_m - offset_m_ * reference_m.normalized());
+    triangulation_->left_camera_covariance_m2 = fit->triangulation.left_camera_covariance_m2;
+    rectangle_ = true;
     return true;
   }
   void set_point(const Eigen::Vector3d& visible_m) {
@@ -497,6 +523,9 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDo
   std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
   const double width_px = 0.5 * ((left[1] - left[0]).norm() + (left[2] - left[3]).norm());
   const double search_px = detail::kSideSearchPx + detail::kSideSearchWidthFraction * width_px;
+  const detail::DoorOutlineView outline = views[1];
+  // Each side's middle (left camera frame, metres), where it was placed.
+  std::array<std::optional<Eigen::Vector3d>, 2> middle_m;
   for (const auto& [top, bottom] : {std::array<std::size_t, 2>{0, 3}, {1, 2}}) {
     if (!on_side(views[0].states[top]) || !on_side(views[0].states[bottom]) ||
         !on_side(views[1].states[top]) || !on_side(views[1].states[bottom])) {
@@ -505,6 +534,7 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDo
     const auto top_point = v.triangulator.point(left[top], right[top]);
     const auto bottom_point = v.triangulator.point(left[bottom], right[bottom]);
     if (!top_point || !bottom_point) continue;
+    middle_m[top == 0 ? 0 : 1] = 0.5 * (*top_point + *bottom_point);
     const double initial_m = 0.5 * (v.correlator->horizontal_distance(*top_point) +
                                     v.correlator->horizontal_distance(*bottom_point));
     const auto depth = v.correlator->correlate(left[top], left[bottom], initial_m, search_px,
@@ -522,12 +552,16 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDo
     right[top] = *top_px;
     right[bottom] = *bottom_px;
     views[1].sigma_px[top] = views[1].sigma_px[bottom] = 0.0;
+    middle_m[top == 0 ? 0 : 1] = 0.5 * (*top_at + *bottom_at);
+  }
+  // A peak on another edge within the search (a repeated door's, the neighbour's) can move a side
+  // a metre: sides so placed that the door is wider than its class allows are not what the
+  // outlines show, and the right outline's are kept.
+  if (middle_m[0] && middle_m[1] && door.max_width_m > 0.0 &&
+      (*middle_m[0] - *middle_m[1]).norm() > door.max_width_m) {
+    views[1] = outline;
   }
 }
-
-// What a fit of a door seen in part explains: the image border's cuts, an occluder hiding the
-// door's lower part, or one hiding a corner.
-enum class Explanation { kBorder, kLowerPartHidden, kCornerHidden };
 
 // Before the sides' correlation (the costliest step), what the two outlines alone refuse: a
 // corner both images show off the other's epipolar line (two doors at different heights), and,
@@ -566,14 +600,15 @@ bool outlines_refused(const StereoViews& v, const std::array<detail::DoorOutline
   return true;
 }
 
-// The pair (l, r) judged as one door seen in part (partly_seen_door.hpp), each view's corners in
-// the states given; an outline corner beyond the image is where the outline's sides would meet,
-// not a corner the image shows, so the door's own corner there is hidden.
-std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, int r,
-                                                   const std::array<detail::CornerState, 4>& left,
-                                                   const std::array<detail::CornerState, 4>& right,
-                                                   StereoPairTrace& trace,
-                                                   Explanation explanation = Explanation::kBorder) {
+// The pair (l, r) judged as one door (partly_seen_door.hpp), each view's corners in the states
+// given; an outline corner beyond the image is where the outline's sides would meet, not a corner
+// the image shows, so the door's own corner there is hidden. A whole pair passed the position
+// gate on its outlines already (rectangle_containment_excess_px, which allows a strip that
+// segmentation adds at the top or bottom in one image).
+std::optional<detail::Candidate> judge_door(const StereoViews& v, int l, int r,
+                                            const std::array<detail::CornerState, 4>& left,
+                                            const std::array<detail::CornerState, 4>& right,
+                                            StereoPairTrace& trace, Explanation explanation) {
   const StereoMatchOptions& options = v.options;
   const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, v.left[l].type);
   std::array<detail::DoorOutlineView, 2> views{
@@ -598,14 +633,18 @@ std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, 
   // with a whole door, and the explanation must fit where they do not.
   detail::PartlySeenLimits limits;
   limits.tolerance_px = options.max_epipolar_distance_px;
-  if (explanation == Explanation::kBorder) {
+  if (explanation == Explanation::kBorder || explanation == Explanation::kWhole) {
     limits.tolerance_px =
         std::max(limits.tolerance_px,
                  kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
   } else if (explanation == Explanation::kLowerPartHidden) {
     limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
   }
-  if (outlines_refused(v, views, limits.tolerance_px, trace)) return std::nullopt;
+  limits.hidden_by_occluder = explanation == Explanation::kCornerHidden;
+  if (explanation != Explanation::kWhole &&
+      outlines_refused(v, views, limits.tolerance_px, trace)) {
+    return std::nullopt;
+  }
   // Uncorrelated, a right outline's side is where segmentation put it: within the position
   // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
   // measured to that noise: correlate_sides).
@@ -618,10 +657,10 @@ std::optional<detail::Candidate> judge_partly_seen(const StereoViews& v, int l, 
 
 // Two whole door outlines that the cross match refused, explained by an occluder in front of the
 // door (a chair, the table's top): the lower corners on the sides (the occluder hides the door's
-// lower part: the pair was too short, an edge sloped or one side was shorter), or one corner
-// hidden in both images (its contour is where the position or side gate found no door edge).
-// Exactly one hidden corner must explain the pair: with two, the outlines do not say which one
-// the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
+// lower part: the pair was too short, or its lower corners off the fit), or one corner hidden in
+// both images (its contour is where the position gate, the side gate or the fit found no door
+// edge). Exactly one hidden corner must explain the pair: with two, the outlines do not say which
+// one the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
 // unless the pair is so placed.
 std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
                                                      const StereoMatchOptions::BorderCutDoor& door,
@@ -634,14 +673,15 @@ std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l
     constexpr std::array<CornerState, 4> kLowerOnSides{CornerState::kSeen, CornerState::kSeen,
                                                        CornerState::kOnSide, CornerState::kOnSide};
     StereoPairTrace t = retry;
-    if (auto c = judge_partly_seen(v, l, r, kLowerOnSides, kLowerOnSides, t,
-                                   Explanation::kLowerPartHidden)) {
+    if (auto c =
+            judge_door(v, l, r, kLowerOnSides, kLowerOnSides, t, Explanation::kLowerPartHidden)) {
       trace = t;
       return c;
     }
   }
-  const bool position_or_side =
-      trace.refused_by == StereoGate::kEpipolar || trace.refused_by == StereoGate::kSideTilt;
+  const bool position_or_side = trace.refused_by == StereoGate::kEpipolar ||
+                                trace.refused_by == StereoGate::kSideTilt ||
+                                trace.refused_by == StereoGate::kRectangleFit;
   if (!door.occluded_corner || !position_or_side ||
       v.judge_bars(v.left[l], v.right[r], v.options.single_view_max_bars_inside).gate !=
           StereoGate::kNone) {
@@ -674,7 +714,7 @@ std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l
                                       CornerState::kSeen};
     states[hidden] = CornerState::kHidden;
     StereoPairTrace t = retry;
-    auto placed = judge_partly_seen(v, l, r, states, states, t, Explanation::kCornerHidden);
+    auto placed = judge_door(v, l, r, states, states, t, Explanation::kCornerHidden);
     if (!placed) continue;
     if (++explaining > 1) return std::nullopt;
     found = std::move(placed);
@@ -716,8 +756,8 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
     // one out).
     return detail::refuse(trace, bars.gate, bars.value, bars.limit);
   }
-  return judge_partly_seen(v, l, r, detail::corner_states_of(dl.border_cut),
-                           detail::corner_states_of(dr.border_cut), trace);
+  return judge_door(v, l, r, detail::corner_states_of(dl.border_cut),
+                    detail::corner_states_of(dr.border_cut), trace);
 }
 
 // Whether a pair of door views is judged at all: whole views always; cut ones when their class
@@ -1001,16 +1041,14 @@ const char* stereo_gate_name(StereoGate gate) {
       return "extent";
     case StereoGate::kHeight:
       return "height";
-    case StereoGate::kEdgeSlope:
-      return "edge_slope";
     case StereoGate::kWeakPair:
       return "weak_pair";
     case StereoGate::kBarsInside:
       return "bars_inside";
     case StereoGate::kStackedBars:
       return "stacked_bars";
-    case StereoGate::kSideHeights:
-      return "side_heights";
+    case StereoGate::kRectangleFit:
+      return "rectangle_fit";
   }
   return "?";
 }

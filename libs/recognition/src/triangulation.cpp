@@ -10,13 +10,9 @@ namespace {
 // sin^2 of the smallest angle between the rays that still counts as an intersection.
 constexpr double kMinSin2 = 1e-12;
 constexpr double kDifferenceStepPx = 1e-3;
-// rectangle_centre_from_one_side: the smallest sine of the angle between a ray and the
-// horizontal plane it must meet (below it, a pixel of noise moves the point too far along the
-// ray), and the largest horizontal lean of the side found from one image, as a fraction of the
-// good side's length: a sanity bound, since that side's two ends come from independent rays
-// (on the kitchen 0.05 refused most true doors; 0.3 kept them and 1 false pair fewer than 1).
+// left_ray_on_level_plane: the smallest sine of the angle between a ray and the horizontal plane
+// it must meet (below it, a pixel of noise moves the point too far along the ray).
 constexpr double kMinRayElevationSin = 0.05;
-constexpr double kMaxOtherSideLean = 0.3;
 // bar_span: a bar is taken as vertical when the plane its longer image spans through the camera
 // centre holds a direction within this angle's sine (0.3 rad) of up.
 constexpr double kMaxBarUpOutOfPlaneSin = 0.3;
@@ -93,58 +89,12 @@ std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
   return tilts;
 }
 
-std::optional<std::array<Eigen::Vector3d, 4>> Triangulator::rectangle_ends(
-    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
-    int skipped_side) const {
-  const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
-  std::array<Eigen::Vector3d, 4> ends;
-  ends.fill(Eigen::Vector3d::Zero());
-  int e = 0;
-  for (const auto& [i, j] : sides) {
-    if (e / 2 == skipped_side) {
-      e += 2;
-      continue;
-    }
-    if (verticality(left, i, j) < std::sqrt(0.5) || verticality(right, i, j) < std::sqrt(0.5)) {
-      return std::nullopt;
-    }
-    const Eigen::Vector3d n = (right_k_inverse_in_left_ * right[i].homogeneous())
-                                  .cross(right_k_inverse_in_left_ * right[j].homogeneous());
-    for (const int k : {i, j}) {
-      const Eigen::Vector3d a = left_k_inverse_ * left[k].homogeneous();
-      const double na = n.dot(a);
-      if (!(std::abs(na) > 1e-3 * n.norm() * a.norm())) return std::nullopt;
-      const double s = n.dot(right_centre_m_) / na;
-      if (!(s > 0.0)) return std::nullopt;
-      ends[static_cast<std::size_t>(e++)] = s * a;
-    }
-  }
-  return ends;
-}
-
 Eigen::Vector3d Triangulator::rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends) {
   return (ends[0] + ends[1] + ends[2] + ends[3]) / 4.0;
 }
 
 double Triangulator::rectangle_width(const std::array<Eigen::Vector3d, 4>& ends) {
   return (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
-}
-
-std::optional<double> Triangulator::edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
-                                               const Eigen::Vector3d& up) {
-  if (!(up.norm() > 0.0)) return std::nullopt;
-  const Eigen::Vector3d u = up.normalized();
-  double slope = 0.0;
-  // The edges join the first ends of the two sides, and the second ends.
-  for (const auto& [a, b] : {std::pair{0, 2}, std::pair{1, 3}}) {
-    const Eigen::Vector3d edge =
-        ends[static_cast<std::size_t>(b)] - ends[static_cast<std::size_t>(a)];
-    const double rise = std::abs(edge.dot(u));
-    const double run = (edge - edge.dot(u) * u).norm();
-    if (!(run > 0.0)) return std::nullopt;
-    slope = std::max(slope, rise / run);
-  }
-  return slope;
 }
 
 std::optional<double> Triangulator::informative_edge_slope(
@@ -173,53 +123,6 @@ std::optional<double> Triangulator::informative_edge_slope(
     }
   }
   return slope;
-}
-
-std::optional<Eigen::Vector3d> Triangulator::rectangle_centre_from_one_side(
-    const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
-    const Eigen::Vector3d& up, int good_side, int other_side_image) const {
-  const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
-  const std::array<int, 2> a = sides[good_side];
-  const std::array<int, 2> b = sides[1 - good_side];
-  const std::array<Eigen::Vector2d, 4>& other = other_side_image == 0 ? left : right;
-  if (verticality(left, a[0], a[1]) < std::sqrt(0.5) ||
-      verticality(right, a[0], a[1]) < std::sqrt(0.5) ||
-      verticality(other, b[0], b[1]) < std::sqrt(0.5) || !(up.norm() > 0.0)) {
-    return std::nullopt;
-  }
-  const Eigen::Vector3d u = up.normalized();
-  // The good side's ends, as rectangle_centre finds them.
-  const Eigen::Vector3d n = (right_k_inverse_in_left_ * right[a[0]].homogeneous())
-                                .cross(right_k_inverse_in_left_ * right[a[1]].homogeneous());
-  std::array<Eigen::Vector3d, 2> good_end, other_end;
-  for (int e = 0; e < 2; ++e) {
-    const Eigen::Vector3d ray = left_k_inverse_ * left[a[e]].homogeneous();
-    const double nr = n.dot(ray);
-    if (!(std::abs(nr) > 1e-3 * n.norm() * ray.norm())) return std::nullopt;
-    const double s = n.dot(right_centre_m_) / nr;
-    if (!(s > 0.0)) return std::nullopt;
-    good_end[e] = s * ray;
-  }
-  // The other side's ends: the rays of one camera through its corners meet the horizontal plane
-  // of the good side's end at the same end (a door's top and bottom edges are horizontal).
-  const Eigen::Vector3d origin = other_side_image == 0 ? Eigen::Vector3d::Zero() : right_centre_m_;
-  const Eigen::Matrix3d& k_inverse =
-      other_side_image == 0 ? left_k_inverse_ : right_k_inverse_in_left_;
-  for (int e = 0; e < 2; ++e) {
-    const Eigen::Vector3d ray = (k_inverse * other[b[e]].homogeneous()).normalized();
-    const double ur = u.dot(ray);
-    if (!(std::abs(ur) > kMinRayElevationSin)) return std::nullopt;
-    const double s = u.dot(good_end[e] - origin) / ur;
-    if (!(s > 0.0)) return std::nullopt;
-    other_end[e] = origin + s * ray;
-  }
-  // Those ends come from one image and the horizontal prior: they must make a vertical side.
-  const Eigen::Vector3d side = other_end[1] - other_end[0];
-  const Eigen::Vector3d horizontal = side - side.dot(u) * u;
-  if (!(horizontal.norm() <= kMaxOtherSideLean * (good_end[1] - good_end[0]).norm())) {
-    return std::nullopt;
-  }
-  return Eigen::Vector3d((good_end[0] + good_end[1] + other_end[0] + other_end[1]) / 4.0);
 }
 
 std::optional<Triangulator::BarSpan> Triangulator::bar_span(

@@ -54,66 +54,27 @@ class Triangulator {
   std::optional<Eigen::Vector3d> point(const Eigen::Vector2d& left_ideal_px,
                                        const Eigen::Vector2d& right_ideal_px) const;
 
-  // The centre of a rectangle (a door's front face) from its outline in both images: corners
-  // clockwise from the top left (ideal pixels; corner k of one image is corner k of the other).
-  // Each of the two sides nearer the image vertical, seen by the right camera, spans a plane
-  // through the right camera centre; the left camera's rays through that side's two corners
-  // meet it at the side's ends in 3D, and the mean of the four ends is the rectangle's centre.
-  // Only the horizontal position of the vertical sides is compared between the images (what
-  // stereo measures well, as the epipolar lines run across them); where a side ends is taken
-  // from the left image alone, so a strip of the face that segmentation adds at the top or the
-  // bottom in one image only does not move the centre. nullopt when a side is nearer the
-  // horizontal than the vertical in either image, a ray runs (within 1e-3 rad) in its plane,
-  // or an end is not in front of the cameras (rectangle_ends). The centre is the mean of the ends.
+  // A rectangle (a door's front face) by the ends of its two vertical sides (left camera frame,
+  // metres): the first side's two ends, then the second's, each side's in the order of its
+  // corners, so that ends 0 and 2 bound one level edge and 1 and 3 the other. Its centre is the
+  // mean of the ends; its width the distance between the sides' middles.
   static Eigen::Vector3d rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends);
-
-  // The rectangle's width between its two vertical sides (ends in the order of rectangle_ends):
-  // the distance between the sides' middles, metres.
   static double rectangle_width(const std::array<Eigen::Vector3d, 4>& ends);
 
-  // The four ends of the two vertical sides, as described at rectangle_centre (left camera frame,
-  // metres): the first side's two ends, then the second's, each side's ends in the order of its
-  // corners (so ends 0 and 2 bound one horizontal edge, 1 and 3 the other). `skipped_side` (0 or
-  // 1, in that order) is neither checked nor computed, its ends left zero: a side the caller
-  // places otherwise (one outline's side is no door edge there).
-  std::optional<std::array<Eigen::Vector3d, 4>> rectangle_ends(
-      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
-      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px, int skipped_side = -1) const;
-
-  // The larger slope (rise over run, `up` a vector in the left camera frame) of the rectangle's
-  // two other edges between its four ends (in the order of rectangle_ends). A door's top and
-  // bottom edges are level; where one side's horizontal position disagrees between the images (a
-  // stile lost in one image, a strip of the neighbour added), that side's depth is wrong, and its
-  // ends, on the left rays through its corners, move up or down with it: the edges slope.
-  // nullopt when an edge is vertical or `up` is zero.
-  static std::optional<double> edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
-                                          const Eigen::Vector3d& up_in_left_camera);
-  // The slope of the edge seen farther above or below the cameras (the larger least elevation
-  // of its two ends' rays): the edge that tells whether the sides' depths agree. A base unit's
-  // top edge in the image is the worktop's front lip, which hides a strip of the door that is
-  // wider at the far side when seen at a grazing angle, so the outline's top corners are not on
-  // one level line of the door; its bottom edge, farther below the eyes, is. nullopt when both
-  // edges are vertical or `up` is zero.
+  // The slope (rise over run, `up` a vector in the left camera frame) of the level edge seen
+  // farther above or below the cameras (the larger least elevation of its two ends' rays): the
+  // edge that tells whether the sides' depths agree. A side placed at a wrong depth moves its ends
+  // along their rays, so an edge near the cameras' height stays nearly level whatever the depth.
+  // A base unit's top edge in the image is the worktop's front lip, which hides a strip of the
+  // door that is wider at the far side when seen at a grazing angle, so the outline's top corners
+  // are not on one level line of the door; its bottom edge, farther below the eyes, is. nullopt
+  // when both edges are vertical or `up` is zero.
   static std::optional<double> informative_edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
                                                       const Eigen::Vector3d& up_in_left_camera);
-  // The corner indices of the two sides nearer the image vertical, in the order rectangle_ends
-  // takes them: {0, 3} and {1, 2}, or {0, 1} and {3, 2}.
+  // The corner indices of the two sides nearer the image vertical: {0, 3} and {1, 2}, or {0, 1}
+  // and {3, 2}.
   static std::array<std::array<int, 2>, 2> vertical_sides(
       const std::array<Eigen::Vector2d, 4>& corners_px);
-
-  // The centre of the same rectangle when only one of its vertical sides (`good_side`, in the
-  // order of side_tilts) is a door edge in both images, and the other only in image
-  // `other_side_image` (0 left, 1 right): the other image's outline has an occluder's contour or
-  // a neighbour's strip there. The good side's ends come as in rectangle_centre; the other side's
-  // ends are where the rays of `other_side_image` through its corners meet the horizontal planes
-  // of the good side's ends (the top and bottom edges of a door are horizontal; `up` in the left
-  // camera frame). nullopt when a side used is nearer the image horizontal, a ray runs within
-  // 0.05 rad of its horizontal plane, a point is not in front of the cameras, or the other side
-  // found so leans horizontally by more than 30% of the good side's length.
-  std::optional<Eigen::Vector3d> rectangle_centre_from_one_side(
-      const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
-      const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,
-      const Eigen::Vector3d& up_in_left_camera, int good_side, int other_side_image) const;
 
   // A bar (a handle) seen as a segment in both images, one image's segment possibly only a
   // fragment of the bar (segmentation lost a part of it in that image).
@@ -167,7 +128,7 @@ class Triangulator {
 
   // Where the left camera's ray through `left_ideal_px` meets the horizontal plane (normal `up`,
   // left camera frame) through `on_plane_m`; nullopt when the ray runs within 0.05 rad of the
-  // plane (as in rectangle_centre_from_one_side) or meets it behind the camera.
+  // plane or meets it behind the camera.
   std::optional<Eigen::Vector3d> left_ray_on_level_plane(const Eigen::Vector2d& left_ideal_px,
                                                          const Eigen::Vector3d& on_plane_m,
                                                          const Eigen::Vector3d& up) const;

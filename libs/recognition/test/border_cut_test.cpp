@@ -157,7 +157,7 @@ TEST_F(BorderCutTest, WidthLeaningSideAndEpipolarGates) {
   Pair tilted = p;
   tilted.left.corners_px[1].x() += 20.0;
   EXPECT_TRUE(match({tilted.left}, {tilted.right}, &trace).empty());
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kEpipolar);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
   // The right image's whole edge 8 px lower at one end: off the epipolar line.
   Pair off = p;
   off.right.corners_px[2].y() += 8.0;
@@ -204,10 +204,17 @@ TEST_F(BorderCutTest, ASideIsCorrelatedOnlyWhenItsPeakIsClear) {
   };
   // The outlines' depth: f b / d = 554.3 * 0.09 / 25.
   const double outline_depth_m = calibration_.left.fx_px * 0.09 / 25.0;
-  // The band's edge scores higher than the door's own: the left side is moved to it, 0.8 m
-  // ahead, and the door is no longer one (refused or misplaced).
+  // The band's edge scores higher than the door's own: with no width to speak of (5 m), the left
+  // side is moved to it, 0.8 m ahead, and the door is no longer one (refused or misplaced).
+  const double max_width_m = options_.border_cut[0].max_width_m;
+  options_.border_cut[0].max_width_m = 5.0;
   options_.border_cut[0].min_peak_margin = 0.0;
   for (const double z : depths()) EXPECT_GT(std::abs(z - outline_depth_m), 0.1);
+  // With the class's greatest width, sides so placed are no door: the outlines' depth.
+  options_.border_cut[0].max_width_m = max_width_m;
+  const std::vector<double> wide = depths();
+  ASSERT_EQ(wide.size(), 1u);
+  EXPECT_NEAR(wide[0], outline_depth_m, 0.02);
   // With a margin, the two peaks are too close to choose: the side keeps the outlines' depth.
   options_.border_cut[0].min_peak_margin = 0.1;
   const std::vector<double> kept = depths();

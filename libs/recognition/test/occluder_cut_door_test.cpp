@@ -22,7 +22,6 @@ class OccluderCutDoorTest : public ::testing::Test {
   OccluderCutDoorTest() {
     options_.bar_types = {"handle"};
     options_.max_side_tilt_rad = 0.03;
-    options_.max_edge_slope_rad = 0.3;
     options_.height_range_m = {{"door", 0.5, 2.5}};
     StereoMatchOptions::BorderCutDoor door = test::cut_door_options({kHeightM}, 0.0);
     door.occluder_cut = true;
@@ -121,31 +120,23 @@ TEST_F(OccluderCutDoorTest, ALevelCutMustShowMoreThanADrawerFront) {
 }
 
 TEST_F(OccluderCutDoorTest, SidesOfUnequalHeightAreNoWholeDoor) {
-  // The contour crosses the right side 0.15 m above its bottom corner: the bottom edge slopes by
-  // 0.29 rad (the level-edge gate's 0.3 passes it), the sides are 0.716 and 0.566 m tall, 0.21
-  // of the taller apart (max_side_height_mismatch refuses more than 0.2).
-  const Pair p = occluded_door(kHeightM, kHeightM - 0.15);
+  // The contour crosses the right side 0.3 m above its bottom corner: the outline's bottom right
+  // corner is no door's corner, and the door's fit to all four leaves it tens of pixels off.
+  // (Less, and without the images to correlate the sides, the fit can turn the door until its
+  // bottom edge in the image slopes as the contour does: the right outline's sides are known to
+  // the position gate's 3 px.)
+  const Pair p = occluded_door(kHeightM, kHeightM - 0.3);
   std::vector<StereoPairTrace> trace;
-  // Without the gate, a pair whose centre is the visible part's, centimetres off.
-  const std::vector<StereoPercept> whole = match(p, &trace);
-  ASSERT_EQ(whole.size(), 1u);
-  EXPECT_GT((whole[0].left_camera_position_m - kCentre).norm(), 0.03);
-  // With it, refused as a whole door ...
-  options_.max_side_height_mismatch = 0.2;
   options_.border_cut[0].occluder_cut = false;
   EXPECT_TRUE(match(p, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kSideHeights);
-  EXPECT_NEAR(trace[0].value, 0.15 / kHeightM, 0.02);
-  EXPECT_EQ(trace[0].limit, 0.2);
-  // ... and placed from its level top edge as a door whose lower part is hidden.
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
+  EXPECT_GT(trace[0].value, trace[0].limit);
+  // Placed from its level top edge as a door whose lower part is hidden.
   options_.border_cut[0].occluder_cut = true;
   const std::vector<StereoPercept> placed = match(p, &trace);
   ASSERT_EQ(placed.size(), 1u);
   EXPECT_LT((placed[0].left_camera_position_m - kCentre).norm(), 2e-3);
-  // Sides within the bound: a whole pair as before.
-  const std::vector<StereoPercept> nearly = match(occluded_door(kHeightM, kHeightM - 0.1));
-  ASSERT_EQ(nearly.size(), 1u);
 }
 
 TEST_F(OccluderCutDoorTest, TheTopEdgeMustBeLevel) {

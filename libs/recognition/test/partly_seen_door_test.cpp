@@ -59,9 +59,10 @@ class PartlySeenDoorTest : public ::testing::Test {
   }
 
   std::optional<Candidate> judge(const std::array<DoorOutlineView, 2>& v, StereoPairTrace& trace,
-                                 double min_visible_if_level_m = 0.0) {
+                                 double min_visible_if_level_m = 0.0,
+                                 bool hidden_by_occluder = false) {
     return judge_partly_seen_door(0, 0, v, rig_, triangulator_, options_, door_, 0.0,
-                                  {3.0, min_visible_if_level_m}, trace);
+                                  {3.0, min_visible_if_level_m, hidden_by_occluder}, trace);
   }
 
   static constexpr double kWidthM = 0.45;
@@ -167,11 +168,13 @@ TEST_F(PartlySeenDoorTest, RefusesWhatTheViewsAndTheClassCannotPlace) {
   auto off = views(corner_states_of(BorderCut::kNone), corner_states_of(BorderCut::kNone));
   off[0].corners_ideal_px[1].x() += 10.0;
   EXPECT_FALSE(judge(off, trace).has_value());
-  EXPECT_EQ(trace.refused_by, StereoGate::kEpipolar);
-  // A corner taken for hidden where the door's own corner is seen: nothing hides it.
+  EXPECT_EQ(trace.refused_by, StereoGate::kRectangleFit);
+  // A corner taken for hidden by an occluder where the door's own corner is seen: nothing hides
+  // it. (The image border hides a corner where the door's may be.)
   const std::array<S, 4> hidden{S::kHidden, S::kSeen, S::kSeen, S::kSeen};
-  EXPECT_FALSE(judge(views(hidden, hidden), trace).has_value());
+  EXPECT_FALSE(judge(views(hidden, hidden), trace, 0.0, true).has_value());
   EXPECT_EQ(trace.refused_by, StereoGate::kEpipolar);
+  EXPECT_TRUE(judge(views(hidden, hidden), trace).has_value());
 }
 
 }  // namespace

@@ -117,6 +117,19 @@ class SideCorrelationTest : public ::testing::Test {
             static_cast<int>(std::abs(top.x() - bottom.x())) + 12,
             static_cast<int>(bottom.y() - top.y()) - 20};
   }
+  // The door class's sizes, the door's fit's prior (StereoMatchOptions::BorderCutDoor): this
+  // door's, at most `max_width_m` wide.
+  static StereoMatchOptions::BorderCutDoor door_class(double max_width_m = 1.0) {
+    StereoMatchOptions::BorderCutDoor door;
+    door.type = "door";
+    door.typical_heights_m = {2.0 * DoorScene::kHalfHeightM};
+    door.height_sigma_m = 0.12;
+    door.min_width_m = 0.3;
+    door.max_width_m = max_width_m;
+    door.typical_width_m = 2.0 * DoorScene::kHalfWidthM;
+    door.width_sigma_m = 0.1;
+    return door;
+  }
   // The door detections of outlines with these 3D corners, in the left and the right image.
   Detection left_door(const std::array<Eigen::Vector3d, 4>& c) const {
     return door_detection({left_px(c[0]), left_px(c[1]), left_px(c[2]), left_px(c[3])});
@@ -225,15 +238,14 @@ TEST_F(SideCorrelationTest, TheOuterEdgeIsNotTakenForTheGroove) {
                                           calibration_.right, left_T_right_, up());
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
   const std::array<Eigen::Vector3d, 4> groove = door_.corners(DoorScene::kStileM);
-  // The depth at which the left side's rays meet the right image's groove line.
+  // The depth of the side's corners triangulated with the right image's groove line.
   const detail::Triangulator triangulator(calibration_.left, calibration_.right, left_T_right_);
   const std::array<Eigen::Vector2d, 4> left{left_px(c[0]), left_px(c[1]), left_px(c[2]),
                                             left_px(c[3])};
-  const std::array<Eigen::Vector2d, 4> right_lost{right_px(groove[0]), right_px(groove[1]),
-                                                  right_px(groove[2]), right_px(groove[3])};
-  const auto ends = triangulator.rectangle_ends(left, right_lost);
-  ASSERT_TRUE(ends.has_value());
-  const double start_m = correlator.horizontal_distance((*ends)[2]);
+  const auto top = triangulator.point(left[1], right_px(groove[1]));
+  const auto bottom = triangulator.point(left[2], right_px(groove[2]));
+  ASSERT_TRUE(top && bottom);
+  const double start_m = correlator.horizontal_distance(0.5 * (*top + *bottom));
   const double truth_m = correlator.horizontal_distance(c[1]);
   EXPECT_GT(std::abs(start_m - truth_m), 0.1);  // the outlines' depth is decimetres off
   const auto depth = correlator.correlate(left[1], left[2], start_m, 25.0, 0.3, 6.0);
@@ -289,67 +301,66 @@ TEST_F(SideCorrelationTest, CrossMatchPlacesADoorWhoseRightOutlineLostAStile) {
   const Detection left = left_door(c);
   const Detection right_lost = right_door(lost);
   StereoMatchOptions options;
-  options.max_edge_slope_rad = 0.3;
   options.min_side_correlation = 0.7;
+  options.border_cut = {door_class()};
   std::vector<StereoPairTrace> trace;
-  // From the outlines alone the right side's depth is wrong, its edges slope: refused.
-  EXPECT_TRUE(match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
-                                    left_T_right_, options, up(), &trace)
-                  .empty());
-  ASSERT_EQ(trace.size(), 1u);
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
-  // With the images, both sides come from the correlation: the door's centre.
+  const auto error_m = [&](const StereoImages& images) {
+    const auto percepts =
+        match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
+                              left_T_right_, options, up(), &trace, images);
+    EXPECT_EQ(percepts.size(), 1u);
+    return percepts.empty() ? 1e9 : (percepts[0].left_camera_position_m - door_.centre_m).norm();
+  };
+  // With the images, both sides come from the correlation: the door's centre, and its
+  // covariance the pixel noise's.
   const StereoImages images{&left_grey_, &right_grey_};
-  const auto percepts =
-      match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
-                            left_T_right_, options, up(), &trace, images);
-  ASSERT_EQ(percepts.size(), 1u);
-  EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
-  // Off (0): the outlines' depth again, with the images or without.
+  const double correlated_m = error_m(images);
+  EXPECT_LT(correlated_m, 0.015);
+  // From the outlines alone the right side is the stile's edge, weighted at the position gate's
+  // tolerance: the door farther off. Off (0), likewise with the images.
+  const double outlines_m = error_m({});
+  EXPECT_GT(outlines_m, correlated_m);
   options.min_side_correlation = 0.0;
-  EXPECT_TRUE(match_and_triangulate({left}, {right_lost}, calibration_.left, calibration_.right,
-                                    left_T_right_, options, up(), nullptr, images)
-                  .empty());
+  EXPECT_EQ(error_m(images), outlines_m);
 }
 
 // One outline's side is tilted (its bottom corner 0.25 m inside the door: an occluder's contour,
-// a neighbour's strip), too far for the level-plane construction from the good side
-// (Triangulator::rectangle_centre_from_one_side allows 30% of the side's length). That side is
-// still a door edge in the other image, and the sweep from that image places it.
-TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsSweptFromTheOther) {
+// a neighbour's strip). Its corners there are merged in the door's fit: the other image's and
+// the other side's corners place the door, with the images or without, and also where the image
+// it would be swept from shows only the wall.
+TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsMergedThere) {
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
   std::array<Eigen::Vector3d, 4> tilted = c;
   tilted[2] = c[2] - 0.25 * door_.across;  // bottom right
   const cv::Mat wall(right_grey_.size(), CV_8UC1, cv::Scalar(190));
   StereoMatchOptions options;
   options.max_side_tilt_rad = 0.03;
-  options.max_edge_slope_rad = 0.3;
   options.min_side_correlation = 0.7;
+  options.border_cut = {door_class()};
   for (const bool tilted_in_left : {true, false}) {
     SCOPED_TRACE(tilted_in_left ? "tilted in the left outline" : "tilted in the right outline");
     const std::array<Eigen::Vector3d, 4>& l = tilted_in_left ? tilted : c;
     const std::array<Eigen::Vector3d, 4>& r = tilted_in_left ? c : tilted;
     const Detection left = left_door(l);
     const Detection right = right_door(r);
-    std::vector<StereoPairTrace> trace;
-    // The outlines alone: refused at the side gate.
-    EXPECT_TRUE(match_and_triangulate({left}, {right}, calibration_.left, calibration_.right,
-                                      left_T_right_, options, up(), &trace)
-                    .empty());
-    ASSERT_EQ(trace.size(), 1u);
-    EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
-    // With the images: the door's centre.
-    const auto percepts =
-        match_and_triangulate({left}, {right}, calibration_.left, calibration_.right, left_T_right_,
-                              options, up(), &trace, StereoImages{&left_grey_, &right_grey_});
-    ASSERT_EQ(percepts.size(), 1u) << stereo_gate_name(trace[0].refused_by) << " " << trace[0].value
-                                   << " limit " << trace[0].limit;
-    EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
-    // The image the side is swept from shows only the wall: nothing to place it by, refused.
     const StereoImages blind =
         tilted_in_left ? StereoImages{&left_grey_, &wall} : StereoImages{&wall, &right_grey_};
-    EXPECT_TRUE(match_and_triangulate({left}, {right}, calibration_.left, calibration_.right,
-                                      left_T_right_, options, up(), &trace, blind)
+    for (const StereoImages& images :
+         {StereoImages{}, StereoImages{&left_grey_, &right_grey_}, blind}) {
+      std::vector<StereoPairTrace> trace;
+      const auto percepts = match_and_triangulate({left}, {right}, calibration_.left,
+                                                  calibration_.right, left_T_right_, options, up(),
+                                                  &trace, images);
+      ASSERT_EQ(percepts.size(), 1u);
+      EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
+    }
+    // Both sides tilted in that outline: refused at the side gate.
+    std::array<Eigen::Vector3d, 4> both = tilted;
+    both[3] = c[3] + 0.25 * door_.across;
+    std::vector<StereoPairTrace> trace;
+    EXPECT_TRUE(match_and_triangulate(
+                    {left_door(tilted_in_left ? both : c)}, {right_door(tilted_in_left ? c : both)},
+                    calibration_.left, calibration_.right, left_T_right_, options, up(), &trace)
                     .empty());
     ASSERT_EQ(trace.size(), 1u);
     EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
@@ -502,19 +513,17 @@ TEST_F(SideCorrelationTest, ASidePlacedOnAnotherEdgeMakesNoDoorWiderThanItsClass
     return match_and_triangulate({left}, r, calibration_.left, calibration_.right, left_T_right_,
                                  options, up(), nullptr, images);
   };
-  // Without the width: the pair's right side on the copy, the centre decimetres off; the
-  // single view likewise.
+  // With no width to speak of (5 m): the pair's right side on the copy, the centre decimetres
+  // off; the single view likewise.
+  options.border_cut = {door_class(5.0)};
   const auto pair_off = match({right});
   ASSERT_EQ(pair_off.size(), 1u);
   EXPECT_GT((pair_off[0].left_camera_position_m - door_.centre_m).norm(), 0.2);
   const auto single_off = match({});
   ASSERT_EQ(single_off.size(), 1u);
   EXPECT_GT((single_off[0].left_camera_position_m - door_.centre_m).norm(), 0.2);
-  // With it.
-  StereoMatchOptions::BorderCutDoor door;
-  door.type = "door";
-  door.max_width_m = 1.0;
-  options.border_cut = {door};
+  // With the class's 1 m.
+  options.border_cut = {door_class()};
   const auto pair = match({right});
   ASSERT_EQ(pair.size(), 1u);
   EXPECT_LT((pair[0].left_camera_position_m - door_.centre_m).norm(), 1e-3);
@@ -535,8 +544,8 @@ TEST_F(SideCorrelationTest, ASideWithoutAMatchKeepsTheOutlinesDepth) {
   const Detection left = left_door(c);
   const Detection right = right_door(c);
   StereoMatchOptions options;
-  options.max_edge_slope_rad = 0.3;
   options.min_side_correlation = 0.7;
+  options.border_cut = {door_class()};
   const StereoImages images{&left_grey_, &wall};
   const auto percepts =
       match_and_triangulate({left}, {right}, calibration_.left, calibration_.right, left_T_right_,

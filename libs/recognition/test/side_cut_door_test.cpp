@@ -263,7 +263,7 @@ TEST_F(SideCutDoorTest, GatesRefuse) {
   Pair skewed = p;
   skewed.left.corners_px[3].y() += 40.0;
   EXPECT_TRUE(match(skewed, &trace).empty());
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kEpipolar);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
   // Cut along different borders: no pair at all.
   Pair mixed = p;
   mixed.right.border_cut = BorderCut::kRight;

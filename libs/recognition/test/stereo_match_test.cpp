@@ -61,6 +61,20 @@ class StereoMatchTest : public ::testing::Test {
                                  options_, up, trace);
   }
 
+  // The door class's sizes (StereoMatchOptions::BorderCutDoor): door pairs are placed by the
+  // door's fit (partly_seen_door.hpp).
+  void add_door_class() {
+    StereoMatchOptions::BorderCutDoor door;
+    door.type = "door";
+    door.typical_heights_m = {0.7};
+    door.height_sigma_m = 0.12;
+    door.min_width_m = 0.3;
+    door.max_width_m = 1.0;
+    door.typical_width_m = 0.5;
+    door.width_sigma_m = 0.1;
+    options_.border_cut.push_back(door);
+  }
+
   head::StereoCalibration calibration_ = sim_calibration();
   Eigen::Isometry3d left_T_right_ = calibration_.left_T_right();
   StereoMatchOptions options_;
@@ -105,20 +119,31 @@ Pair door_pair(const Eigen::Vector3d& centre_m, const head::StereoCalibration& c
   return p;
 }
 
-TEST_F(StereoMatchTest, RectangleCentreFromTheVerticalSides) {
+TEST_F(StereoMatchTest, DoorFittedToBothOutlines) {
   const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  const Eigen::Vector3d up(0.0, -1.0, 0.0);
   const Pair p = door_pair(centre, calibration_, left_T_right_);
-  const auto exact = match({p.left}, {p.right});
+  add_door_class();
+  const auto exact = match({p.left}, {p.right}, up);
   ASSERT_EQ(exact.size(), 1u);
   EXPECT_LT((exact[0].left_camera_position_m - centre).norm(), 1e-3);
+  // The fit's covariance: without the images to correlate the sides, the right outline's are
+  // known to the position gate's tolerance, and the depth's sigma is about what that gives two
+  // sides' disparities, z^2 / (f b) sigma / sqrt(2).
+  const double f = calibration_.left.fx_px, b = calibration_.baseline_m();
+  const double expected_m = 2.5 * 2.5 / (f * b) * options_.max_epipolar_distance_px / std::sqrt(2.0);
+  const double depth_sigma_m = std::sqrt(exact[0].left_camera_covariance_m2(2, 2));
+  EXPECT_GT(depth_sigma_m, 0.5 * expected_m);
+  EXPECT_LT(depth_sigma_m, 2.0 * expected_m);
   // Segmentation adds a 6 px strip along the bottom of the right outline only: its reference
   // point moves down 3 px (past the 3 px gate, within 5% of the height) and its bottom corners
-  // 6 px. The centre from the vertical sides' disparity and the left image's corners stays.
+  // 6 px. The right image says where the vertical sides are, the left where they end: the door
+  // stays.
   Detection strip = p.right;
   strip.reference_px.y() += 3.5;
   strip.corners_px[2].y() += 6.0;
   strip.corners_px[3].y() += 6.0;
-  const auto moved = match({p.left}, {strip});
+  const auto moved = match({p.left}, {strip}, up);
   ASSERT_EQ(moved.size(), 1u);
   EXPECT_LT((moved[0].left_camera_position_m - centre).norm(), 0.01);
   // The same shift from the reference points alone is a depth error of decimetres.
@@ -398,31 +423,27 @@ TEST_F(StereoMatchTest, HandlesInsideAreCountedWhenOnlyOneImageHasAnOutline) {
   EXPECT_TRUE(refused);
 }
 
-TEST_F(StereoMatchTest, DoorEdgesMustBeLevelIn3D) {
-  // The camera pitched 0.4 rad up, the door above the eyes: its top and bottom edges between
-  // the sides' 3D ends are level for exact outlines.
+TEST_F(StereoMatchTest, OutlinesThatNoDoorFitsAreRefused) {
+  // The camera pitched 0.4 rad up, the door above the eyes: the door fits exact outlines.
   const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
   const Eigen::Vector3d up = -down;
   const Pair p = door_pair({0.1, 0.6, 2.5}, calibration_, left_T_right_, down);
-  options_.max_edge_slope_rad = 0.3;
+  add_door_class();
   std::vector<StereoPairTrace> trace;
   EXPECT_EQ(match({p.left}, {p.right}, up, &trace).size(), 1u);
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
-  // The right outline lost the stile of the door's right side (8 px): that side's disparity, so
-  // its depth, is wrong, and its ends on the left rays move down with the depth.
-  Pair lost = p;
-  lost.right.corners_px[1].x() -= 8.0;
-  lost.right.corners_px[2].x() -= 8.0;
-  EXPECT_TRUE(match({lost.left}, {lost.right}, up, &trace).empty());
+  // An occluder's contour crosses the door's right side 30 px above its bottom corner in the
+  // left image: a door's two sides are equally tall, and no door fits that corner.
+  Pair occluded = p;
+  occluded.left.corners_px[2].y() -= 30.0;
+  EXPECT_TRUE(match({occluded.left}, {occluded.right}, up, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kEdgeSlope);
-  EXPECT_GT(trace[0].value, 0.3);
-  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "edge_slope");
-  // Off, or without the up direction: not checked.
-  EXPECT_EQ(match({lost.left}, {lost.right}).size(), 1u);
-  options_.max_edge_slope_rad = 0.0;
-  EXPECT_EQ(match({lost.left}, {lost.right}, up).size(), 1u);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
+  EXPECT_GT(trace[0].value, trace[0].limit);
+  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "rectangle_fit");
+  // Without the up direction there is no fit: the pair is placed by its reference points.
+  EXPECT_EQ(match({occluded.left}, {occluded.right}).size(), 1u);
 }
 
 TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
@@ -432,6 +453,7 @@ TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
   // and cannot be triangulated, although its outline's centre can. It must be refused as a
   // candidate, leaving the right detection to the other pair, not assigned and then dropped.
   const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_);
+  add_door_class();
   Detection behind = p.left;
   behind.reference_px.x() -= 60.0;
   Detection other = p.left;
@@ -439,7 +461,7 @@ TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
   std::vector<StereoPairTrace> trace;
   const auto percepts =
       match_and_triangulate({behind, other}, {p.right}, calibration_.left, calibration_.right,
-                            left_T_right_, options_, Eigen::Vector3d::Zero(), &trace);
+                            left_T_right_, options_, Eigen::Vector3d(0.0, -1.0, 0.0), &trace);
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_EQ(percepts[0].left_detection, 1);
   EXPECT_LT((percepts[0].left_camera_position_m - Eigen::Vector3d(0.1, 0.3, 2.5)).norm(), 1e-3);
@@ -662,7 +684,6 @@ stereo:
   height_range_m: {door: [0.5, 2.5]}
   max_side_tilt_rad: 0.05
   max_edge_slope_rad: 0.3
-  max_side_height_mismatch: 0.25
   bar_types: [handle]
   min_side_correlation: 0.7
   min_single_view_correlation: 0.75
@@ -702,7 +723,6 @@ stereo:
   EXPECT_EQ(o.height_range_m[0].max_m, 2.5);
   EXPECT_EQ(o.max_side_tilt_rad, 0.05);
   EXPECT_EQ(o.max_edge_slope_rad, 0.3);
-  EXPECT_EQ(o.max_side_height_mismatch, 0.25);
   EXPECT_EQ(o.bar_types, std::vector<std::string>{"handle"});
   EXPECT_EQ(o.min_side_correlation, 0.7);
   EXPECT_EQ(o.min_single_view_correlation, 0.75);
@@ -750,8 +770,7 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_NE(stereo_error("  pixel_sigma_px: -1\n").find("s.yaml:2: stereo.pixel_sigma_px"),
             std::string::npos);
   EXPECT_NE(stereo_error("  max_area_ratio: .nan\n").find("max_area_ratio"), std::string::npos);
-  EXPECT_NE(stereo_error("  max_side_height_mismatch: 1.5\n")
-                .find("s.yaml:2: stereo.max_side_height_mismatch"),
+  EXPECT_NE(stereo_error("  max_side_height_mismatch: 0.2\n").find("unknown key"),
             std::string::npos);
   EXPECT_NE(stereo_error("  max_edge_slope_rad: 2\n").find("s.yaml:2: stereo.max_edge_slope_rad"),
             std::string::npos);

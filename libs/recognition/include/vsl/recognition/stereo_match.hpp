@@ -56,25 +56,16 @@ struct StereoMatchOptions {
   // Rectangle outlines (detections with corners: doors) whose sides nearer the image vertical
   // are not vertical in 3D within this angle, in either image, are no door's front face (an
   // occluder's contour or a neighbour's strip gave the outline a side). When only one side in
-  // one image is so tilted, the pair's centre comes from the other three (the good side from
-  // both images, the other side from the image where it is vertical, its ends at the heights of
-  // the good side's ends); otherwise the pair is refused (but see BorderCutDoor::occluded_corner
-  // for a side that is no door edge in both images). Needs the up direction
-  // (match_and_triangulate's up_in_left_camera); 0 turns it off.
+  // one image is so tilted, its corners there are merged in the door's fit (partly_seen_door.hpp:
+  // the other image's and the other side's corners place the door); otherwise the pair is refused
+  // (but see BorderCutDoor::occluded_corner for a side that is no door edge in both images).
+  // Needs the up direction (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
-  // Rectangle outlines whose centre comes from both vertical sides (Triangulator::
-  // rectangle_centre) are refused when the top or bottom edge between the sides' 3D ends slopes
-  // by more than this angle: a door's are level, and a side whose horizontal position differs
-  // between the images (a stile lost, a neighbour's strip added in one image) has a wrong depth
-  // that tilts them. Needs the up direction; 0 turns it off.
+  // Single-view door outlines (min_single_view_correlation) are refused when the level edge seen
+  // farther from the cameras' height (Triangulator::informative_edge_slope), between the sides'
+  // swept ends, slopes by more than this angle: a door's are level, and a side swept to a wrong
+  // depth tilts them. Needs the up direction; 0 turns it off.
   double max_edge_slope_rad = 0.0;
-  // The same outlines are refused when their two vertical sides, placed in 3D, differ in height
-  // by more than this fraction of the taller: a door's sides are equal, and an occluder (a
-  // chair's seat, the table's top) that hides a corner in both images shortens one side in both,
-  // where the side gate and the level-edge gate can pass it and the centre lands tens of
-  // centimetres off. Such a pair may still be a door whose lower part is hidden
-  // (BorderCutDoor::occluder_cut). Needs the up direction; 0 turns it off.
-  double max_side_height_mismatch = 0.0;
   // Types whose detections are bars (handles): a pair of such elongated detections (both at
   // least min_elongation_for_orientation, their axis at least 45 degrees from the epipolar line)
   // is matched as two views of one bar segment (Triangulator::bar_span) rather than by its
@@ -93,13 +84,12 @@ struct StereoMatchOptions {
   // searched within 6 px plus a quarter of the outline's width of the outlines' depth; not where
   // the right outline's side is. One image's outline often lacks a stile or a rail that the
   // other keeps, and that side's disparity from the outlines is then off by the stile's width.
-  // A side whose best score is below this keeps the outlines' depth (a side without texture to
-  // correlate: the middle of a double door, a reveal of sub-pixel width). The edge-slope gate
-  // (max_edge_slope_rad) then tests the sides so placed. A side that the side gate finds tilted
-  // in one outline only (max_side_tilt_rad), and that the level planes through the other side
-  // cannot place, is swept from the other image instead, and the pair is kept only if it scores
-  // this much. Needs the images (match_and_triangulate's `images`) and the up direction; 0 turns
-  // it off.
+  // A side whose best score is below this, or not BorderCutDoor::min_peak_margin above its
+  // second-best, keeps the outlines' depth (a side without texture to correlate: the middle of a
+  // double door, a reveal of sub-pixel width; a run of equal doors); so do both sides when the
+  // sides so placed make the door wider than BorderCutDoor::max_width_m (a peak on another door's
+  // edge). Needs the images (match_and_triangulate's `images`) and the up direction; 0 turns it
+  // off.
   double min_side_correlation = 0.0;
   // Rectangle outlines (doors) that no pair took, placed from their own image alone: a door
   // whose outline is clean in one image is often merged with a neighbour, or a little off the
@@ -154,13 +144,14 @@ struct StereoMatchOptions {
   // door's two stand 3-6 cm either side of the reveal (twin_handle_split.hpp).
   // Needs bar_types; 0 turns it off.
   double max_twin_handle_gap = 0.0;
-  // Optional, per class: the class's sizes, the prior of a door seen in part (partly_seen_door.hpp,
-  // docs/recognition.md). A pair of outlines that the image border cuts (Detection::border_cut),
-  // or two whole outlines refused in a way an occluder explains (occluded_corner, occluder_cut),
-  // is placed by one fit of a vertical rectangle to the corners each image shows, a size
-  // neither image gives taken from these. Each vertical side is placed where the images around it
-  // correlate (min_side_correlation), when that peak is clear (min_peak_margin). Detections cut
-  // along a border, of classes not listed here, are not paired. Needs the up direction.
+  // Optional, per class: the class's sizes, the prior of the door's fit (partly_seen_door.hpp,
+  // docs/recognition.md). A pair of door outlines, whole, cut by the image border
+  // (Detection::border_cut) or refused in a way an occluder explains (occluded_corner,
+  // occluder_cut), is placed by one fit of a vertical rectangle to the corners each image shows,
+  // a size neither image gives taken from these. Each vertical side is placed where the images
+  // around it correlate (min_side_correlation), when that peak is clear (min_peak_margin).
+  // Detections cut along a border, of classes not listed here, are not paired; whole pairs of
+  // such classes are placed by their reference points. Needs the up direction.
   struct BorderCutDoor {
     std::string type;
     // The class's common door heights, ascending, metres. A door whose top or bottom neither
@@ -203,17 +194,16 @@ struct StereoMatchOptions {
     // neighbour of its colour, unseen in the other image, where segmentation merged the two).
     // The other tests are from_one_side's.
     bool merged_side = false;
-    // A pair of whole door outlines that the position or the side gate refused, placed with one
-    // corner hidden in both images (an occluder in front of the door: a chair's back, a table
-    // top): when exactly one corner so hidden lets the fit meet max_epipolar_distance_px and
-    // that corner's outline point lies inside the fitted door in both images, at least that far
-    // from the door's own corner in one.
+    // A pair of whole door outlines that the position gate, the side gate or the door's fit
+    // refused, placed with one corner hidden in both images (an occluder in front of the door: a
+    // chair's back, a table top): when exactly one corner so hidden lets the fit meet
+    // max_epipolar_distance_px and that corner's outline point lies inside the fitted door in both
+    // images, at least that far from the door's own corner in one.
     bool occluded_corner = false;
-    // A pair of whole door outlines that the height gate finds too short (height_range_m), the
-    // level-edge gate (max_edge_slope_rad) or the side-heights gate (max_side_height_mismatch)
-    // refuses, placed with its lower corners on the door's sides (an occluder in front of the
-    // door, a chair's seat or the table's top, hides its lower part in both images), its height
-    // the class's (typical_heights_m), when the fit meets max_epipolar_distance_px.
+    // A pair of whole door outlines that the height gate finds too short (height_range_m) or the
+    // door's fit refuses, placed with its lower corners on the door's sides (an occluder in front
+    // of the door, a chair's seat or the table's top, hides its lower part in both images), its
+    // height the class's (typical_heights_m), when the fit meets max_epipolar_distance_px.
     bool occluder_cut = false;
     // With occluder_cut: a pair whose lower edge is level on the door's face (within 0.05 rad, as
     // a table's edge along the cupboards is) shows at least this much of the door, metres: a
@@ -288,7 +278,6 @@ enum class StereoGate {
   kAreaRatio,
   kOrientation,
   kTriangulation,
-  kEdgeSlope,
   kDepth,
   kExtent,
   kHeight,
@@ -298,8 +287,9 @@ enum class StereoGate {
   kBarsInside,
   // bar detections on an outline one above another (max_bar_height_spread)
   kStackedBars,
-  // a whole pair's vertical sides of unequal height in 3D (max_side_height_mismatch)
-  kSideHeights
+  // a corner of a door's outline farther from the fitted rectangle than the outlines' tolerance
+  // (docs/recognition.md, "Doors: one model")
+  kRectangleFit
 };
 const char* stereo_gate_name(StereoGate gate);  // "epipolar", "side_tilt", ...
 
@@ -313,7 +303,8 @@ struct StereoPairTrace {
   double cost = 0.0;      // a candidate's normalized cost
   bool assigned = false;  // a candidate the assignment kept (a percept)
   // A candidate placed with one corner hidden by an occluder in both images after the position
-  // or side gate refused it (BorderCutDoor::occluded_corner, docs/recognition.md).
+  // gate, the side gate or the door's fit refused it (BorderCutDoor::occluded_corner,
+  // docs/recognition.md).
   bool occluded_corner = false;
 };
 
