@@ -48,11 +48,11 @@
 //
 // Accepted when every image residual is within the caller's tolerance (PartlySeenLimits); a
 // hidden corner's outline point lies within the door's projection (and, hidden in both images by
-// an occluder, away from the door's own corner); a measured height is within height_range_m, a measured width
-// at least min_width_m, any width at most max_width_m; a size from the prior has at least half of
-// it in view; the door is seen from within about 78 deg of head-on, within the depth range; a
-// level lower edge shows PartlySeenLimits::min_visible_if_level_m; and, resting on a hidden
-// corner, the centre's standard deviation is at most 0.25 m. The whole, cut, corner, occluder,
+// an occluder, away from the door's own corner); a measured height is within height_range_m, a
+// measured width at least min_width_m, any width at most max_width_m; a size from the prior has
+// at least half of it in view; the door is seen from within about 78 deg of head-on, within the
+// depth range; a level lower edge shows PartlySeenLimits::min_visible_if_level_m; and, resting on
+// a hidden corner, the centre's standard deviation is at most 0.25 m. The whole, cut, corner, occluder,
 // one-hidden-corner and merged-side cases are these states, not separate constructions.
 #pragma once
 
