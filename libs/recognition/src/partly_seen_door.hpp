@@ -52,8 +52,9 @@
 // measured width at least min_width_m, any width at most max_width_m; a size from the prior has
 // at least half of it in view; the door is seen from within about 78 deg of head-on, within the
 // depth range; a level lower edge shows PartlySeenLimits::min_visible_if_level_m; and, resting on
-// a hidden corner, the centre's standard deviation is at most 0.25 m. The whole, cut, corner, occluder,
-// one-hidden-corner and merged-side cases are these states, not separate constructions.
+// a hidden corner, the centre's standard deviation is at most 0.25 m. The whole, cut, corner,
+// occluder, one-hidden-corner and merged-side cases are these states, not separate
+// constructions.
 #pragma once
 
 #include <Eigen/Core>
