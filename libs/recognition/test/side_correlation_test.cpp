@@ -348,9 +348,9 @@ TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsMergedThere) {
     for (const StereoImages& images :
          {StereoImages{}, StereoImages{&left_grey_, &right_grey_}, blind}) {
       std::vector<StereoPairTrace> trace;
-      const auto percepts = match_and_triangulate({left}, {right}, calibration_.left,
-                                                  calibration_.right, left_T_right_, options, up(),
-                                                  &trace, images);
+      const auto percepts =
+          match_and_triangulate({left}, {right}, calibration_.left, calibration_.right,
+                                left_T_right_, options, up(), &trace, images);
       ASSERT_EQ(percepts.size(), 1u);
       EXPECT_LT((percepts[0].left_camera_position_m - door_.centre_m).norm(), 0.015);
     }
@@ -358,9 +358,9 @@ TEST_F(SideCorrelationTest, ASideTiltedInOneOutlineIsMergedThere) {
     std::array<Eigen::Vector3d, 4> both = tilted;
     both[3] = c[3] + 0.25 * door_.across;
     std::vector<StereoPairTrace> trace;
-    EXPECT_TRUE(match_and_triangulate(
-                    {left_door(tilted_in_left ? both : c)}, {right_door(tilted_in_left ? c : both)},
-                    calibration_.left, calibration_.right, left_T_right_, options, up(), &trace)
+    EXPECT_TRUE(match_and_triangulate({left_door(tilted_in_left ? both : c)},
+                                      {right_door(tilted_in_left ? c : both)}, calibration_.left,
+                                      calibration_.right, left_T_right_, options, up(), &trace)
                     .empty());
     ASSERT_EQ(trace.size(), 1u);
     EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);

@@ -131,7 +131,8 @@ TEST_F(StereoMatchTest, DoorFittedToBothOutlines) {
   // known to the position gate's tolerance, and the depth's sigma is about what that gives two
   // sides' disparities, z^2 / (f b) sigma / sqrt(2).
   const double f = calibration_.left.fx_px, b = calibration_.baseline_m();
-  const double expected_m = 2.5 * 2.5 / (f * b) * options_.max_epipolar_distance_px / std::sqrt(2.0);
+  const double expected_m =
+      2.5 * 2.5 / (f * b) * options_.max_epipolar_distance_px / std::sqrt(2.0);
   const double depth_sigma_m = std::sqrt(exact[0].left_camera_covariance_m2(2, 2));
   EXPECT_GT(depth_sigma_m, 0.5 * expected_m);
   EXPECT_LT(depth_sigma_m, 2.0 * expected_m);
