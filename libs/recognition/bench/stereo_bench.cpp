@@ -16,6 +16,7 @@
 // sides (partly_seen_door.hpp). BM_SideCutDoor: a pair of door outlines cut by the left border,
 // placed from their whole side and the typical width (partly_seen_door.hpp). BM_TwinHandleSplit: 20
 // door outlines each split between a double door's two handles (twin_handle_split.hpp).
+// BM_WholeDoorPair: a pair of whole door outlines placed by the door's fit, both sides correlated.
 // BM_CutBarPair: a handle cut by the top border in both images, placed from its own end and the
 // class's typical length (cut_bar.hpp). No main
 // here: the fragments share vsl_recognition_bench's.
@@ -136,6 +137,42 @@ void BM_SingleViewDoor(benchmark::State& state) {
   state.counters["depth_m"] = depth_m;
 }
 BENCHMARK(BM_SingleViewDoor)->Unit(benchmark::kMicrosecond);
+
+// BM_WholeDoorPair: a pair of whole door outlines, a dark door 140 px wide and 200 px tall 2 m
+// ahead on a bright wall, both sides correlated and the door's fit (partly_seen_door.hpp), the
+// correlators' set-up included.
+void BM_WholeDoorPair(benchmark::State& state) {
+  const head::StereoCalibration calibration =
+      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
+  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
+  left(cv::Rect(160, 140, 140, 200)).setTo(70);
+  right(cv::Rect(135, 140, 140, 200)).setTo(70);
+  StereoMatchOptions options;
+  options.min_side_correlation = 0.7;
+  options.max_side_tilt_rad = 0.03;
+  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1)};
+  const auto outline = [](double u) {
+    Detection d = test::top_cut_door_outline(u);
+    d.border_cut = BorderCut::kNone;
+    d.corners_px = {{u - 0.5, 139.5}, {u + 139.5, 139.5}, {u + 139.5, 339.5}, {u - 0.5, 339.5}};
+    d.reference_px = {u + 69.5, 239.5};
+    return d;
+  };
+  const std::vector<Detection> left_detections{outline(160.0)};
+  const std::vector<Detection> right_detections{outline(135.0)};
+  double depth_m = 0.0;
+  for (auto _ : state) {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
+        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
+    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    benchmark::DoNotOptimize(depth_m);
+  }
+  if (!(depth_m > 0.0)) state.SkipWithError("the door was not placed");
+  state.counters["depth_m"] = depth_m;
+}
+BENCHMARK(BM_WholeDoorPair)->Unit(benchmark::kMicrosecond);
 
 // BM_BorderCutPair's and BM_OneSideDoor's scene: a dark door 140 px wide 2 m ahead on a bright
 // wall, its top above the image: 200 px (0.72 m) of it in view, 25 px of disparity.
