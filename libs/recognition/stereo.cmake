@@ -11,6 +11,8 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/twin_handle_split.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/cut_bar.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pair.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pairing.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_views.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_match.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_assignment.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_options.cpp

@@ -1,8 +1,10 @@
-// Left-right cross match and triangulation (paper §2.1): the gates of each pair, in order. The
-// door outlines' own gates: door_pair.hpp; the door's fit, whole, cut by the image border or by
-// an occluder: partly_seen_door.hpp; doors from one image: single_view.hpp.
-// Geometry: epipolar.hpp (gate) and triangulation.hpp (point and covariance); the one-to-one
-// assignment: stereo_assignment.hpp.
+// Left-right cross match and triangulation (paper §2.1), as its stages: both images' detections
+// (stereo_views.hpp); every pair judged, its gates in order (PairJudge; the door outlines' own
+// gates: door_pair.hpp; the door's fit, whole, cut by the image border or by an occluder:
+// door_pairing.hpp, partly_seen_door.hpp); the one-to-one assignment (stereo_assignment.hpp); the
+// whole door pairs an occluder explains (door_pairing.hpp); doors from one image (single_view.hpp,
+// one_side_door.hpp). Geometry: epipolar.hpp (gate) and triangulation.hpp (point and
+// covariance).
 #include "vsl/recognition/stereo_match.hpp"
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include "bars_on_outline.hpp"
 #include "cut_bar.hpp"
 #include "door_pair.hpp"
+#include "door_pairing.hpp"
 #include "epipolar.hpp"
 #include "one_side_door.hpp"
 #include "pair_refusal.hpp"
@@ -22,6 +25,7 @@
 #include "side_correlation.hpp"
 #include "single_view.hpp"
 #include "stereo_assignment.hpp"
+#include "stereo_views.hpp"
 #include "triangulation.hpp"
 
 namespace vsl::recognition {
@@ -30,22 +34,6 @@ namespace {
 // Added to each bar's mean width (pixels) before their ratio is compared: the quantization of a
 // thin bar's two edges.
 constexpr double kBarWidthQuantizationPx = 1.0;
-
-// Undistorted corners of a detection's outline (empty unless it has four).
-std::vector<detail::IdealPixel> undistorted_corners(const Detection& d,
-                                                    const head::CameraIntrinsics& intrinsics) {
-  if (d.corners_px.size() != 4) return {};
-  return detail::undistort(d.corners_px, intrinsics);
-}
-
-// The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the
-// bar's ends along the major axis, handle_recognizer.cpp) plus and minus half the major extent.
-std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {
-  const Eigen::Vector2d half =
-      0.5 * d.major_extent_px *
-      Eigen::Vector2d(std::cos(d.major_axis_angle_rad), std::sin(d.major_axis_angle_rad));
-  return {d.reference_px - half, d.reference_px + half};
-}
 
 // Orientation difference of two undirected axes (angles in [0, pi)), in [0, pi / 2].
 double axis_difference_rad(double a, double b) {
@@ -60,95 +48,16 @@ double elongation(const Detection& d) {
                                  : std::numeric_limits<double>::infinity();
 }
 
-double reference_depth_offset(const StereoMatchOptions& options, const std::string& type) {
-  for (const auto& [name, offset] : options.reference_depth_offset_m) {
-    if (name == type) return offset;
-  }
-  return 0.0;
-}
-
-const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& options,
-                                                    const std::string& type) {
-  for (const StereoMatchOptions::ExtentRange& range : options.major_extent_range_m) {
-    if (range.type == type) return &range;
-  }
-  return nullptr;
-}
-
-const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOptions& options,
-                                                         const std::string& type) {
-  for (const StereoMatchOptions::BorderCutDoor& height : options.border_cut) {
-    if (height.type == type) return &height;
-  }
-  return nullptr;
-}
-
-// The class's greatest width, metres (its border_cut entry's max_width_m); 0 when not configured.
-double class_max_width_m(const StereoMatchOptions& options, const std::string& type) {
-  const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, type);
-  return door ? door->max_width_m : 0.0;
-}
-
-const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
-                                             const std::string& type) {
-  for (const StereoMatchOptions::CutBar& bar : options.cut_bars) {
-    if (bar.type == type) return &bar;
-  }
-  return nullptr;
-}
-
-const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
-                                                    const std::string& type) {
-  for (const StereoMatchOptions::ExtentRange& range : options.height_range_m) {
-    if (range.type == type) return &range;
-  }
-  return nullptr;
-}
-
-// The cut an image shows of a door that the other image shows cut by `cut`, less its left or
-// right border: the right camera sees less beyond its left border, the left camera less beyond
-// its right one.
-BorderCut without_left(BorderCut cut) {
-  switch (cut) {
-    case BorderCut::kLeft:
-      return BorderCut::kNone;
-    case BorderCut::kTopLeft:
-      return BorderCut::kTop;
-    case BorderCut::kBottomLeft:
-      return BorderCut::kBottom;
-    default:
-      return cut;
-  }
-}
-BorderCut without_right(BorderCut cut) {
-  switch (cut) {
-    case BorderCut::kRight:
-      return BorderCut::kNone;
-    case BorderCut::kTopRight:
-      return BorderCut::kTop;
-    case BorderCut::kBottomRight:
-      return BorderCut::kBottom;
-    default:
-      return cut;
-  }
-}
-
-// Whether two cut views can be one door: cut alike, or the right image cut by its left border
-// where the left image is not, or the left image by its right border where the right is not.
-bool cuts_of_one_door(BorderCut left, BorderCut right) {
-  const bool at_image_corner = left == BorderCut::kTopLeft || left == BorderCut::kTopRight ||
-                               left == BorderCut::kBottomLeft || left == BorderCut::kBottomRight;
-  return (left == right && !at_image_corner) ||
-         (right != without_left(right) && without_left(right) == left) ||
-         (left != without_right(left) && without_right(left) == right);
-}
-
-// Whole outlines refused in a way an occluder hiding the door's lower part explains: too short,
-// or corners off the door's fit (a sloping lower edge, one side shorter than the other).
-bool may_be_occluder_cut(const StereoPairTrace& refusal) {
-  return (refusal.refused_by == StereoGate::kHeight && refusal.value < refusal.limit) ||
-         refusal.refused_by == StereoGate::kRectangleFit;
-}
+using detail::border_cut_door;
+using detail::class_max_width_m;
+using detail::corner_array;
+using detail::cut_bar_of;
+using detail::Explanation;
+using detail::extent_range;
+using detail::height_range;
+using detail::judge_door;
+using detail::reference_depth_offset;
+using detail::StereoViews;
 
 // Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
 // class's typical length, and the border when it cuts both.
@@ -156,111 +65,6 @@ struct CutBarViews {
   const StereoMatchOptions::CutBar* bar = nullptr;
   BorderCut both = BorderCut::kNone;
 };
-
-std::array<Eigen::Vector2d, 4> corner_array(const std::vector<detail::IdealPixel>& corners) {
-  std::array<Eigen::Vector2d, 4> out;
-  for (int k = 0; k < 4; ++k) out[k] = corners[k].ideal_px;
-  return out;
-}
-
-// The detections of both images as the stages below need them: undistorted reference points,
-// outline corners and bar ends, the rig's epipolar geometry and triangulation, and the side
-// correlators (both ways) when the options and images allow them.
-struct StereoViews {
-  StereoViews(const std::vector<Detection>& left_in, const std::vector<Detection>& right_in,
-              const head::CameraIntrinsics& left_intrinsics_in,
-              const head::CameraIntrinsics& right_intrinsics_in,
-              const Eigen::Isometry3d& left_T_right_in, const StereoMatchOptions& options_in,
-              const Eigen::Vector3d& up_in, const StereoImages& images)
-      : left(left_in),
-        right(right_in),
-        left_intrinsics(left_intrinsics_in),
-        right_intrinsics(right_intrinsics_in),
-        left_T_right(left_T_right_in),
-        options(options_in),
-        up(up_in),
-        epipolar(left_intrinsics, right_intrinsics, left_T_right),
-        triangulator(left_intrinsics, right_intrinsics, left_T_right),
-        rig{detail::camera_matrix(left_intrinsics), detail::camera_matrix(right_intrinsics),
-            left_T_right.inverse(), up.norm() > 0.0 ? up.normalized() : up},
-        log_max_area_ratio(std::log(std::max(options.max_area_ratio, 1.0 + 1e-9))) {
-    std::vector<Eigen::Vector2d> left_raw, right_raw;
-    for (const Detection& d : left) left_raw.push_back(d.reference_px);
-    for (const Detection& d : right) right_raw.push_back(d.reference_px);
-    left_ideal = detail::undistort(left_raw, left_intrinsics);
-    right_ideal = detail::undistort(right_raw, right_intrinsics);
-    if (options.min_side_correlation > 0.0 && images.left_grey && images.right_grey &&
-        up.norm() > 0.0) {
-      correlator.emplace(*images.left_grey, *images.right_grey, left_intrinsics, right_intrinsics,
-                         left_T_right, up);
-      reverse_correlator.emplace(*images.right_grey, *images.left_grey, right_intrinsics,
-                                 left_intrinsics, left_T_right.inverse(),
-                                 left_T_right.linear().transpose() * up);
-    }
-    for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
-    for (const Detection& d : right) {
-      right_corners.push_back(undistorted_corners(d, right_intrinsics));
-    }
-    left_bar_ends = bar_ends(left, left_intrinsics);
-    right_bar_ends = bar_ends(right, right_intrinsics);
-  }
-
-  // Undistorted ends of the bar-type detections (empty for the others).
-  std::vector<std::vector<detail::IdealPixel>> bar_ends(
-      const std::vector<Detection>& detections, const head::CameraIntrinsics& intrinsics) const {
-    std::vector<std::vector<detail::IdealPixel>> out(detections.size());
-    for (std::size_t i = 0; i < detections.size(); ++i) {
-      const Detection& d = detections[i];
-      if (d.corners_px.empty() && d.major_extent_px > 0.0 && detail::is_bar_type(options, d.type)) {
-        out[i] = detail::undistort(bar_ends_raw(d), intrinsics);
-      }
-    }
-    return out;
-  }
-
-  // The worse of the two outlines' verdicts on the handles they hold (bars_on_outline.hpp).
-  detail::BarVerdict judge_bars(const Detection& dl, const Detection& dr,
-                                int max_bars_inside) const {
-    const detail::BarVerdict on_left =
-        detail::judge_bars_on_outline(left, dl, max_bars_inside, options);
-    return on_left.gate != StereoGate::kNone
-               ? on_left
-               : detail::judge_bars_on_outline(right, dr, max_bars_inside, options);
-  }
-  detail::DoorOutlines outlines(int l, int r) const {
-    return {corner_array(left_corners[l]), corner_array(right_corners[r])};
-  }
-  const detail::SideCorrelator* forward() const { return correlator ? &*correlator : nullptr; }
-  const detail::SideCorrelator* reverse() const {
-    return reverse_correlator ? &*reverse_correlator : nullptr;
-  }
-
-  const std::vector<Detection>& left;
-  const std::vector<Detection>& right;
-  const head::CameraIntrinsics& left_intrinsics;
-  const head::CameraIntrinsics& right_intrinsics;
-  const Eigen::Isometry3d& left_T_right;
-  const StereoMatchOptions& options;
-  const Eigen::Vector3d& up;  // in the left camera frame; zero when unknown
-  const detail::EpipolarGeometry epipolar;
-  const detail::Triangulator triangulator;
-  const detail::DoorRig rig;  // the ideal pinholes and `up` for door fits
-  const double log_max_area_ratio;
-  std::vector<detail::IdealPixel> left_ideal, right_ideal;
-  std::optional<detail::SideCorrelator> correlator, reverse_correlator;
-  std::vector<std::vector<detail::IdealPixel>> left_corners, right_corners;
-  std::vector<std::vector<detail::IdealPixel>> left_bar_ends, right_bar_ends;
-};
-
-// What a fit of a door explains: a whole pair, the image border's cuts, an occluder hiding the
-// door's lower part, or one hiding a corner.
-enum class Explanation { kWhole, kBorder, kLowerPartHidden, kCornerHidden };
-// The pair (l, r) as one door (partly_seen_door.hpp); defined below.
-std::optional<detail::Candidate> judge_door(const StereoViews& v, int l, int r,
-                                            const std::array<detail::CornerState, 4>& left,
-                                            const std::array<detail::CornerState, 4>& right,
-                                            StereoPairTrace& trace,
-                                            Explanation explanation = Explanation::kBorder);
 
 // Judges one pair of whole views against every gate, in order (paper §2.1: position on the
 // epipolar line, size, orientation, then the triangulated point's depth and extent); a pair that
@@ -508,224 +312,6 @@ class PairJudge {
   bool rectangle_ = false;
 };
 
-// Each vertical side of the left outline placed where the images around it correlate, searched
-// around the outlines' depth (side_correlation.hpp): one image's outline often lacks a stile that
-// the other keeps. The right view's corners on that side become where the right camera sees the
-// side so placed. A side that does not correlate, or not unambiguously (a run of equal doors
-// repeats every edge: BorderCutDoor::min_peak_margin), keeps the right outline's.
-void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDoor& door,
-                     std::array<detail::DoorOutlineView, 2>& views) {
-  using detail::CornerState;
-  const auto on_side = [](CornerState s) {
-    return s == CornerState::kSeen || s == CornerState::kOnSide;
-  };
-  const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
-  std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
-  const double width_px = 0.5 * ((left[1] - left[0]).norm() + (left[2] - left[3]).norm());
-  const double search_px = detail::kSideSearchPx + detail::kSideSearchWidthFraction * width_px;
-  const detail::DoorOutlineView outline = views[1];
-  // Each side's middle (left camera frame, metres), where it was placed.
-  std::array<std::optional<Eigen::Vector3d>, 2> middle_m;
-  for (const auto& [top, bottom] : {std::array<std::size_t, 2>{0, 3}, {1, 2}}) {
-    if (!on_side(views[0].states[top]) || !on_side(views[0].states[bottom]) ||
-        !on_side(views[1].states[top]) || !on_side(views[1].states[bottom])) {
-      continue;
-    }
-    const auto top_point = v.triangulator.point(left[top], right[top]);
-    const auto bottom_point = v.triangulator.point(left[bottom], right[bottom]);
-    if (!top_point || !bottom_point) continue;
-    middle_m[top == 0 ? 0 : 1] = 0.5 * (*top_point + *bottom_point);
-    const double initial_m = 0.5 * (v.correlator->horizontal_distance(*top_point) +
-                                    v.correlator->horizontal_distance(*bottom_point));
-    const auto depth = v.correlator->correlate(left[top], left[bottom], initial_m, search_px,
-                                               v.options.min_depth_m, v.options.max_depth_m);
-    if (!depth || depth->correlation < v.options.min_side_correlation ||
-        depth->second_correlation > depth->correlation - door.min_peak_margin) {
-      continue;
-    }
-    const auto top_at = v.correlator->point_at(left[top], depth->horizontal_distance_m);
-    const auto bottom_at = v.correlator->point_at(left[bottom], depth->horizontal_distance_m);
-    if (!top_at || !bottom_at) continue;
-    const auto top_px = v.triangulator.project_right(*top_at);
-    const auto bottom_px = v.triangulator.project_right(*bottom_at);
-    if (!top_px || !bottom_px) continue;
-    right[top] = *top_px;
-    right[bottom] = *bottom_px;
-    views[1].sigma_px[top] = views[1].sigma_px[bottom] = 0.0;
-    middle_m[top == 0 ? 0 : 1] = 0.5 * (*top_at + *bottom_at);
-  }
-  // A peak on another edge within the search (a repeated door's, the neighbour's) can move a side
-  // a metre: sides so placed that the door is wider than its class allows are not what the
-  // outlines show, and the right outline's are kept.
-  if (middle_m[0] && middle_m[1] && door.max_width_m > 0.0 &&
-      (*middle_m[0] - *middle_m[1]).norm() > door.max_width_m) {
-    views[1] = outline;
-  }
-}
-
-// Before the sides' correlation (the costliest step), what the two outlines alone refuse: a
-// corner both images show off the other's epipolar line (two doors at different heights), and,
-// where both show the door's width (no corner on an edge or hidden), unlike widths: two views of
-// one door at about one depth are about as wide (max_area_ratio; an outline's width is the mean
-// of its top and bottom edges' lengths, pixels).
-bool outlines_refused(const StereoViews& v, const std::array<detail::DoorOutlineView, 2>& views,
-                      double tolerance_px, StereoPairTrace& trace) {
-  using detail::CornerState;
-  for (std::size_t j = 0; j < 4; ++j) {
-    if (views[0].states[j] != CornerState::kSeen || views[1].states[j] != CornerState::kSeen) {
-      continue;
-    }
-    const double off_px =
-        v.epipolar.distance_px(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
-    if (off_px > tolerance_px) {
-      detail::refuse(trace, StereoGate::kEpipolar, off_px, tolerance_px);
-      return true;
-    }
-  }
-  const auto shows_width = [](const detail::DoorOutlineView& o) {
-    return std::all_of(o.states.begin(), o.states.end(), [](CornerState state) {
-      return state == CornerState::kSeen || state == CornerState::kOnSide;
-    });
-  };
-  if (!shows_width(views[0]) || !shows_width(views[1])) return false;
-  const auto width_px = [](const detail::DoorOutlineView& o) {
-    const std::array<Eigen::Vector2d, 4>& c = o.corners_ideal_px;
-    return 0.5 * ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
-  };
-  const double a = width_px(views[0]), b = width_px(views[1]);
-  const double ratio = std::max(a, b) / std::max(std::min(a, b), 1e-9);
-  const double max_ratio = std::max(v.options.max_area_ratio, 1.0);
-  if (ratio <= max_ratio) return false;
-  detail::refuse(trace, StereoGate::kAreaRatio, ratio, max_ratio);
-  return true;
-}
-
-// The pair (l, r) judged as one door (partly_seen_door.hpp), each view's corners in the states
-// given; an outline corner beyond the image is where the outline's sides would meet, not a corner
-// the image shows, so the door's own corner there is hidden. A whole pair passed the position
-// gate on its outlines already (rectangle_containment_excess_px, which allows a strip that
-// segmentation adds at the top or bottom in one image).
-std::optional<detail::Candidate> judge_door(const StereoViews& v, int l, int r,
-                                            const std::array<detail::CornerState, 4>& left,
-                                            const std::array<detail::CornerState, 4>& right,
-                                            StereoPairTrace& trace, Explanation explanation) {
-  const StereoMatchOptions& options = v.options;
-  const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, v.left[l].type);
-  std::array<detail::DoorOutlineView, 2> views{
-      detail::DoorOutlineView{corner_array(v.left_corners[l]), left},
-      detail::DoorOutlineView{corner_array(v.right_corners[r]), right}};
-  for (std::size_t k = 0; k < 2; ++k) {
-    const Detection& d = k == 0 ? v.left[l] : v.right[r];
-    const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
-    for (std::size_t j = 0; j < 4; ++j) {
-      const Eigen::Vector2d& px = d.corners_px[j];
-      const bool beyond = px.x() < -0.5 - 1e-6 || px.y() < -0.5 - 1e-6 ||
-                          px.x() > camera.width_px - 0.5 + 1e-6 ||
-                          px.y() > camera.height_px - 0.5 + 1e-6;
-      if (beyond && views[k].states[j] == detail::CornerState::kSeen) {
-        views[k].states[j] = detail::CornerState::kHidden;
-      }
-    }
-  }
-  // Corners within the position gate of two door outlines: a strip that segmentation adds along a
-  // side in one image moves its corners by a few per cent of the height. An occluder's
-  // explanation of a refused pair is held to the pixel gate alone: its outlines already disagree
-  // with a whole door, and the explanation must fit where they do not.
-  detail::PartlySeenLimits limits;
-  limits.tolerance_px = options.max_epipolar_distance_px;
-  if (explanation == Explanation::kBorder || explanation == Explanation::kWhole) {
-    limits.tolerance_px =
-        std::max(limits.tolerance_px,
-                 kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
-  } else if (explanation == Explanation::kLowerPartHidden) {
-    limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
-  }
-  limits.hidden_by_occluder = explanation == Explanation::kCornerHidden;
-  if (explanation != Explanation::kWhole &&
-      outlines_refused(v, views, limits.tolerance_px, trace)) {
-    return std::nullopt;
-  }
-  // Uncorrelated, a right outline's side is where segmentation put it: within the position
-  // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
-  // measured to that noise: correlate_sides).
-  views[1].sigma_px.fill(options.max_epipolar_distance_px);
-  if (v.correlator) correlate_sides(v, door, views);
-  return detail::judge_partly_seen_door(l, r, views, v.rig, v.triangulator, options, door,
-                                        reference_depth_offset(options, v.left[l].type), limits,
-                                        trace);
-}
-
-// Two whole door outlines that the cross match refused, explained by an occluder in front of the
-// door (a chair, the table's top): the lower corners on the sides (the occluder hides the door's
-// lower part: the pair was too short, or its lower corners off the fit), or one corner hidden in
-// both images (its contour is where the position gate, the side gate or the fit found no door
-// edge). Exactly one hidden corner must explain the pair: with two, the outlines do not say which
-// one the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
-// unless the pair is so placed.
-std::optional<detail::Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
-                                                     const StereoMatchOptions::BorderCutDoor& door,
-                                                     StereoPairTrace& trace) {
-  using detail::CornerState;
-  StereoPairTrace retry = trace;
-  retry.refused_by = StereoGate::kNone;
-  retry.value = retry.limit = 0.0;
-  if (door.occluder_cut && may_be_occluder_cut(trace)) {
-    constexpr std::array<CornerState, 4> kLowerOnSides{CornerState::kSeen, CornerState::kSeen,
-                                                       CornerState::kOnSide, CornerState::kOnSide};
-    StereoPairTrace t = retry;
-    if (auto c =
-            judge_door(v, l, r, kLowerOnSides, kLowerOnSides, t, Explanation::kLowerPartHidden)) {
-      trace = t;
-      return c;
-    }
-  }
-  const bool position_or_side = trace.refused_by == StereoGate::kEpipolar ||
-                                trace.refused_by == StereoGate::kSideTilt ||
-                                trace.refused_by == StereoGate::kRectangleFit;
-  if (!door.occluded_corner || !position_or_side ||
-      v.judge_bars(v.left[l], v.right[r], v.options.single_view_max_bars_inside).gate !=
-          StereoGate::kNone) {
-    return std::nullopt;
-  }
-  // Two views of one door are about as large (the appearance gate), and the three corners an
-  // occluder leaves lie on each other's epipolar lines: pairs of two doors are not fitted.
-  const Detection& dl = v.left[l];
-  const Detection& dr = v.right[r];
-  if (dl.area_px > 0.0 && dr.area_px > 0.0 &&
-      std::abs(std::log(dl.area_px / dr.area_px)) > v.log_max_area_ratio) {
-    return std::nullopt;
-  }
-  const double tolerance_px =
-      std::max(v.options.max_epipolar_distance_px,
-               kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px));
-  std::array<bool, 4> on_epipolar{};
-  for (std::size_t j = 0; j < 4; ++j) {
-    on_epipolar[j] = v.epipolar.distance_px(v.left_corners[l][j].ideal_px,
-                                            v.right_corners[r][j].ideal_px) <= tolerance_px;
-  }
-  std::optional<detail::Candidate> found;
-  StereoPairTrace found_trace;
-  int explaining = 0;
-  for (std::size_t hidden = 0; hidden < 4; ++hidden) {
-    bool others_on_epipolar = true;
-    for (std::size_t j = 0; j < 4; ++j) others_on_epipolar &= j == hidden || on_epipolar[j];
-    if (!others_on_epipolar) continue;
-    std::array<CornerState, 4> states{CornerState::kSeen, CornerState::kSeen, CornerState::kSeen,
-                                      CornerState::kSeen};
-    states[hidden] = CornerState::kHidden;
-    StereoPairTrace t = retry;
-    auto placed = judge_door(v, l, r, states, states, t, Explanation::kCornerHidden);
-    if (!placed) continue;
-    if (++explaining > 1) return std::nullopt;
-    found = std::move(placed);
-    found_trace = t;
-    found_trace.occluded_corner = true;
-  }
-  if (explaining != 1) return std::nullopt;
-  trace = found_trace;
-  return found;
-}
-
 // A pair of door views: two whole ones through the cross match's gates (PairJudge); one or
 // both cut by the image border as one door seen in part (partly_seen_door.hpp), its corners'
 // states from the cuts. A whole pair refused that an occluder may explain is added to
@@ -760,16 +346,6 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
                     detail::corner_states_of(dr.border_cut), trace);
 }
 
-// Whether a pair of door views is judged at all: whole views always; cut ones when their class
-// has a size prior (border_cut), both have four corners, the up direction is known, and the cuts
-// can be of one door (cuts_of_one_door).
-bool door_pair_is_judged(const StereoViews& v, int l, int r) {
-  const BorderCut cl = v.left[l].border_cut, cr = v.right[r].border_cut;
-  if (cl == BorderCut::kNone && cr == BorderCut::kNone) return true;
-  return cuts_of_one_door(cl, cr) && border_cut_door(v.options, v.left[l].type) != nullptr &&
-         v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
-}
-
 // The cross match (paper §2.1): every pair of same-type detections judged; the candidates, and
 // every judged pair's trace when `traces`; the refused whole door pairs in `occluded`.
 std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
@@ -796,7 +372,7 @@ std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
         if (!cut_bar.bar || (both && dl.border_cut != dr.border_cut)) continue;
         c = PairJudge(v, l, r, trace, &cut_bar).judge();
       } else {
-        if (!door_pair_is_judged(v, l, r)) continue;
+        if (!detail::door_pair_is_judged(v, l, r)) continue;
         c = judge_door_pair(v, l, r, trace, occluded);
       }
       if (c) candidates.push_back(std::move(*c));
@@ -839,48 +415,6 @@ std::vector<detail::Candidate> assign_pairs(const StereoViews& v,
   }
   detail::uncross(assigned, candidates, v.left, v.left_ideal, v.right_ideal);
   return assigned;
-}
-
-// The detections no pair took, paired by an occluder's explanation (explain_by_occluder) of
-// their pair's refusal in `occluded`, one to one; the pairs so placed are added to `assigned`
-// and their traces in `traces` (when given) replaced. After the cross match's assignment, so that
-// an occluder explains only what the whole views could not pair.
-void explain_unpaired_by_occluder(const StereoViews& v, std::vector<StereoPairTrace> occluded,
-                                  std::vector<detail::Candidate>& assigned,
-                                  std::vector<StereoPairTrace>* traces) {
-  std::vector<char> left_taken(v.left.size(), 0), right_taken(v.right.size(), 0);
-  for (const detail::Candidate& c : assigned) {
-    left_taken[static_cast<std::size_t>(c.left)] = 1;
-    right_taken[static_cast<std::size_t>(c.right)] = 1;
-  }
-  std::vector<detail::Candidate> explained;
-  std::vector<StereoPairTrace> explained_traces;
-  for (StereoPairTrace& t : occluded) {
-    if (left_taken[static_cast<std::size_t>(t.left_detection)] ||
-        right_taken[static_cast<std::size_t>(t.right_detection)]) {
-      continue;
-    }
-    const StereoMatchOptions::BorderCutDoor& door =
-        *border_cut_door(v.options, v.left[t.left_detection].type);
-    if (auto c = explain_by_occluder(v, t.left_detection, t.right_detection, door, t)) {
-      explained.push_back(std::move(*c));
-      explained_traces.push_back(t);
-    }
-  }
-  for (detail::Candidate& c : detail::assign(explained, static_cast<int>(v.left.size()),
-                                             static_cast<int>(v.right.size()))) {
-    if (traces) {
-      for (StereoPairTrace& t : *traces) {
-        if (t.left_detection != c.left || t.right_detection != c.right) continue;
-        for (const StereoPairTrace& e : explained_traces) {
-          if (e.left_detection == c.left && e.right_detection == c.right) t = e;
-        }
-      }
-    }
-    assigned.push_back(std::move(c));
-  }
-  std::sort(assigned.begin(), assigned.end(),
-            [](const detail::Candidate& a, const detail::Candidate& b) { return a.left < b.left; });
 }
 
 StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {
@@ -1007,8 +541,8 @@ std::vector<StereoPercept> match_and_triangulate(
   const std::vector<detail::Candidate> candidates =
       judge_all_pairs(views, pair_trace ? &traces : nullptr, occluded);
   std::vector<detail::Candidate> assigned = assign_pairs(views, candidates);
-  explain_unpaired_by_occluder(views, std::move(occluded), assigned,
-                               pair_trace ? &traces : nullptr);
+  detail::explain_unpaired_by_occluder(views, std::move(occluded), assigned,
+                                       pair_trace ? &traces : nullptr);
   std::vector<StereoPercept> out;
   for (const detail::Candidate& c : assigned) {
     out.push_back(to_percept(views, c));

@@ -1,0 +1,316 @@
+// The door pairs placed by the door's fit (door_pairing.hpp).
+#include "door_pairing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pair_refusal.hpp"
+
+namespace vsl::recognition::detail {
+namespace {
+
+// The cut an image shows of a door that the other image shows cut by `cut`, less its left or
+// right border: the right camera sees less beyond its left border, the left camera less beyond
+// its right one.
+BorderCut without_left(BorderCut cut) {
+  switch (cut) {
+    case BorderCut::kLeft:
+      return BorderCut::kNone;
+    case BorderCut::kTopLeft:
+      return BorderCut::kTop;
+    case BorderCut::kBottomLeft:
+      return BorderCut::kBottom;
+    default:
+      return cut;
+  }
+}
+BorderCut without_right(BorderCut cut) {
+  switch (cut) {
+    case BorderCut::kRight:
+      return BorderCut::kNone;
+    case BorderCut::kTopRight:
+      return BorderCut::kTop;
+    case BorderCut::kBottomRight:
+      return BorderCut::kBottom;
+    default:
+      return cut;
+  }
+}
+
+// Whether two cut views can be one door: cut alike, or the right image cut by its left border
+// where the left image is not, or the left image by its right border where the right is not.
+bool cuts_of_one_door(BorderCut left, BorderCut right) {
+  const bool at_image_corner = left == BorderCut::kTopLeft || left == BorderCut::kTopRight ||
+                               left == BorderCut::kBottomLeft || left == BorderCut::kBottomRight;
+  return (left == right && !at_image_corner) ||
+         (right != without_left(right) && without_left(right) == left) ||
+         (left != without_right(left) && without_right(left) == right);
+}
+
+// Whole outlines refused in a way an occluder hiding the door's lower part explains: too short,
+// or corners off the door's fit (a sloping lower edge, one side shorter than the other).
+bool may_be_occluder_cut(const StereoPairTrace& refusal) {
+  return (refusal.refused_by == StereoGate::kHeight && refusal.value < refusal.limit) ||
+         refusal.refused_by == StereoGate::kRectangleFit;
+}
+
+// Each vertical side of the left outline placed where the images around it correlate, searched
+// around the outlines' depth (side_correlation.hpp): one image's outline often lacks a stile that
+// the other keeps. The right view's corners on that side become where the right camera sees the
+// side so placed. A side that does not correlate, or not unambiguously (a run of equal doors
+// repeats every edge: BorderCutDoor::min_peak_margin), keeps the right outline's.
+void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDoor& door,
+                     std::array<DoorOutlineView, 2>& views) {
+  const auto on_side = [](CornerState s) {
+    return s == CornerState::kSeen || s == CornerState::kOnSide;
+  };
+  const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
+  std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
+  const double width_px = 0.5 * ((left[1] - left[0]).norm() + (left[2] - left[3]).norm());
+  const double search_px = kSideSearchPx + kSideSearchWidthFraction * width_px;
+  const DoorOutlineView outline = views[1];
+  // Each side's middle (left camera frame, metres), where it was placed.
+  std::array<std::optional<Eigen::Vector3d>, 2> middle_m;
+  for (const auto& [top, bottom] : {std::array<std::size_t, 2>{0, 3}, {1, 2}}) {
+    if (!on_side(views[0].states[top]) || !on_side(views[0].states[bottom]) ||
+        !on_side(views[1].states[top]) || !on_side(views[1].states[bottom])) {
+      continue;
+    }
+    const auto top_point = v.triangulator.point(left[top], right[top]);
+    const auto bottom_point = v.triangulator.point(left[bottom], right[bottom]);
+    if (!top_point || !bottom_point) continue;
+    middle_m[top == 0 ? 0 : 1] = 0.5 * (*top_point + *bottom_point);
+    const double initial_m = 0.5 * (v.correlator->horizontal_distance(*top_point) +
+                                    v.correlator->horizontal_distance(*bottom_point));
+    const auto depth = v.correlator->correlate(left[top], left[bottom], initial_m, search_px,
+                                               v.options.min_depth_m, v.options.max_depth_m);
+    if (!depth || depth->correlation < v.options.min_side_correlation ||
+        depth->second_correlation > depth->correlation - door.min_peak_margin) {
+      continue;
+    }
+    const auto top_at = v.correlator->point_at(left[top], depth->horizontal_distance_m);
+    const auto bottom_at = v.correlator->point_at(left[bottom], depth->horizontal_distance_m);
+    if (!top_at || !bottom_at) continue;
+    const auto top_px = v.triangulator.project_right(*top_at);
+    const auto bottom_px = v.triangulator.project_right(*bottom_at);
+    if (!top_px || !bottom_px) continue;
+    right[top] = *top_px;
+    right[bottom] = *bottom_px;
+    views[1].sigma_px[top] = views[1].sigma_px[bottom] = 0.0;
+    middle_m[top == 0 ? 0 : 1] = 0.5 * (*top_at + *bottom_at);
+  }
+  // A peak on another edge within the search (a repeated door's, the neighbour's) can move a side
+  // a metre: sides so placed that the door is wider than its class allows are not what the
+  // outlines show, and the right outline's are kept.
+  if (middle_m[0] && middle_m[1] && door.max_width_m > 0.0 &&
+      (*middle_m[0] - *middle_m[1]).norm() > door.max_width_m) {
+    views[1] = outline;
+  }
+}
+
+// Before the sides' correlation (the costliest step), what the two outlines alone refuse: a
+// corner both images show off the other's epipolar line (two doors at different heights), and,
+// where both show the door's width (no corner on an edge or hidden), unlike widths: two views of
+// one door at about one depth are about as wide (max_area_ratio; an outline's width is the mean
+// of its top and bottom edges' lengths, pixels).
+bool outlines_refused(const StereoViews& v, const std::array<DoorOutlineView, 2>& views,
+                      double tolerance_px, StereoPairTrace& trace) {
+  for (std::size_t j = 0; j < 4; ++j) {
+    if (views[0].states[j] != CornerState::kSeen || views[1].states[j] != CornerState::kSeen) {
+      continue;
+    }
+    const double off_px =
+        v.epipolar.distance_px(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
+    if (off_px > tolerance_px) {
+      refuse(trace, StereoGate::kEpipolar, off_px, tolerance_px);
+      return true;
+    }
+  }
+  const auto shows_width = [](const DoorOutlineView& o) {
+    return std::all_of(o.states.begin(), o.states.end(), [](CornerState state) {
+      return state == CornerState::kSeen || state == CornerState::kOnSide;
+    });
+  };
+  if (!shows_width(views[0]) || !shows_width(views[1])) return false;
+  const auto width_px = [](const DoorOutlineView& o) {
+    const std::array<Eigen::Vector2d, 4>& c = o.corners_ideal_px;
+    return 0.5 * ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
+  };
+  const double a = width_px(views[0]), b = width_px(views[1]);
+  const double ratio = std::max(a, b) / std::max(std::min(a, b), 1e-9);
+  const double max_ratio = std::max(v.options.max_area_ratio, 1.0);
+  if (ratio <= max_ratio) return false;
+  refuse(trace, StereoGate::kAreaRatio, ratio, max_ratio);
+  return true;
+}
+
+}  // namespace
+
+std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
+                                    const std::array<CornerState, 4>& left,
+                                    const std::array<CornerState, 4>& right, StereoPairTrace& trace,
+                                    Explanation explanation) {
+  const StereoMatchOptions& options = v.options;
+  const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, v.left[l].type);
+  std::array<DoorOutlineView, 2> views{DoorOutlineView{corner_array(v.left_corners[l]), left},
+                                       DoorOutlineView{corner_array(v.right_corners[r]), right}};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Detection& d = k == 0 ? v.left[l] : v.right[r];
+    const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
+    for (std::size_t j = 0; j < 4; ++j) {
+      const Eigen::Vector2d& px = d.corners_px[j];
+      const bool beyond = px.x() < -0.5 - 1e-6 || px.y() < -0.5 - 1e-6 ||
+                          px.x() > camera.width_px - 0.5 + 1e-6 ||
+                          px.y() > camera.height_px - 0.5 + 1e-6;
+      if (beyond && views[k].states[j] == CornerState::kSeen) {
+        views[k].states[j] = CornerState::kHidden;
+      }
+    }
+  }
+  // Corners within the position gate of two door outlines: a strip that segmentation adds along a
+  // side in one image moves its corners by a few per cent of the height. An occluder's
+  // explanation of a refused pair is held to the pixel gate alone: its outlines already disagree
+  // with a whole door, and the explanation must fit where they do not.
+  PartlySeenLimits limits;
+  limits.tolerance_px = options.max_epipolar_distance_px;
+  if (explanation == Explanation::kBorder || explanation == Explanation::kWhole) {
+    limits.tolerance_px =
+        std::max(limits.tolerance_px,
+                 kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
+  } else if (explanation == Explanation::kLowerPartHidden) {
+    limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
+  }
+  limits.hidden_by_occluder = explanation == Explanation::kCornerHidden;
+  if (explanation != Explanation::kWhole &&
+      outlines_refused(v, views, limits.tolerance_px, trace)) {
+    return std::nullopt;
+  }
+  // Uncorrelated, a right outline's side is where segmentation put it: within the position
+  // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
+  // measured to that noise: correlate_sides).
+  views[1].sigma_px.fill(options.max_epipolar_distance_px);
+  if (v.correlator) correlate_sides(v, door, views);
+  return judge_partly_seen_door(l, r, views, v.rig, v.triangulator, options, door,
+                                reference_depth_offset(options, v.left[l].type), limits, trace);
+}
+
+namespace {
+
+// Two whole door outlines that the cross match refused, explained by an occluder in front of the
+// door (a chair, the table's top): the lower corners on the sides (the occluder hides the door's
+// lower part: the pair was too short, or its lower corners off the fit), or one corner hidden in
+// both images (its contour is where the position gate, the side gate or the fit found no door
+// edge). Exactly one hidden corner must explain the pair: with two, the outlines do not say which
+// one the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
+// unless the pair is so placed.
+std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
+                                             const StereoMatchOptions::BorderCutDoor& door,
+                                             StereoPairTrace& trace) {
+  StereoPairTrace retry = trace;
+  retry.refused_by = StereoGate::kNone;
+  retry.value = retry.limit = 0.0;
+  if (door.occluder_cut && may_be_occluder_cut(trace)) {
+    constexpr std::array<CornerState, 4> kLowerOnSides{CornerState::kSeen, CornerState::kSeen,
+                                                       CornerState::kOnSide, CornerState::kOnSide};
+    StereoPairTrace t = retry;
+    if (auto c =
+            judge_door(v, l, r, kLowerOnSides, kLowerOnSides, t, Explanation::kLowerPartHidden)) {
+      trace = t;
+      return c;
+    }
+  }
+  const bool position_or_side = trace.refused_by == StereoGate::kEpipolar ||
+                                trace.refused_by == StereoGate::kSideTilt ||
+                                trace.refused_by == StereoGate::kRectangleFit;
+  if (!door.occluded_corner || !position_or_side ||
+      v.judge_bars(v.left[l], v.right[r], v.options.single_view_max_bars_inside).gate !=
+          StereoGate::kNone) {
+    return std::nullopt;
+  }
+  // Two views of one door are about as large (the appearance gate), and the three corners an
+  // occluder leaves lie on each other's epipolar lines: pairs of two doors are not fitted.
+  const Detection& dl = v.left[l];
+  const Detection& dr = v.right[r];
+  if (dl.area_px > 0.0 && dr.area_px > 0.0 &&
+      std::abs(std::log(dl.area_px / dr.area_px)) > v.log_max_area_ratio) {
+    return std::nullopt;
+  }
+  const double tolerance_px =
+      std::max(v.options.max_epipolar_distance_px,
+               kRectangleEpipolarFraction * 0.5 * (dl.height_px + dr.height_px));
+  std::array<bool, 4> on_epipolar{};
+  for (std::size_t j = 0; j < 4; ++j) {
+    on_epipolar[j] = v.epipolar.distance_px(v.left_corners[l][j].ideal_px,
+                                            v.right_corners[r][j].ideal_px) <= tolerance_px;
+  }
+  std::optional<Candidate> found;
+  StereoPairTrace found_trace;
+  int explaining = 0;
+  for (std::size_t hidden = 0; hidden < 4; ++hidden) {
+    bool others_on_epipolar = true;
+    for (std::size_t j = 0; j < 4; ++j) others_on_epipolar &= j == hidden || on_epipolar[j];
+    if (!others_on_epipolar) continue;
+    std::array<CornerState, 4> states{CornerState::kSeen, CornerState::kSeen, CornerState::kSeen,
+                                      CornerState::kSeen};
+    states[hidden] = CornerState::kHidden;
+    StereoPairTrace t = retry;
+    auto placed = judge_door(v, l, r, states, states, t, Explanation::kCornerHidden);
+    if (!placed) continue;
+    if (++explaining > 1) return std::nullopt;
+    found = std::move(placed);
+    found_trace = t;
+    found_trace.occluded_corner = true;
+  }
+  if (explaining != 1) return std::nullopt;
+  trace = found_trace;
+  return found;
+}
+
+}  // namespace
+
+bool door_pair_is_judged(const StereoViews& v, int l, int r) {
+  const BorderCut cl = v.left[l].border_cut, cr = v.right[r].border_cut;
+  if (cl == BorderCut::kNone && cr == BorderCut::kNone) return true;
+  return cuts_of_one_door(cl, cr) && border_cut_door(v.options, v.left[l].type) != nullptr &&
+         v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
+}
+
+void explain_unpaired_by_occluder(const StereoViews& v, std::vector<StereoPairTrace> occluded,
+                                  std::vector<Candidate>& assigned,
+                                  std::vector<StereoPairTrace>* traces) {
+  std::vector<char> left_taken(v.left.size(), 0), right_taken(v.right.size(), 0);
+  for (const Candidate& c : assigned) {
+    left_taken[static_cast<std::size_t>(c.left)] = 1;
+    right_taken[static_cast<std::size_t>(c.right)] = 1;
+  }
+  std::vector<Candidate> explained;
+  std::vector<StereoPairTrace> explained_traces;
+  for (StereoPairTrace& t : occluded) {
+    if (left_taken[static_cast<std::size_t>(t.left_detection)] ||
+        right_taken[static_cast<std::size_t>(t.right_detection)]) {
+      continue;
+    }
+    const StereoMatchOptions::BorderCutDoor& door =
+        *border_cut_door(v.options, v.left[t.left_detection].type);
+    if (auto c = explain_by_occluder(v, t.left_detection, t.right_detection, door, t)) {
+      explained.push_back(std::move(*c));
+      explained_traces.push_back(t);
+    }
+  }
+  for (Candidate& c :
+       assign(explained, static_cast<int>(v.left.size()), static_cast<int>(v.right.size()))) {
+    if (traces) {
+      for (StereoPairTrace& t : *traces) {
+        if (t.left_detection != c.left || t.right_detection != c.right) continue;
+        for (const StereoPairTrace& e : explained_traces) {
+          if (e.left_detection == c.left && e.right_detection == c.right) t = e;
+        }
+      }
+    }
+    assigned.push_back(std::move(c));
+  }
+  std::sort(assigned.begin(), assigned.end(),
+            [](const Candidate& a, const Candidate& b) { return a.left < b.left; });
+}
+
+}  // namespace vsl::recognition::detail

@@ -1,0 +1,75 @@
+// The detections of both images and the options' per-class entries (stereo_views.hpp).
+#include "stereo_views.hpp"
+
+#include <cmath>
+
+namespace vsl::recognition::detail {
+
+// Undistorted corners of a detection's outline (empty unless it has four).
+std::vector<IdealPixel> undistorted_corners(const Detection& d,
+                                            const head::CameraIntrinsics& intrinsics) {
+  if (d.corners_px.size() != 4) return {};
+  return undistort(d.corners_px, intrinsics);
+}
+
+// The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the
+// bar's ends along the major axis, handle_recognizer.cpp) plus and minus half the major extent.
+std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {
+  const Eigen::Vector2d half =
+      0.5 * d.major_extent_px *
+      Eigen::Vector2d(std::cos(d.major_axis_angle_rad), std::sin(d.major_axis_angle_rad));
+  return {d.reference_px - half, d.reference_px + half};
+}
+
+std::array<Eigen::Vector2d, 4> corner_array(const std::vector<IdealPixel>& corners) {
+  std::array<Eigen::Vector2d, 4> out;
+  for (int k = 0; k < 4; ++k) out[k] = corners[k].ideal_px;
+  return out;
+}
+
+double reference_depth_offset(const StereoMatchOptions& options, const std::string& type) {
+  for (const auto& [name, offset] : options.reference_depth_offset_m) {
+    if (name == type) return offset;
+  }
+  return 0.0;
+}
+
+const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& options,
+                                                    const std::string& type) {
+  for (const StereoMatchOptions::ExtentRange& range : options.major_extent_range_m) {
+    if (range.type == type) return &range;
+  }
+  return nullptr;
+}
+
+const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOptions& options,
+                                                         const std::string& type) {
+  for (const StereoMatchOptions::BorderCutDoor& height : options.border_cut) {
+    if (height.type == type) return &height;
+  }
+  return nullptr;
+}
+
+// The class's greatest width, metres (its border_cut entry's max_width_m); 0 when not configured.
+double class_max_width_m(const StereoMatchOptions& options, const std::string& type) {
+  const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, type);
+  return door ? door->max_width_m : 0.0;
+}
+
+const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
+                                             const std::string& type) {
+  for (const StereoMatchOptions::CutBar& bar : options.cut_bars) {
+    if (bar.type == type) return &bar;
+  }
+  return nullptr;
+}
+
+const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
+                                                    const std::string& type) {
+  for (const StereoMatchOptions::ExtentRange& range : options.height_range_m) {
+    if (range.type == type) return &range;
+  }
+  return nullptr;
+}
+
+}  // namespace vsl::recognition::detail
