@@ -49,9 +49,9 @@ TEST(Funnel, FirstStageNotPassed) {
 TEST(Funnel, TableCountsPerClassAndWholeOrCutWithTheStereoGates) {
   FunnelTally tally;
   tally.add("door", true, FunnelStage::kPercept, "no_pair");
-  tally.add("door", true, FunnelStage::kStereo, "edge_slope");
+  tally.add("door", true, FunnelStage::kStereo, "rectangle_fit");
   tally.add("door", true, FunnelStage::kStereo, "epipolar");
-  tally.add("door", true, FunnelStage::kStereo, "edge_slope");
+  tally.add("door", true, FunnelStage::kStereo, "rectangle_fit");
   tally.add("door", false, FunnelStage::kUndetectedAtBorder, "no_pair");
   std::ostringstream out;
   tally.print(out);
@@ -64,9 +64,10 @@ TEST(Funnel, TableCountsPerClassAndWholeOrCutWithTheStereoGates) {
                       "1          0"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("door whole, detected in both images without a true percept: edge_slope 2, "
-                      "epipolar 1"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find("door whole, detected in both images without a true percept: rectangle_fit 2, "
+                "epipolar 1"),
+      std::string::npos)
       << text;
   EXPECT_EQ(text.find("door cut, detected"), std::string::npos) << text;
 }

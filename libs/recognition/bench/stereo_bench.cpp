@@ -109,14 +109,37 @@ void BM_SideCorrelation(benchmark::State& state) {
 }
 BENCHMARK(BM_SideCorrelation)->Unit(benchmark::kMicrosecond);
 
-void BM_SingleViewDoor(benchmark::State& state) {
-  const head::StereoCalibration calibration =
+// The benchmarks' door: dark (70), 140 px wide and 200 px tall from row `top_px` down, 2 m
+// ahead on a bright wall (190), 25 px of disparity. Whole from row 140 (BM_SingleViewDoor,
+// BM_WholeDoorPair); from row 0, its top above the image with 0.72 m of it in view
+// (BM_BorderCutPair, BM_OneSideDoor).
+struct DarkDoorScene {
+  explicit DarkDoorScene(int top_px) {
+    left(cv::Rect(160, top_px, 140, 200)).setTo(70);
+    right(cv::Rect(135, top_px, 140, 200)).setTo(70);
+  }
+  // The first percept's depth for these detections (0 for none).
+  double depth_m(const std::vector<Detection>& left_detections,
+                 const std::vector<Detection>& right_detections,
+                 const StereoMatchOptions& options) const {
+    const std::vector<StereoPercept> percepts = match_and_triangulate(
+        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
+        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
+    return percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+  }
+
+  head::StereoCalibration calibration =
       head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
-  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  // A dark door 140 px wide and 200 px tall 2 m ahead on a bright wall: 25 px of disparity.
-  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
-  left(cv::Rect(160, 140, 140, 200)).setTo(70);
-  right(cv::Rect(135, 140, 140, 200)).setTo(70);
+  Eigen::Isometry3d left_T_right = calibration.left_T_right();
+  cv::Mat left{480, 640, CV_8UC1, cv::Scalar(190)};
+  cv::Mat right{480, 640, CV_8UC1, cv::Scalar(190)};
+};
+
+void BM_SingleViewDoor(benchmark::State& state) {
+  const DarkDoorScene scene(140);
+  const head::StereoCalibration& calibration = scene.calibration;
+  const Eigen::Isometry3d& left_T_right = scene.left_T_right;
+  const cv::Mat &left = scene.left, &right = scene.right;
   const Eigen::Vector3d up(0.0, -1.0, 0.0);
   StereoMatchOptions options;
   options.min_single_view_correlation = 0.7;
@@ -138,16 +161,10 @@ void BM_SingleViewDoor(benchmark::State& state) {
 }
 BENCHMARK(BM_SingleViewDoor)->Unit(benchmark::kMicrosecond);
 
-// BM_WholeDoorPair: a pair of whole door outlines, a dark door 140 px wide and 200 px tall 2 m
-// ahead on a bright wall, both sides correlated and the door's fit (partly_seen_door.hpp), the
-// correlators' set-up included.
+// BM_WholeDoorPair: a pair of whole door outlines of DarkDoorScene's door, both sides correlated
+// and the door's fit (partly_seen_door.hpp), the correlators' set-up included.
 void BM_WholeDoorPair(benchmark::State& state) {
-  const head::StereoCalibration calibration =
-      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
-  const Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(190)), right(480, 640, CV_8UC1, cv::Scalar(190));
-  left(cv::Rect(160, 140, 140, 200)).setTo(70);
-  right(cv::Rect(135, 140, 140, 200)).setTo(70);
+  const DarkDoorScene scene(140);
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_side_tilt_rad = 0.03;
@@ -163,10 +180,7 @@ void BM_WholeDoorPair(benchmark::State& state) {
   const std::vector<Detection> right_detections{outline(135.0)};
   double depth_m = 0.0;
   for (auto _ : state) {
-    const std::vector<StereoPercept> percepts = match_and_triangulate(
-        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
-        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
-    depth_m = percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
+    depth_m = scene.depth_m(left_detections, right_detections, options);
     benchmark::DoNotOptimize(depth_m);
   }
   if (!(depth_m > 0.0)) state.SkipWithError("the door was not placed");
@@ -174,31 +188,8 @@ void BM_WholeDoorPair(benchmark::State& state) {
 }
 BENCHMARK(BM_WholeDoorPair)->Unit(benchmark::kMicrosecond);
 
-// BM_BorderCutPair's and BM_OneSideDoor's scene: a dark door 140 px wide 2 m ahead on a bright
-// wall, its top above the image: 200 px (0.72 m) of it in view, 25 px of disparity.
-struct TopCutDoorScene {
-  head::StereoCalibration calibration =
-      head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
-  Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  cv::Mat left{480, 640, CV_8UC1, cv::Scalar(190)};
-  cv::Mat right{480, 640, CV_8UC1, cv::Scalar(190)};
-  TopCutDoorScene() {
-    left(cv::Rect(160, 0, 140, 200)).setTo(70);
-    right(cv::Rect(135, 0, 140, 200)).setTo(70);
-  }
-  // The first percept's depth for these detections (0 for none).
-  double depth_m(const std::vector<Detection>& left_detections,
-                 const std::vector<Detection>& right_detections,
-                 const StereoMatchOptions& options) const {
-    const std::vector<StereoPercept> percepts = match_and_triangulate(
-        left_detections, right_detections, calibration.left, calibration.right, left_T_right,
-        options, Eigen::Vector3d(0.0, -1.0, 0.0), nullptr, {&left, &right});
-    return percepts.empty() ? 0.0 : percepts[0].left_camera_position_m.z();
-  }
-};
-
 void BM_BorderCutPair(benchmark::State& state) {
-  const TopCutDoorScene scene;
+  const DarkDoorScene scene(0);
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_edge_slope_rad = 0.3;
@@ -215,7 +206,7 @@ void BM_BorderCutPair(benchmark::State& state) {
 BENCHMARK(BM_BorderCutPair)->Unit(benchmark::kMicrosecond);
 
 void BM_OneSideDoor(benchmark::State& state) {
-  const TopCutDoorScene scene;
+  const DarkDoorScene scene(0);
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.min_single_view_correlation = 0.7;

@@ -13,6 +13,7 @@ inline std::nullopt_t refuse(StereoPairTrace& trace, StereoGate gate, double val
   trace.refused_by = gate;
   trace.value = value;
   trace.limit = limit;
+  trace.cost = 0.0;  // a gate passed before may have costed it
   return std::nullopt;
 }
 

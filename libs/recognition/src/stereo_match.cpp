@@ -11,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 
 #include "bars_on_outline.hpp"
@@ -231,6 +230,11 @@ class PairJudge {
     if (rectangles_ && border_cut_door(o_, dl_.type) && v_.up.norm() > 0.0 &&
         detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
       return fit_door();
+    }
+    // Without the fit, a side that is no door edge leaves nothing to place the door by.
+    if (rectangles_ && sides_->tilted_side >= 0) {
+      detail::refuse(trace_, StereoGate::kSideTilt, sides_->worst_tilt_rad, o_.max_side_tilt_rad);
+      return false;
     }
     return true;
   }

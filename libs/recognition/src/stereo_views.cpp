@@ -1,6 +1,7 @@
 // The detections of both images and the options' per-class entries (stereo_views.hpp).
 #include "stereo_views.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vsl::recognition::detail {
@@ -34,20 +35,31 @@ double reference_depth_offset(const StereoMatchOptions& options, const std::stri
   return 0.0;
 }
 
+namespace {
+
+// The entry of `type` among a per-class option's entries, or nullptr.
+template <class Entry>
+const Entry* entry_of(const std::vector<Entry>& entries, const std::string& type) {
+  const auto found = std::find_if(entries.begin(), entries.end(),
+                                  [&](const Entry& entry) { return entry.type == type; });
+  return found == entries.end() ? nullptr : &*found;
+}
+
+}  // namespace
+
 const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& options,
                                                     const std::string& type) {
-  for (const StereoMatchOptions::ExtentRange& range : options.major_extent_range_m) {
-    if (range.type == type) return &range;
-  }
-  return nullptr;
+  return entry_of(options.major_extent_range_m, type);
+}
+
+const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
+                                                    const std::string& type) {
+  return entry_of(options.height_range_m, type);
 }
 
 const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOptions& options,
                                                          const std::string& type) {
-  for (const StereoMatchOptions::BorderCutDoor& height : options.border_cut) {
-    if (height.type == type) return &height;
-  }
-  return nullptr;
+  return entry_of(options.border_cut, type);
 }
 
 // The class's greatest width, metres (its border_cut entry's max_width_m); 0 when not configured.
@@ -58,18 +70,7 @@ double class_max_width_m(const StereoMatchOptions& options, const std::string& t
 
 const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
                                              const std::string& type) {
-  for (const StereoMatchOptions::CutBar& bar : options.cut_bars) {
-    if (bar.type == type) return &bar;
-  }
-  return nullptr;
-}
-
-const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
-                                                    const std::string& type) {
-  for (const StereoMatchOptions::ExtentRange& range : options.height_range_m) {
-    if (range.type == type) return &range;
-  }
-  return nullptr;
+  return entry_of(options.cut_bars, type);
 }
 
 }  // namespace vsl::recognition::detail

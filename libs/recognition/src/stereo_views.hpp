@@ -16,7 +16,7 @@
 #include "partly_seen_door.hpp"
 #include "side_correlation.hpp"
 #include "triangulation.hpp"
-#include "vsl/head/stereo_calibration.hpp"
+#include "vsl/head/camera_intrinsics.hpp"
 #include "vsl/recognition/detection.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -109,10 +109,6 @@ struct StereoViews {
   }
   DoorOutlines outlines(int l, int r) const {
     return {corner_array(left_corners[l]), corner_array(right_corners[r])};
-  }
-  const SideCorrelator* forward() const { return correlator ? &*correlator : nullptr; }
-  const SideCorrelator* reverse() const {
-    return reverse_correlator ? &*reverse_correlator : nullptr;
   }
 
   const std::vector<Detection>& left;

@@ -115,7 +115,7 @@ class Triangulator {
   // for a vertical side in any view. A side of a door's outline that is not vertical is no door
   // edge (an occluder's contour, a strip of the neighbour). 1 when a side is degenerate.
   // The same per side and image: [side][0 left, 1 right], the sides in the order
-  // rectangle_centre takes them.
+  // vertical_sides gives them.
   std::array<std::array<double, 2>, 2> side_tilts(
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,

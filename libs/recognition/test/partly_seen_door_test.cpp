@@ -123,6 +123,45 @@ TEST_F(PartlySeenDoorTest, EveryStateOfACornerPlacesTheDoor) {
   }
 }
 
+TEST_F(PartlySeenDoorTest, MergedCornersMayLieOutsideTheDoor) {
+  // The left outline's left side is a neighbour's strip merged in: its corners 15% of the width
+  // beyond the door's. Merged there, the door is placed as from exact corners; hidden (an
+  // occluder's, which hides and adds nothing) the same points lie outside the door: refused.
+  constexpr std::array<S, 4> kWhole{S::kSeen, S::kSeen, S::kSeen, S::kSeen};
+  for (const S state : {S::kMerged, S::kHidden}) {
+    std::array<DoorOutlineView, 2> v = views({state, S::kSeen, S::kSeen, state}, kWhole);
+    for (const std::size_t j : {std::size_t{0}, std::size_t{3}}) {
+      const std::size_t along = j == 0 ? 1 : 2;
+      v[0].corners_ideal_px[j] -= 0.15 * (v[0].corners_ideal_px[along] - v[0].corners_ideal_px[j]);
+    }
+    StereoPairTrace trace;
+    const auto c = judge(v, trace, 0.0, state == S::kHidden);
+    if (state == S::kMerged) {
+      ASSERT_TRUE(c.has_value()) << stereo_gate_name(trace.refused_by) << " " << trace.value;
+      EXPECT_LT((c->triangulation.left_camera_position_m - kCentre).norm(), 1e-3);
+    } else {
+      EXPECT_FALSE(c.has_value());
+      EXPECT_EQ(trace.refused_by, StereoGate::kEpipolar);
+    }
+  }
+}
+
+TEST_F(PartlySeenDoorTest, TheCovarianceGrowsWithTheResiduals) {
+  // Exact corners: (J^T J)^-1. Each left corner 2 px off (alternately up and down, well within
+  // the tolerance), the residuals chi^2 / (n - 6) well above 1: the covariance grows by that
+  // factor, not by the change of the Jacobian alone.
+  constexpr std::array<S, 4> kWhole{S::kSeen, S::kSeen, S::kSeen, S::kSeen};
+  StereoPairTrace trace;
+  const auto exact = judge(views(kWhole, kWhole), trace);
+  ASSERT_TRUE(exact.has_value());
+  std::array<DoorOutlineView, 2> noisy = views(kWhole, kWhole);
+  for (std::size_t j = 0; j < 4; ++j) noisy[0].corners_ideal_px[j].y() += j % 2 == 0 ? 2.0 : -2.0;
+  const auto scaled = judge(noisy, trace);
+  ASSERT_TRUE(scaled.has_value()) << stereo_gate_name(trace.refused_by) << " " << trace.value;
+  EXPECT_GT(scaled->triangulation.left_camera_covariance_m2.trace(),
+            2.0 * exact->triangulation.left_camera_covariance_m2.trace());
+}
+
 TEST_F(PartlySeenDoorTest, AnUnseenSideTakesTheClassSizeAndItsSpread) {
   // Cut at the top: the height is the least typical one the visible part does not exceed (here
   // all 0.716 m of it are in view).

@@ -203,20 +203,39 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
   // spans a plane holding the up direction.
   const Eigen::Vector3d down(0.0, std::cos(0.4), -std::sin(0.4));
   const Eigen::Vector3d up = -down;
-  const Pair p = door_pair({0.1, 0.3, 2.5}, calibration_, left_T_right_, down);
-  options_.max_side_tilt_rad = 0.03;
-  EXPECT_EQ(match({p.left}, {p.right}, up).size(), 1u);
-  // An occluder cut the bottom-left corner off the left outline (a chair's contour became its
-  // side): 8 px off the door's edge, a side some 0.05 rad from vertical. The other three sides
-  // are door edges: the left side from the right image, at the heights of the right side's ends,
-  // gives the centre.
   const Eigen::Vector3d centre(0.1, 0.3, 2.5);
+  Pair p = door_pair(centre, calibration_, left_T_right_, down);
+  // The reference points 3 px off (a strip of the blob): only the door's fit to the outlines'
+  // corners places the door to the millimetre.
+  p.left.reference_px.x() += 3.0;
+  options_.max_side_tilt_rad = 0.03;
+  add_door_class();
+  EXPECT_EQ(match({p.left}, {p.right}, up).size(), 1u);
+  // An occluder cut a bottom corner off one outline (a chair's contour became its side): 8 px
+  // off the door's edge, a side some 0.05 rad from vertical. That side's corners are merged in
+  // that image; the other image's and the other side's place the door. Either side, either image.
+  std::vector<StereoPairTrace> trace;
+  for (const std::size_t corner : {std::size_t{3}, std::size_t{2}}) {
+    for (const bool in_left : {true, false}) {
+      Pair cut = p;
+      (in_left ? cut.left : cut.right).corners_px[corner].x() += corner == 3 ? 8.0 : -8.0;
+      const auto placed = match({cut.left}, {cut.right}, up, &trace);
+      ASSERT_EQ(placed.size(), 1u) << corner << " " << in_left;
+      EXPECT_LT((placed[0].left_camera_position_m - centre).norm(), 1e-3) << corner << in_left;
+    }
+  }
   Pair cut = p;
   cut.left.corners_px[3].x() += 8.0;
-  std::vector<StereoPairTrace> trace;
-  const auto one_side = match({cut.left}, {cut.right}, up, &trace);
-  ASSERT_EQ(one_side.size(), 1u);
-  EXPECT_LT((one_side[0].left_camera_position_m - centre).norm(), 1e-3);
+  // Without the class's sizes there is no fit, and nothing to place the door by: refused.
+  {
+    StereoMatchOptions without = options_;
+    without.border_cut.clear();
+    const auto none = match_and_triangulate({cut.left}, {cut.right}, calibration_.left,
+                                            calibration_.right, left_T_right_, without, up, &trace);
+    EXPECT_TRUE(none.empty());
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
+  }
   // The right image's left side is cut too (the occluder in both views): refused, as is an
   // outline with both sides tilted in one image.
   Pair both = cut;

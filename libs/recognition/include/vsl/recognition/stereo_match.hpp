@@ -57,7 +57,8 @@ struct StereoMatchOptions {
   // are not vertical in 3D within this angle, in either image, are no door's front face (an
   // occluder's contour or a neighbour's strip gave the outline a side). When only one side in
   // one image is so tilted, its corners there are merged in the door's fit (partly_seen_door.hpp:
-  // the other image's and the other side's corners place the door); otherwise the pair is refused
+  // the other image's and the other side's corners place the door; classes without a
+  // border_cut entry have no fit, and such a pair is refused); otherwise the pair is refused
   // (but see BorderCutDoor::occluded_corner for a side that is no door edge in both images).
   // Needs the up direction (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
@@ -268,9 +269,10 @@ struct StereoPercept {
   float confidence = 0.0f;
 };
 
-// The gates of match_and_triangulate, in the order they are tested, kWeakPair first
-// (kTriangulation: the pair's point cannot be triangulated, e.g. it is not in front of both
-// cameras).
+// The gates of match_and_triangulate (kTriangulation: the pair's point cannot be triangulated,
+// e.g. it is not in front of both cameras). A pair meets them in this order: kWeakPair; with its
+// position kBarsInside, kStackedBars, kEpipolar and kSideTilt; kAreaRatio, kOrientation;
+// kTriangulation and kRectangleFit (a door's fit); kDepth, kExtent, kHeight.
 enum class StereoGate {
   kNone,
   kEpipolar,
