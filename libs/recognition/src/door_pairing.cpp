@@ -9,32 +9,15 @@
 namespace vsl::recognition::detail {
 namespace {
 
-// The cut an image shows of a door that the other image shows cut by `cut`, less its left or
-// right border: the right camera sees less beyond its left border, the left camera less beyond
-// its right one.
-BorderCut without_left(BorderCut cut) {
-  switch (cut) {
-    case BorderCut::kLeft:
-      return BorderCut::kNone;
-    case BorderCut::kTopLeft:
-      return BorderCut::kTop;
-    case BorderCut::kBottomLeft:
-      return BorderCut::kBottom;
-    default:
-      return cut;
-  }
-}
-BorderCut without_right(BorderCut cut) {
-  switch (cut) {
-    case BorderCut::kRight:
-      return BorderCut::kNone;
-    case BorderCut::kTopRight:
-      return BorderCut::kTop;
-    case BorderCut::kBottomRight:
-      return BorderCut::kBottom;
-    default:
-      return cut;
-  }
+// The cut an image shows of a door that the other image shows cut by `cut`, less its left
+// (`left_border`) or right border: the right camera sees less beyond its left border, the left
+// camera less beyond its right one.
+BorderCut without_border(BorderCut cut, bool left_border) {
+  using enum BorderCut;
+  if (cut == (left_border ? kLeft : kRight)) return kNone;
+  if (cut == (left_border ? kTopLeft : kTopRight)) return kTop;
+  if (cut == (left_border ? kBottomLeft : kBottomRight)) return kBottom;
+  return cut;
 }
 
 // Whether two cut views can be one door: cut alike, or the right image cut by its left border
@@ -43,8 +26,8 @@ bool cuts_of_one_door(BorderCut left, BorderCut right) {
   const bool at_image_corner = left == BorderCut::kTopLeft || left == BorderCut::kTopRight ||
                                left == BorderCut::kBottomLeft || left == BorderCut::kBottomRight;
   return (left == right && !at_image_corner) ||
-         (right != without_left(right) && without_left(right) == left) ||
-         (left != without_right(left) && without_right(left) == right);
+         (right != without_border(right, true) && without_border(right, true) == left) ||
+         (left != without_border(left, false) && without_border(left, false) == right);
 }
 
 // Whole outlines refused in a way an occluder hiding the door's lower part explains: too short,
