@@ -101,4 +101,32 @@ TEST(VslWorldCli, StatsCountsMeshesTheirTrianglesAndBoundsThem) {
       << result.out;
 }
 
+TEST(VslWorldCli, DoorSizesAsTheRecognizersClassEntry) {
+  // Three doors 0.716 m tall (two 0.4 m wide, one 0.6 m) and one 1.246 m (0.4 m), a handle, and a
+  // door without a size (not counted).
+  const std::string path =
+      write_temp("sized_world.yaml",
+                 "objects:\n"
+                 "  - {id: a, type: door, position: [0, 0, 0.5], size: [0.4, 0.02, 0.716]}\n"
+                 "  - {id: b, type: door, position: [1, 0, 0.5], size: [0.402, 0.02, 0.716]}\n"
+                 "  - {id: c, type: door, position: [2, 0, 0.5], size: [0.6, 0.02, 0.716]}\n"
+                 "  - {id: d, type: door, position: [3, 0, 1.0], size: [0.4, 0.02, 1.246]}\n"
+                 "  - {id: e, type: door, position: [4, 0, 1.0]}\n"
+                 "  - {id: h, type: handle, position: [0, 0, 0.5], size: [0.02, 0.03, 0.16]}\n");
+  const auto result = run_command({VSL_WORLD_BIN, "door-sizes", path});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  // Widths 0.4 (three, within 5 mm) and 0.6: RMS about 0.4 is 0.2 / 2 = 0.1; heights about 0.716
+  // 0.53 / 2 = 0.265.
+  EXPECT_EQ(result.out, "# door sizes of " + path +
+                            " (4 with a size): heights 0.716 x3, 1.246 x1; widths 0.400 x3, "
+                            "0.600 x1\n"
+                            "door: {typical_heights_m: [0.716, 1.246], height_sigma_m: 0.265, "
+                            "typical_width_m: 0.400, width_sigma_m: 0.100}\n");
+  // No object of the type with a size: one line, exit code 2.
+  const auto none = run_command({VSL_WORLD_BIN, "door-sizes", path, "--type", "window"});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_EQ(none.err, path + ": no object of type 'window' has a size\n");
+  EXPECT_EQ(none.out, "");
+}
+
 }  // namespace

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "door_sizes.hpp"
 #include "import_command.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/world/world_graph.hpp"
@@ -20,12 +21,17 @@ namespace {
 constexpr const char* kUsage = R"(usage: vsl-world check FILE
        vsl-world stats FILE [--config FILE] [--link-threshold METRES] [--node-types T,T,...]
                        [--list TYPES]
+       vsl-world door-sizes FILE [--type TYPE]
        vsl-world import FILE... -o WORLD.yaml [--rules FILE] [--dry-run] ...  (import --help)
 
 Validates a vsl world-model file (format: docs/world-model.md).
   check   validate; prints a one-line summary, or the one-line error and exits 2
   stats   primitives by kind, mesh triangles, objects by type, world-graph links (paper
           Eq. 6) and the bounding box of all geometry (world frame, metres)
+  door-sizes  the sizes of the world's doors (or --type TYPE) as the recognizer's class entry
+          wants them (config/recognition.yaml, stereo.border_cut; docs/recognition.md): every
+          height, the RMS of the heights about the most common, the most common width and the
+          RMS of the widths about it, metres; exit 2 when no such object has a size
 options:
   --config FILE        read the world_graph section (link_threshold_m, node_types) of a
                        localizer config such as config/localizer.yaml
@@ -34,6 +40,7 @@ options:
                        position
   --node-types LIST    only these object types become graph nodes (default: all; overrides
                        --config)
+  --type TYPE          door-sizes: the objects' type (default door)
 exit codes: 0 ok, 2 bad file or usage
 )";
 
@@ -47,6 +54,7 @@ struct Options {
   std::string file;
   vsl::world::WorldGraphOptions graph;
   std::vector<std::string> list_types;  // stats --list: these types' objects, one per line
+  std::string sizes_type = "door";      // door-sizes --type
 };
 
 [[noreturn]] void usage_error(const std::string& what) {
@@ -63,6 +71,9 @@ Options parse(int argc, char** argv) {
     if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
+    } else if (arg == "--type") {
+      if (i + 1 >= argc) usage_error(arg + " needs a value");
+      options.sizes_type = argv[++i];
     } else if (arg == "--link-threshold" || arg == "--node-types" || arg == "--config" ||
                arg == "--list") {
       if (i + 1 >= argc) usage_error(arg + " needs a value");
@@ -76,8 +87,9 @@ Options parse(int argc, char** argv) {
       positional.push_back(arg);
     }
   }
-  if (positional.size() != 2 || (positional[0] != "check" && positional[0] != "stats")) {
-    usage_error("expected 'check FILE' or 'stats FILE'");
+  if (positional.size() != 2 ||
+      (positional[0] != "check" && positional[0] != "stats" && positional[0] != "door-sizes")) {
+    usage_error("expected 'check FILE', 'stats FILE' or 'door-sizes FILE'");
   }
   options.command = positional[0];
   options.file = positional[1];
@@ -218,6 +230,15 @@ int main(int argc, char** argv) {
       for (const auto& object : world.objects) primitives += object.primitives.size();
       std::printf("%s: ok (%zu objects, %zu primitives)\n", options.file.c_str(),
                   world.objects.size(), primitives);
+    } else if (options.command == "door-sizes") {
+      const vsl::world_tool::ClassSizes sizes =
+          vsl::world_tool::class_sizes(world, options.sizes_type);
+      if (sizes.objects == 0) {
+        std::cerr << options.file << ": no object of type '" << options.sizes_type
+                  << "' has a size\n";
+        return 2;
+      }
+      vsl::world_tool::print_class_sizes(sizes, options.file, std::cout);
     } else {
       print_stats(world, options, load_s);
     }
