@@ -9,7 +9,7 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/twin_handle_split.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/cut_bar.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/partly_seen_bar.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pair.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pairing.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/stereo_views.cpp

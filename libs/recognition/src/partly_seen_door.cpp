@@ -13,6 +13,7 @@
 #include "convex_polygon.hpp"
 #include "door_rectangle_fit.hpp"
 #include "pair_refusal.hpp"
+#include "rig_camera.hpp"
 
 namespace vsl::recognition::detail {
 namespace {
@@ -48,23 +49,6 @@ bool in_top_row(std::size_t j) {
   return j < 2;
 }
 
-// A pinhole camera of the rig: its K and where it is.
-struct RigCamera {
-  Eigen::Matrix3d K;
-  Eigen::Isometry3d camera_T_left;
-
-  // x (left camera frame) in this camera's frame, and where the camera sees it (ideal pixels).
-  template <class T>
-  Eigen::Matrix<T, 3, 1> in_frame(const Eigen::Matrix<T, 3, 1>& x_left) const {
-    return camera_T_left.linear().cast<T>() * x_left + camera_T_left.translation().cast<T>();
-  }
-  template <class T>
-  Eigen::Matrix<T, 2, 1> project(const Eigen::Matrix<T, 3, 1>& x_left) const {
-    const Eigen::Matrix<T, 3, 1> h = K.cast<T>() * in_frame(x_left);
-    return Eigen::Matrix<T, 2, 1>(h.x() / h.z(), h.y() / h.z());
-  }
-};
-
 // The model's basis in the left camera frame (partly_seen_door.hpp): e1, e2 horizontal, up the
 // world's vertical (all unit).
 struct Basis {
@@ -91,27 +75,9 @@ struct CornerResidual {
   template <class T>
   bool operator()(const T* theta, T* residual) const {
     const Eigen::Matrix<T, 3, 1> x = basis.corner(theta, corner);
-    const Eigen::Matrix<T, 2, 1> m = measured_px.cast<T>();
-    if (point) {
-      if (!(camera->in_frame(x).z() > T(1e-3))) return false;
-      const Eigen::Matrix<T, 2, 1> p = camera->project(x);
-      residual[0] = (p.x() - m.x()) / T(sigma_px);
-      residual[1] = (p.y() - m.y()) / T(sigma_px);
-      return true;
-    }
-    // The image line of the 3D line through corner j towards `partner`: the homogeneous image of
-    // the corner crossed with the line's vanishing point, l = K (R x + t) x K R (x_p - x). It holds
-    // wherever the corner is, also beyond the image and behind the camera (a near door's unseen
-    // corner); m's distance from it is l . (m, 1) / |l_xy|.
-    const Eigen::Matrix<T, 3, 1> direction = basis.corner(theta, partner) - x;
-    const Eigen::Matrix<T, 3, 1> line =
-        (camera->K.template cast<T>() * camera->in_frame(x))
-            .cross(camera->K.template cast<T>() *
-                   (camera->camera_T_left.linear().template cast<T>() * direction));
-    const T length = line.template head<2>().norm();
-    if (!(length > T(1e-9))) return false;
-    residual[0] = (line.x() * m.x() + line.y() * m.y() + line.z()) / (length * T(sigma_px));
-    return true;
+    if (point) return camera->point_residual(x, measured_px, sigma_px, residual);
+    return camera->line_residual(x, Eigen::Matrix<T, 3, 1>(basis.corner(theta, partner) - x),
+                                 measured_px, sigma_px, residual);
   }
 };
 

@@ -14,12 +14,12 @@
 #include <optional>
 
 #include "bars_on_outline.hpp"
-#include "cut_bar.hpp"
 #include "door_pair.hpp"
 #include "door_pairing.hpp"
 #include "epipolar.hpp"
 #include "one_side_door.hpp"
 #include "pair_refusal.hpp"
+#include "partly_seen_bar.hpp"
 #include "partly_seen_door.hpp"
 #include "side_correlation.hpp"
 #include "single_view.hpp"
@@ -58,13 +58,6 @@ using detail::judge_door;
 using detail::reference_depth_offset;
 using detail::StereoViews;
 
-// Two views of a bar that the image border cuts at one end in one or both (cut_bar.hpp): the
-// class's typical length, and the border when it cuts both.
-struct CutBarViews {
-  const StereoMatchOptions::CutBar* bar = nullptr;
-  BorderCut both = BorderCut::kNone;
-};
-
 // Judges one pair of whole views against every gate, in order (paper §2.1: position on the
 // epipolar line, size, orientation, then the triangulated point's depth and extent); a pair that
 // passes all of them is a candidate with its triangulation. Triangulating here rather than after
@@ -72,8 +65,7 @@ struct CutBarViews {
 // detections stay free for other pairs.
 class PairJudge {
  public:
-  PairJudge(const StereoViews& views, int l, int r, StereoPairTrace& trace,
-            const CutBarViews* cut_bar)
+  PairJudge(const StereoViews& views, int l, int r, StereoPairTrace& trace, bool cut_bar)
       : v_(views),
         o_(views.options),
         l_(l),
@@ -122,7 +114,7 @@ class PairJudge {
     }
     if (!span_bar()) return false;
     // A cut view's reference point is the middle of what it shows, another point of the bar in
-    // each image: a cut bar is placed only from its span, across the epipolar lines.
+    // each image: a cut bar is placed only by the bar's fit, across the epipolar lines.
     if (cut_bar_ && !bar_) {
       detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
       return false;
@@ -149,7 +141,8 @@ class PairJudge {
     return true;
   }
 
-  // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): its span in 3D.
+  // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): along the bar,
+  // which of their ends are the bar's (partly_seen_bar.hpp).
   bool span_bar() {
     if (v_.left_bar_ends[l_].empty() || v_.right_bar_ends[r_].empty() ||
         elongation(dl_) < o_.min_elongation_for_orientation ||
@@ -164,8 +157,10 @@ class PairJudge {
     if (!(length > 0.0 && std::abs((b - a).dot(line.head<2>())) >= std::sqrt(0.5) * length)) {
       return true;
     }
-    bar_ = v_.triangulator.bar_span(
-        {v_.left_bar_ends[l_][0].ideal_px, v_.left_bar_ends[l_][1].ideal_px}, {a, b}, v_.up);
+    bar_ = detail::bar_views_along(
+        {{{{v_.left_bar_ends[l_][0].ideal_px, v_.left_bar_ends[l_][1].ideal_px}, dl_.border_cut},
+          {{a, b}, dr_.border_cut}}},
+        v_.epipolar.fundamental());
     if (!bar_) {
       detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
       return false;
@@ -205,8 +200,8 @@ class PairJudge {
   }
 
   // The 3D point: triangulated from the reference points, with the covariance the pixel noise
-  // gives it; a bar's from its span (the middle), a bar cut by one border in both images from its
-  // own end (cut_bar.hpp); two door outlines' by the door's fit (fit_door), with its
+  // gives it; two views of a bar across the epipolar lines by the bar's fit
+  // (partly_seen_bar.hpp), two door outlines' by the door's fit (fit_door), each with the fit's
   // covariance.
   bool place_point() {
     offset_m_ = reference_depth_offset(o_, dl_.type);
@@ -219,13 +214,14 @@ class PairJudge {
     // The gates below measure the visible surface, before the reference point's offset.
     point_ = triangulation_->left_camera_position_m -
              offset_m_ * triangulation_->left_camera_position_m.normalized();
-    if (bar_) set_point(bar_->centre_m);
-    if (cut_bar_ && cut_bar_->both != BorderCut::kNone) {
-      const std::optional<detail::CutBarCentre> placed =
-          detail::place_cut_bar(*bar_, cut_bar_->both, v_.triangulator, *cut_bar_->bar, trace_);
-      if (!placed) return false;
-      set_point(placed->centre_m);
-      triangulation_->left_camera_covariance_m2 += placed->length_covariance_m2;
+    if (bar_) {
+      const std::optional<detail::BarFit> fit =
+          detail::judge_partly_seen_bar(*bar_, v_.rig, cut_bar_of(o_, dl_.type), o_.pixel_sigma_px,
+                                        o_.max_epipolar_distance_px, trace_);
+      if (!fit) return false;
+      set_point(fit->centre_m);
+      triangulation_->left_camera_covariance_m2 = fit->centre_covariance_m2;
+      bar_length_m_ = fit->length_from_prior ? 0.0 : fit->length_m;
     }
     if (rectangles_ && border_cut_door(o_, dl_.type) && v_.up.norm() > 0.0 &&
         detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
@@ -277,13 +273,12 @@ class PairJudge {
     };
     if (point_.z() < o_.min_depth_m) return refuse(StereoGate::kDepth, point_.z(), o_.min_depth_m);
     if (point_.z() > o_.max_depth_m) return refuse(StereoGate::kDepth, point_.z(), o_.max_depth_m);
-    // (A cut bar's visible length was judged against its class's typical one.)
-    const auto* range =
-        cut_bar_ && cut_bar_->both != BorderCut::kNone ? nullptr : extent_range(o_, dl_.type);
+    // (A bar whose length is the class's had its visible length judged against it.)
+    const auto* range = bar_ && bar_length_m_ == 0.0 ? nullptr : extent_range(o_, dl_.type);
     if (range && (dl_.major_extent_px > 0.0 || dr_.major_extent_px > 0.0)) {
       const double mean_f_px = 0.5 * (v_.left_intrinsics.fx_px + v_.right_intrinsics.fx_px);
       const double length_m =
-          bar_ ? bar_->length_m
+          bar_ ? bar_length_m_
                : 0.5 * (dl_.major_extent_px + dr_.major_extent_px) * point_.z() / mean_f_px;
       if (length_m < range->min_m) return refuse(StereoGate::kExtent, length_m, range->min_m);
       if (length_m > range->max_m) return refuse(StereoGate::kExtent, length_m, range->max_m);
@@ -304,9 +299,10 @@ class PairJudge {
   const Detection& dl_;
   const Detection& dr_;
   StereoPairTrace& trace_;
-  const CutBarViews* cut_bar_;
+  const bool cut_bar_;
   const bool rectangles_;
-  std::optional<detail::Triangulator::BarSpan> bar_;
+  std::optional<detail::BarViewsAlong> bar_;
+  double bar_length_m_ = 0.0;  // the fitted bar's, 0 when the class's
   std::optional<detail::DoorSides> sides_;
   std::optional<detail::Triangulation> triangulation_;
   Eigen::Vector3d point_ = Eigen::Vector3d::Zero();  // the visible surface, left camera frame
@@ -328,7 +324,7 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
   const Detection& dr = v.right[r];
   const bool cut = dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone;
   if (!cut) {
-    std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, nullptr).judge();
+    std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, false).judge();
     const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
     if (!c && door && (door->occluder_cut || door->occluded_corner) &&
         v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0) {
@@ -367,14 +363,12 @@ std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
       trace.right_detection = r;
       std::optional<detail::Candidate> c;
       if (cut && detail::is_bar_type(v.options, dl.type)) {
-        // A bar cut at one end by the image border (cut_bar.hpp): with a whole view in the
-        // other image, judged as any two views of a bar (their union is the whole bar); cut by
-        // the same border in both, placed from its own end; by different borders, not paired.
+        // A bar cut at one end by the image border: placed by the bar's fit (partly_seen_bar.hpp),
+        // which needs the class's typical length where neither image shows an end; cut by
+        // different borders in the two images, not paired.
         const bool both = dl.border_cut != BorderCut::kNone && dr.border_cut != BorderCut::kNone;
-        const CutBarViews cut_bar{cut_bar_of(v.options, dl.type),
-                                  both ? dl.border_cut : BorderCut::kNone};
-        if (!cut_bar.bar || (both && dl.border_cut != dr.border_cut)) continue;
-        c = PairJudge(v, l, r, trace, &cut_bar).judge();
+        if (!cut_bar_of(v.options, dl.type) || (both && dl.border_cut != dr.border_cut)) continue;
+        c = PairJudge(v, l, r, trace, true).judge();
       } else {
         if (!detail::door_pair_is_judged(v, l, r)) continue;
         c = judge_door_pair(v, l, r, trace, occluded);
