@@ -23,6 +23,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/triangulation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/bar_match_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/cut_bar_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/partly_seen_bar_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/partly_seen_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/occluder_cut_door_test.cpp

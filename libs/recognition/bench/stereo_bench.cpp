@@ -17,8 +17,8 @@
 // placed from their whole side and the typical width (partly_seen_door.hpp). BM_TwinHandleSplit: 20
 // door outlines each split between a double door's two handles (twin_handle_split.hpp).
 // BM_WholeDoorPair: a pair of whole door outlines placed by the door's fit, both sides correlated.
-// BM_CutBarPair: a handle cut by the top border in both images, placed from its own end and the
-// class's typical length (cut_bar.hpp). No main
+// BM_BarPair: a handle placed by the fit of a 3D segment (partly_seen_bar.hpp), whole (arg 0) or
+// cut by the top border in both images, its length the class's (arg 1). No main
 // here: the fragments share vsl_recognition_bench's.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench
 //   --benchmark_filter='BM_Match|BM_Side'
@@ -389,13 +389,16 @@ void BM_TwinHandleSplit(benchmark::State& state) {
 }
 BENCHMARK(BM_TwinHandleSplit)->Unit(benchmark::kMicrosecond);
 
-void BM_CutBarPair(benchmark::State& state) {
+void BM_BarPair(benchmark::State& state) {
+  const bool cut_at_top = state.range(0) == 1;
   const head::StereoCalibration calibration =
       head::load_stereo_calibration(std::string(VSL_SOURCE_DIR "/calib/armar3_sim.yaml"));
   const Eigen::Isometry3d left_T_right = calibration.left_T_right();
-  // A vertical handle 16 cm long, 2 m ahead, its upper 40% beyond the top border of both images
-  // (cut_bar_test.cpp).
-  const Eigen::Vector3d bottom(0.2, 0.10, 2.0), cut(0.2, 0.004, 2.0);
+  // A vertical handle 16 cm long, 2 m ahead, cut: its upper 40% beyond the top border of both
+  // images (cut_bar_test.cpp).
+  const Eigen::Vector3d bottom(0.2, 0.10, 2.0);
+  const Eigen::Vector3d cut =
+      cut_at_top ? Eigen::Vector3d(0.2, 0.004, 2.0) : Eigen::Vector3d(0.2, -0.06, 2.0);
   Detection left, right;
   for (Detection* d : {&left, &right}) {
     const bool is_left = d == &left;
@@ -404,7 +407,7 @@ void BM_CutBarPair(benchmark::State& state) {
     const Eigen::Vector2d b = is_left ? project(cut, calibration.left)
                                       : project(left_T_right.inverse() * cut, calibration.right);
     d->type = "handle";
-    d->border_cut = BorderCut::kTop;
+    d->border_cut = cut_at_top ? BorderCut::kTop : BorderCut::kNone;
     d->reference_px = 0.5 * (a + b);
     d->major_axis_angle_rad = std::atan2(std::abs(b.y() - a.y()), b.x() - a.x());
     d->major_extent_px = (b - a).norm();
@@ -416,9 +419,9 @@ void BM_CutBarPair(benchmark::State& state) {
   options.bar_types = {"handle"};
   options.cut_bars = {{"handle", 0.16, 0.03}};
   match_one_pair(state, left, right, calibration, options, Eigen::Vector3d(0.0, -1.0, 0.0),
-                 "the cut handle");
+                 "the handle");
 }
-BENCHMARK(BM_CutBarPair)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BarPair)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vsl::recognition

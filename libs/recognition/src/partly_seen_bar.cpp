@@ -43,21 +43,23 @@ struct EndResidual {
   bool operator()(const T* theta, T* residual) const {
     const Eigen::Matrix<T, 3, 1> p = end_of(theta, end);
     if (seen) return camera->point_residual(p, measured_px, sigma_px, residual);
-    return camera->line_residual(p, Eigen::Matrix<T, 3, 1>(end_of(theta, 1 - end) - p),
-                                 measured_px, sigma_px, residual);
+    return camera->line_residual(p, Eigen::Matrix<T, 3, 1>(end_of(theta, 1 - end) - p), measured_px,
+                                 sigma_px, residual);
   }
   int size() const { return seen ? 2 : 1; }
 };
 
-// The direction prior: the bar's unit direction across `normal`, a . normal / sigma_a.
+// The direction prior: the bar's unit direction against d (unit, oriented from P_0 to P_1),
+// (a - d) / sigma_a, the chord of the angle between them (its sine near d; unlike a . (n x d)
+// it still pulls where the bar lies across d).
 struct DirectionPrior {
-  Eigen::Vector3d normal;
+  Eigen::Vector3d d;
   template <class T>
   bool operator()(const T* theta, T* residual) const {
-    const Eigen::Matrix<T, 3, 1> d = end_of(theta, 1) - end_of(theta, 0);
-    const T length = d.norm();
+    const Eigen::Matrix<T, 3, 1> p = end_of(theta, 1) - end_of(theta, 0);
+    const T length = p.norm();
     if (!(length > T(1e-9))) return false;
-    residual[0] = d.dot(normal.cast<T>()) / (length * T(kDirectionSigmaRad));
+    for (int i = 0; i < 3; ++i) residual[i] = (p[i] / length - T(d[i])) / T(kDirectionSigmaRad);
     return true;
   }
 };
@@ -88,15 +90,15 @@ std::size_t end_at_border(const std::array<Eigen::Vector2d, 2>& ends, BorderCut 
 
 // The left view's ends lifted onto the right view's plane through the right camera centre (the
 // start of the fit): stereo's depth where the bar crosses the epipolar lines.
-std::optional<Theta> start_of(const BarViewsAlong& views,
-                              const std::array<RigCamera, 2>& cameras) {
+std::optional<Theta> start_of(const BarViewsAlong& views, const std::array<RigCamera, 2>& cameras) {
   const std::array<Eigen::Vector2d, 2>& left = views.ends_ideal_px[0];
   const std::array<Eigen::Vector2d, 2>& right = views.ends_ideal_px[1];
   const Eigen::Matrix3d left_from_right = cameras[1].camera_T_left.linear().transpose();
   const Eigen::Vector3d right_centre = -left_from_right * cameras[1].camera_T_left.translation();
   const Eigen::Matrix3d right_k_inverse = cameras[1].K.inverse();
-  const Eigen::Vector3d normal = (left_from_right * right_k_inverse * right[0].homogeneous())
-                                     .cross(left_from_right * right_k_inverse * right[1].homogeneous());
+  const Eigen::Vector3d normal =
+      (left_from_right * right_k_inverse * right[0].homogeneous())
+          .cross(left_from_right * right_k_inverse * right[1].homogeneous());
   const Eigen::Vector2d along = (left[1] - left[0]).normalized();
   Theta theta{};
   for (std::size_t e = 0; e < 2; ++e) {
@@ -123,11 +125,10 @@ double along_bar(const Theta& theta, const RigCamera& camera, const Eigen::Vecto
   return a.colPivHouseholderQr().solve(centre - p0).x();
 }
 
-// The directions within the left view's plane that the prior allows (partly_seen_bar.hpp), each
-// as n x d (n the plane's unit normal): the direction across which a . (n x d) measures the bar's
-// turn away from d in the plane. With the world's vertical, up projected into the plane when it
-// holds a direction within 0.3 rad of up (a handle on a door) and the plane's level direction (a
-// handle on a drawer seen from above); without it, the plane's direction of constant depth.
+// The directions within the left view's plane that the prior allows (partly_seen_bar.hpp), unit:
+// with the world's vertical, up projected into the plane when it holds a direction within 0.3
+// rad of up (a handle on a door) and the plane's level direction (a handle on a drawer seen from
+// above); without it, the plane's direction of constant depth.
 std::vector<Eigen::Vector3d> prior_directions(const std::array<Eigen::Vector2d, 2>& left_ends_px,
                                               const DoorRig& rig) {
   const Eigen::Matrix3d k_inverse = rig.left_K.inverse();
@@ -136,7 +137,7 @@ std::vector<Eigen::Vector3d> prior_directions(const std::array<Eigen::Vector2d, 
                                 .normalized();
   std::vector<Eigen::Vector3d> directions;
   const auto add = [&](const Eigen::Vector3d& d) {
-    if (d.norm() > 1e-9) directions.push_back(n.cross(d.normalized()));
+    if (d.norm() > 1e-9) directions.push_back(d.normalized());
   };
   if (!(rig.up.norm() > 0.0)) {
     add(n.cross(Eigen::Vector3d::UnitZ()));
@@ -150,14 +151,15 @@ std::vector<Eigen::Vector3d> prior_directions(const std::array<Eigen::Vector2d, 
 struct Solution {
   Theta theta{};
   Eigen::Matrix<double, 6, 6> inverse;  // (J^T J)^-1
+  double cost = 0.0;                    // Ceres' final cost, priors included
   double worst_px = 0.0;                // the largest image residual, pixels
   double variance_factor = 1.0;         // max(1, chi^2 / (n - 6))
 };
 
-// The bar fitted from `start` to the end observations with the direction prior `across`
+// The bar fitted from `start` to the end observations with the direction prior along `d`
 // (prior_directions) and, when given, the length prior; nullopt when unusable or singular.
 std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>& residuals,
-                              const Eigen::Vector3d& across,
+                              const Eigen::Vector3d& d,
                               const StereoMatchOptions::CutBar* length_prior) {
   Solution out;
   out.theta = start;
@@ -169,9 +171,10 @@ std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>
                : new ceres::AutoDiffCostFunction<EndResidual, 1, 6>(new EndResidual(r));
     problem.AddResidualBlock(cost, nullptr, out.theta.data());
   }
-  problem.AddResidualBlock(
-      new ceres::AutoDiffCostFunction<DirectionPrior, 1, 6>(new DirectionPrior{across}), nullptr,
-      out.theta.data());
+  const bool reversed = d.dot(end_of(start.data(), 1) - end_of(start.data(), 0)) < 0.0;
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DirectionPrior, 3, 6>(
+                               new DirectionPrior{reversed ? Eigen::Vector3d(-d) : d}),
+                           nullptr, out.theta.data());
   if (length_prior) {
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LengthPrior, 1, 6>(new LengthPrior{
                                  length_prior->typical_length_m, length_prior->length_sigma_m}),
@@ -187,8 +190,9 @@ std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>
   const std::optional<Eigen::Matrix<double, 6, 6>> inverse = inverse_information(problem);
   if (!summary.IsSolutionUsable() || !inverse) return std::nullopt;
   out.inverse = *inverse;
+  out.cost = summary.final_cost;
   double chi2 = 0.0;
-  int count = 1 + (length_prior ? 1 : 0);  // the priors, about zero at the solution
+  int count = 2 + (length_prior ? 1 : 0);  // the priors' independent residuals, about zero there
   for (const EndResidual& r : residuals) {
     double value[2] = {0.0, 0.0};
     if (!r(out.theta.data(), value)) return std::nullopt;
@@ -241,9 +245,9 @@ std::optional<BarViewsAlong> bar_views_along(const std::array<BarView, 2>& views
   }
   out.union_along_left_px = {std::min(0.0, right_along[0]), std::max(left_px, right_along[1])};
   const double right_px = right_along[1] - right_along[0];
-  out.containment_excess_px =
-      right_px <= left_px ? std::max({0.0, -right_along[0], right_along[1] - left_px})
-                          : std::max({0.0, right_along[0], left_px - right_along[1]});
+  out.containment_excess_px = right_px <= left_px
+                                  ? std::max({0.0, -right_along[0], right_along[1] - left_px})
+                                  : std::max({0.0, right_along[0], left_px - right_along[1]});
   return out;
 }
 
@@ -255,10 +259,9 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
   const std::array<RigCamera, 2> cameras{
       {{rig.left_K, Eigen::Isometry3d::Identity()}, {rig.right_K, rig.right_T_left}}};
   // An end that neither image sees is the class's.
-  const bool end_unseen = (views.states[0][0] == BarEndState::kOnLine &&
-                           views.states[1][0] == BarEndState::kOnLine) ||
-                          (views.states[0][1] == BarEndState::kOnLine &&
-                           views.states[1][1] == BarEndState::kOnLine);
+  const bool end_unseen =
+      (views.states[0][0] == BarEndState::kOnLine && views.states[1][0] == BarEndState::kOnLine) ||
+      (views.states[0][1] == BarEndState::kOnLine && views.states[1][1] == BarEndState::kOnLine);
   if (end_unseen && !prior) return refuse(trace, kTriangulation, 0.0, 0.0);
   std::optional<Theta> theta = start_of(views, cameras);
   if (!theta) return refuse(trace, kTriangulation, 0.0, 0.0);
@@ -270,12 +273,12 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
                            views.ends_ideal_px[k][e], pixel_sigma_px});
     }
   }
-  // The bar along each direction the prior allows; the one the images agree with best.
+  // The bar along each direction the prior allows; the one that fits best, priors included.
   const StereoMatchOptions::CutBar* length_prior = end_unseen ? prior : nullptr;
   std::optional<Solution> best;
-  for (const Eigen::Vector3d& across : prior_directions(views.ends_ideal_px[0], rig)) {
-    std::optional<Solution> solution = solve(*theta, residuals, across, length_prior);
-    if (solution && (!best || solution->worst_px < best->worst_px)) best = std::move(solution);
+  for (const Eigen::Vector3d& d : prior_directions(views.ends_ideal_px[0], rig)) {
+    std::optional<Solution> solution = solve(*theta, residuals, d, length_prior);
+    if (solution && (!best || solution->cost < best->cost)) best = std::move(solution);
   }
   if (!best) return refuse(trace, kTriangulation, 0.0, 0.0);
   theta = best->theta;
@@ -307,9 +310,8 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
   // The centre's covariance, M (J^T J)^-1 M^T with M = [I/2 I/2], times the variance factor.
   const Eigen::Matrix<double, 6, 6>& s = best->inverse;
   fit.centre_m = 0.5 * (p0 + p1);
-  fit.centre_covariance_m2 =
-      0.25 * (s.topLeftCorner<3, 3>() + s.topRightCorner<3, 3>() + s.bottomLeftCorner<3, 3>() +
-              s.bottomRightCorner<3, 3>());
+  fit.centre_covariance_m2 = 0.25 * (s.topLeftCorner<3, 3>() + s.topRightCorner<3, 3>() +
+                                     s.bottomLeftCorner<3, 3>() + s.bottomRightCorner<3, 3>());
   fit.centre_covariance_m2 *= best->variance_factor;
   return fit;
 }

@@ -18,19 +18,21 @@
 //   length     r = (|P_1 - P_0| - L) / sigma_L.
 // The bar's tilt towards the cameras is the difference of its ends' disparities, a fraction of a
 // pixel, so it comes from a prior. Every line in the plane that the left view spans through the
-// camera centre (unit normal n) has the same left image; within that plane the bar runs along
-// d = up projected into it when the plane holds a direction within 0.3 rad of the world's
-// vertical (a handle on a door), otherwise along the plane's direction of constant depth, n x z
-// (z the left optical axis):
-//   direction  r = a . (n x d) / sigma_a,   sigma_a = 0.01 rad,
+// camera centre has the same left image; within that plane the bar runs along d, up projected
+// into it when the plane holds a direction within 0.3 rad of the world's vertical (a handle on a
+// door), or the plane's level direction (a drawer's handle seen from above); the bar is fitted
+// along each and the one of least cost kept. Without the vertical, d is the plane's direction of
+// constant depth (z the left optical axis). With d oriented from P_0 to P_1,
+//   direction  r = (a - d) / sigma_a,   sigma_a = 0.01 rad
+// (the chord of the angle between them, which unlike its sine still pulls a bar lying across d),
 // well below what the images measure of it.
 //
-// Solved by Ceres' Levenberg-Marquardt (dense QR) from the left view's ends lifted onto the right
-// view's plane through the right camera. The centre (P_0 + P_1) / 2 has covariance
-// M (J^T J)^-1 M^T, M = [I/2 I/2], scaled by the a-posteriori variance factor chi^2 / (n - 6)
-// where that exceeds 1 (the ends of a segmented bar scatter by more than the pixel noise).
-// Accepted when every image residual is within the caller's tolerance and, with an end from the
-// prior, the visible length (the union of the views) is 0.4 to 1.1 of L: a shorter piece places
+// Solved by Ceres' Levenberg-Marquardt (dense QR) from the left view's ends, at the union's
+// extent, lifted onto the right view's plane through the right camera. The centre (P_0 + P_1) / 2
+// has covariance M (J^T J)^-1 M^T, M = [I/2 I/2], scaled by the a-posteriori variance factor chi^2
+// / (n - 6) where that exceeds 1 (the ends of a segmented bar scatter by more than the pixel
+// noise). Accepted when every image residual is within the caller's tolerance and, with an end from
+// the prior, the visible length (the union of the views) is 0.4 to 1.1 of L: a shorter piece places
 // the centre from too little, a longer one is no such bar.
 #pragma once
 
@@ -73,7 +75,7 @@ std::optional<BarViewsAlong> bar_views_along(const std::array<BarView, 2>& views
 struct BarFit {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // left camera frame, visible surface
   Eigen::Matrix3d centre_covariance_m2 = Eigen::Matrix3d::Zero();
-  double length_m = 0.0;  // |P_1 - P_0|
+  double length_m = 0.0;           // |P_1 - P_0|
   bool length_from_prior = false;  // an end neither image sees: the length is the class's
 };
 

@@ -13,9 +13,6 @@ constexpr double kDifferenceStepPx = 1e-3;
 // left_ray_on_level_plane: the smallest sine of the angle between a ray and the horizontal plane
 // it must meet (below it, a pixel of noise moves the point too far along the ray).
 constexpr double kMinRayElevationSin = 0.05;
-// bar_span: a bar is taken as vertical when the plane its longer image spans through the camera
-// centre holds a direction within this angle's sine (0.3 rad) of up.
-constexpr double kMaxBarUpOutOfPlaneSin = 0.3;
 
 }  // namespace
 
@@ -123,90 +120,6 @@ std::optional<double> Triangulator::informative_edge_slope(
     }
   }
   return slope;
-}
-
-std::optional<Triangulator::BarSpan> Triangulator::bar_span(
-    const std::array<Eigen::Vector2d, 2>& left, const std::array<Eigen::Vector2d, 2>& right,
-    const Eigen::Vector3d& up) const {
-  const std::array<Eigen::Vector3d, 2> a = {left_k_inverse_ * left[0].homogeneous(),
-                                            left_k_inverse_ * left[1].homogeneous()};
-  const std::array<Eigen::Vector3d, 2> b = {right_k_inverse_in_left_ * right[0].homogeneous(),
-                                            right_k_inverse_in_left_ * right[1].homogeneous()};
-  const Eigen::Vector3d n_right = b[0].cross(b[1]);  // the right segment's plane through t
-  const Eigen::Vector3d n_left = a[0].cross(a[1]);   // the left segment's plane through 0
-  if (!(n_right.norm() > 0.0) || !(n_left.norm() > 0.0)) return std::nullopt;
-  const Eigen::Vector3d& t = right_centre_m_;
-  std::array<Eigen::Vector3d, 2> lifted_left, lifted_right;
-  for (int e = 0; e < 2; ++e) {
-    const double na = n_right.dot(a[e]);
-    if (!(std::abs(na) > 1e-3 * n_right.norm() * a[e].norm())) return std::nullopt;
-    const double s = n_right.dot(t) / na;
-    const double nb = n_left.dot(b[e]);
-    if (!(std::abs(nb) > 1e-3 * n_left.norm() * b[e].norm())) return std::nullopt;
-    const double w = -n_left.dot(t) / nb;
-    if (!(s > 0.0) || !(w > 0.0)) return std::nullopt;
-    lifted_left[e] = s * a[e];
-    lifted_right[e] = t + w * b[e];
-  }
-  // The shorter segment's ends, lifted onto the longer one's plane, lie where the longer
-  // segment is measured (within it, for two views of one bar): their depth is what stereo gives
-  // well. The longer segment's ends, lifted onto the shorter's plane, extrapolate the shorter's
-  // line beyond its ends, where a small error of its angle is a large error of depth.
-  const bool left_longer =
-      (lifted_left[1] - lifted_left[0]).norm() >= (lifted_right[1] - lifted_right[0]).norm();
-  const std::array<Eigen::Vector2d, 2>& longer = left_longer ? left : right;
-  const std::array<Eigen::Vector3d, 2>& shorter_lifted = left_longer ? lifted_right : lifted_left;
-  const Eigen::Vector3d origin = left_longer ? Eigen::Vector3d::Zero() : t;
-  const Eigen::Matrix3d& k_inverse = left_longer ? left_k_inverse_ : right_k_inverse_in_left_;
-  const Eigen::Matrix3d projection = k_inverse.inverse();  // left frame -> longer image
-  // Along the longer segment in its image (pixels from its first end): its range [0, length] and
-  // the shorter one's, projected there.
-  const double longer_px = (longer[1] - longer[0]).norm();
-  if (!(longer_px > 0.0)) return std::nullopt;
-  const Eigen::Vector2d direction = (longer[1] - longer[0]) / longer_px;
-  std::array<double, 2> shorter_px{};
-  for (int e = 0; e < 2; ++e) {
-    const Eigen::Vector3d h = projection * (shorter_lifted[e] - origin);
-    if (!(h.z() > 0.0)) return std::nullopt;
-    shorter_px[e] = (h.hnormalized() - longer[0]).dot(direction);
-  }
-  const double shorter_lo = std::min(shorter_px[0], shorter_px[1]);
-  const double shorter_hi = std::max(shorter_px[0], shorter_px[1]);
-  const double lo = std::min(0.0, shorter_lo), hi = std::max(longer_px, shorter_hi);
-  // The bar's line: through the shorter segment's lifted middle, in the longer image's plane
-  // (normal n), along `up` projected into that plane when the bar can be vertical (a handle on a
-  // door), otherwise at constant depth (n x z). The line through the lifted points is no better:
-  // its direction comes from the disparity difference between the shorter segment's ends, a
-  // fraction of a pixel.
-  const Eigen::Vector3d through = 0.5 * (shorter_lifted[0] + shorter_lifted[1]);
-  const Eigen::Vector3d normal =
-      (k_inverse * longer[0].homogeneous()).cross(k_inverse * longer[1].homogeneous()).normalized();
-  Eigen::Vector3d along = normal.cross(Eigen::Vector3d::UnitZ());
-  if (up.norm() > 0.0 && std::abs(normal.dot(up.normalized())) < kMaxBarUpOutOfPlaneSin) {
-    along = up - up.dot(normal) * normal;
-  }
-  if (!(along.norm() > 0.0)) return std::nullopt;
-  along.normalize();
-  // Where the longer image's ray at `along_px` meets the line (both lie in the plane):
-  // origin + w ray = through + lambda along, least squares in (w, lambda).
-  const auto on_line = [&](double along_px) -> std::optional<Eigen::Vector3d> {
-    const Eigen::Vector3d ray = k_inverse * (longer[0] + along_px * direction).homogeneous();
-    Eigen::Matrix<double, 3, 2> a;
-    a << ray, -along;
-    const Eigen::Matrix2d ata = a.transpose() * a;
-    if (!(std::abs(ata.determinant()) > 1e-12 * ata.trace() * ata.trace())) return std::nullopt;
-    const Eigen::Vector2d wl = ata.ldlt().solve(a.transpose() * (through - origin));
-    if (!(wl.x() > 0.0)) return std::nullopt;
-    return Eigen::Vector3d(through + wl.y() * along);
-  };
-  const auto start = on_line(lo), end = on_line(hi);
-  if (!start || !end) return std::nullopt;
-  BarSpan span;
-  span.centre_m = 0.5 * (*start + *end);
-  span.axis = (*end - *start).normalized();
-  span.length_m = (*end - *start).norm();
-  span.containment_excess_px = std::max({0.0, -shorter_lo, shorter_hi - longer_px});
-  return span;
 }
 
 std::optional<Eigen::Vector3d> Triangulator::midpoint(const Eigen::Vector2d& left_ideal_px,

@@ -76,37 +76,6 @@ class Triangulator {
   static std::array<std::array<int, 2>, 2> vertical_sides(
       const std::array<Eigen::Vector2d, 4>& corners_px);
 
-  // A bar (a handle) seen as a segment in both images, one image's segment possibly only a
-  // fragment of the bar (segmentation lost a part of it in that image).
-  //
-  // Derivation. The right image's segment and the right camera centre t span a plane with normal
-  // n_r = b_1 x b_2 (b_i = R K_r^-1 (e_i, 1), the rays through the segment's ends); the left
-  // ray X = s a through a left end meets it at s = n_r . t / n_r . a. Likewise the left segment
-  // spans, with the left camera centre (the origin), the plane n_l = a_1 x a_2, and the right ray
-  // X = t + w b meets it at w = -n_l . t / n_l . b. A fragment lies within the whole bar, so the
-  // shorter segment's ends, lifted so onto the longer's plane, are 3D points of the bar where
-  // both images measure it, and their middle is a point of the bar at the depth stereo gives.
-  // The bar's direction in 3D is poorly known (from the disparity difference of the shorter
-  // segment's ends, a fraction of a pixel), so it comes from a prior instead: within the longer
-  // image's plane, `up` (a handle on a door is vertical) when that plane holds a direction
-  // within 0.3 rad of it, otherwise the direction of constant depth. Along the bar, the shorter
-  // segment's lifted ends are projected into the longer's image and the bar is the union of the
-  // two ranges there; its ends are where that image's rays through the union's ends meet the
-  // bar's line, and its centre their middle. `containment_excess_px` is how far (pixels, along
-  // the longer segment) the shorter sticks out of the longer: 0 when it lies within, as two
-  // views of one bar do up to the end-point noise. nullopt when a ray runs (within 1e-3 rad) in
-  // the other image's plane, a point is not in front of the cameras, or a segment is degenerate.
-  // `up`: in the left camera frame, zero when unknown.
-  struct BarSpan {
-    Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // left camera frame, visible surface
-    Eigen::Vector3d axis = Eigen::Vector3d::UnitY();     // unit, along the bar
-    double length_m = 0.0;                               // of the union
-    double containment_excess_px = 0.0;
-  };
-  std::optional<BarSpan> bar_span(const std::array<Eigen::Vector2d, 2>& left_ends_ideal_px,
-                                  const std::array<Eigen::Vector2d, 2>& right_ends_ideal_px,
-                                  const Eigen::Vector3d& up) const;
-
   // How far from vertical in 3D the rectangle's sides nearer the image vertical are, as seen by
   // both cameras: a 3D line is vertical exactly when the plane its image spans through the camera
   // centre (the plane of the rays through its two ends) holds the up direction. Returns the

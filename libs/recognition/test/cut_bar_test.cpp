@@ -1,5 +1,5 @@
 // Handles: bars cut at one end by the image border (StereoMatchOptions::cut_bars,
-// cut_bar.hpp). Cut by the same border in both images, the centre lies half the class's typical
+// partly_seen_bar.hpp). Cut by the same border in both images, the centre lies half the class's typical
 // length from the end both images show; cut in one image only, the other's whole view gives it;
 // a piece too short or too long for the class, a pair cut by different borders, a bar along the
 // epipolar lines and a class without a typical length give none.

@@ -69,14 +69,14 @@ struct StereoMatchOptions {
   double max_edge_slope_rad = 0.0;
   // Types whose detections are bars (handles): a pair of such elongated detections (both at
   // least min_elongation_for_orientation, their axis at least 45 degrees from the epipolar line)
-  // is matched as two views of one bar segment (Triangulator::bar_span) rather than by its
+  // is placed by the fit of a 3D segment to both views (partly_seen_bar.hpp) rather than by its
   // reference points. Segmentation often loses a part of a thin bar in one image: that image's
   // segment is then a fragment, its midpoint moves along the bar by half the part lost, and the
   // reference-point gates (epipolar distance, area ratio) refuse the pair. As bars, the
-  // epipolar gate tests that the shorter segment, projected into the longer one's image, lies
-  // within it (to max_epipolar_distance_px); the area ratio
-  // compares the mean widths (area over length); the centre is the middle of the union of both
-  // lifted segments, and the class length (major_extent_range_m) is the union's.
+  // epipolar gate tests that the shorter view, placed along the longer by the epipolar lines,
+  // lies within it (to max_epipolar_distance_px), and the fit that every end lies within that
+  // distance of the fitted bar; the area ratio compares the mean widths (area over length); the
+  // bar's ends are the union's, and the class length (major_extent_range_m) the fitted bar's.
   std::vector<std::string> bar_types;
   // Rectangle outlines (doors) measured in the images themselves: the depth of each vertical
   // side of the left outline is where the image around it is found again in the right image
@@ -218,13 +218,12 @@ struct StereoMatchOptions {
   };
   std::vector<BorderCutDoor> border_cut;
   // Bars of a bar type (bar_types) cut at one end by the image border
-  // (HandleRecognizerParameters::detect_border_cut). A cut detection pairs with a whole one in
-  // the other image as any two views of a bar (their union is the whole bar); with one cut by the
-  // same border, the bar's span is the union of the two views as for whole bars, its end away
-  // from the border is the bar's, and the centre lies half the class's typical length from that
-  // end along the bar, towards the border. The visible span must be 0.4 .. 1.1 of the typical
-  // length; the covariance gains (length_sigma_m / 2)^2 along the bar. Metres; a type without an
-  // entry pairs no cut bars.
+  // (HandleRecognizerParameters::detect_border_cut), placed by the same fit: the view's end at
+  // the border is only a point of the bar. Where neither image shows an end (both cut by the same
+  // border, or the other view ends short of it), the bar's length is the class's typical one,
+  // with its spread as the prior's sigma, and the visible part must be 0.4 .. 1.1 of the typical
+  // length. Views cut by different borders are not paired. Metres; a type without an entry pairs
+  // no cut bars.
   struct CutBar {
     std::string type;
     double typical_length_m = 0.0;
