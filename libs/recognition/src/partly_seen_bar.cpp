@@ -273,12 +273,14 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
                            views.ends_ideal_px[k][e], pixel_sigma_px});
     }
   }
-  // The bar along each direction the prior allows; the one that fits best, priors included.
+  // The bar along the directions the prior allows, in order: the first whose image residuals are
+  // within the tolerance (a door's handle is not fitted level too), else the one of least cost.
   const StereoMatchOptions::CutBar* length_prior = end_unseen ? prior : nullptr;
   std::optional<Solution> best;
   for (const Eigen::Vector3d& d : prior_directions(views.ends_ideal_px[0], rig)) {
     std::optional<Solution> solution = solve(*theta, residuals, d, length_prior);
     if (solution && (!best || solution->cost < best->cost)) best = std::move(solution);
+    if (best && best->worst_px <= tolerance_px) break;
   }
   if (!best) return refuse(trace, kTriangulation, 0.0, 0.0);
   theta = best->theta;

@@ -20,9 +20,10 @@
 // pixel, so it comes from a prior. Every line in the plane that the left view spans through the
 // camera centre has the same left image; within that plane the bar runs along d, up projected
 // into it when the plane holds a direction within 0.3 rad of the world's vertical (a handle on a
-// door), or the plane's level direction (a drawer's handle seen from above); the bar is fitted
-// along each and the one of least cost kept. Without the vertical, d is the plane's direction of
-// constant depth (z the left optical axis). With d oriented from P_0 to P_1,
+// door), or the plane's level direction (a drawer's handle seen from above): the first whose fit
+// leaves every image residual within the tolerance, else the one of least cost. Without the
+// vertical, d is the plane's direction of constant depth (z the left optical axis). With d oriented
+// from P_0 to P_1,
 //   direction  r = (a - d) / sigma_a,   sigma_a = 0.01 rad
 // (the chord of the angle between them, which unlike its sine still pulls a bar lying across d),
 // well below what the images measure of it.
