@@ -17,6 +17,9 @@ namespace {
 // A bar is vertical when its left view's plane through the camera centre holds a direction
 // within this angle's sine (0.3 rad) of up.
 constexpr double kMaxVerticalOutOfPlaneSin = 0.3;
+// A plane through the camera centre closer to level than this angle's sine (about 3 degrees) has
+// no level direction of its own: a bar at eye height.
+constexpr double kMinLevelDirectionSin = 0.05;
 // The direction prior's standard deviation, radians (partly_seen_bar.hpp).
 constexpr double kDirectionSigmaRad = 0.01;
 // With an end from the prior, the visible length's range as fractions of the typical length.
@@ -88,9 +91,46 @@ std::size_t end_at_border(const std::array<Eigen::Vector2d, 2>& ends, BorderCut 
   }
 }
 
+// The closest point between the left ray through `left_px` and the right ray through `right_px`
+// (left camera frame), nullopt when they are parallel or it lies behind a camera.
+std::optional<Eigen::Vector3d> ray_crossing(const std::array<RigCamera, 2>& cameras,
+                                            const Eigen::Vector2d& left_px,
+                                            const Eigen::Vector2d& right_px) {
+  const Eigen::Matrix3d left_from_right = cameras[1].camera_T_left.linear().transpose();
+  const Eigen::Vector3d t = -left_from_right * cameras[1].camera_T_left.translation();
+  const Eigen::Vector3d a = cameras[0].K.inverse() * left_px.homogeneous();
+  const Eigen::Vector3d b = left_from_right * cameras[1].K.inverse() * right_px.homogeneous();
+  Eigen::Matrix<double, 3, 2> m;
+  m << a, -b;
+  const Eigen::Vector2d sw = m.colPivHouseholderQr().solve(t);
+  if (!(sw.x() > 0.0) || !(sw.y() > 0.0) || !(m.transpose() * m).determinant()) return std::nullopt;
+  return Eigen::Vector3d(0.5 * (sw.x() * a + t + sw.y() * b));
+}
+
+// A bar along the epipolar lines: each end both images see triangulated, the others on their
+// left rays at its depth (the start of the fit).
+std::optional<Theta> start_along_epipolar(const BarViewsAlong& views,
+                                          const std::array<RigCamera, 2>& cameras) {
+  std::optional<Eigen::Vector3d> anchor;
+  for (std::size_t e = 0; e < 2 && !anchor; ++e) {
+    if (views.states[0][e] == BarEndState::kSeen && views.states[1][e] == BarEndState::kSeen) {
+      anchor = ray_crossing(cameras, views.ends_ideal_px[0][e], views.ends_ideal_px[1][e]);
+    }
+  }
+  if (!anchor) return std::nullopt;
+  Theta theta{};
+  for (std::size_t e = 0; e < 2; ++e) {
+    const Eigen::Vector3d ray = cameras[0].K.inverse() * views.ends_ideal_px[0][e].homogeneous();
+    const Eigen::Vector3d p = (anchor->z() / ray.z()) * ray;
+    std::copy(p.data(), p.data() + 3, theta.begin() + static_cast<std::ptrdiff_t>(3 * e));
+  }
+  return theta;
+}
+
 // The left view's ends lifted onto the right view's plane through the right camera centre (the
 // start of the fit): stereo's depth where the bar crosses the epipolar lines.
 std::optional<Theta> start_of(const BarViewsAlong& views, const std::array<RigCamera, 2>& cameras) {
+  if (views.along_epipolar) return start_along_epipolar(views, cameras);
   const std::array<Eigen::Vector2d, 2>& left = views.ends_ideal_px[0];
   const std::array<Eigen::Vector2d, 2>& right = views.ends_ideal_px[1];
   const Eigen::Matrix3d left_from_right = cameras[1].camera_T_left.linear().transpose();
@@ -144,7 +184,9 @@ std::vector<Eigen::Vector3d> prior_directions(const std::array<Eigen::Vector2d, 
     return directions;
   }
   if (std::abs(n.dot(rig.up)) < kMaxVerticalOutOfPlaneSin) add(rig.up - rig.up.dot(n) * n);
-  add(n.cross(rig.up));
+  // A plane within about 3 degrees of level has no level direction of its own.
+  if (n.cross(rig.up).norm() > kMinLevelDirectionSin) add(n.cross(rig.up));
+  if (directions.empty()) add(n.cross(Eigen::Vector3d::UnitZ()));
   return directions;
 }
 
@@ -248,6 +290,37 @@ std::optional<BarViewsAlong> bar_views_along(const std::array<BarView, 2>& views
   out.containment_excess_px = right_px <= left_px
                                   ? std::max({0.0, -right_along[0], right_along[1] - left_px})
                                   : std::max({0.0, right_along[0], left_px - right_along[1]});
+  return out;
+}
+
+std::optional<BarViewsAlong> bar_views_along_epipolar(const std::array<BarView, 2>& views,
+                                                      const Eigen::Matrix3d& right_F_left) {
+  const std::array<Eigen::Vector2d, 2>& left = views[0].ends_ideal_px;
+  const Eigen::Vector2d along = left[1] - left[0];
+  if (!(along.norm() > 0.0)) return std::nullopt;
+  BarViewsAlong out;
+  out.along_epipolar = true;
+  out.ends_ideal_px[0] = left;
+  out.ends_ideal_px[1] = views[1].ends_ideal_px;
+  if ((out.ends_ideal_px[1][1] - out.ends_ideal_px[1][0]).dot(along) < 0.0) {
+    std::swap(out.ends_ideal_px[1][0], out.ends_ideal_px[1][1]);
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    out.states[k] = {BarEndState::kSeen, BarEndState::kSeen};
+    if (views[k].cut == BorderCut::kNone) continue;
+    out.states[k][end_at_border(out.ends_ideal_px[k], views[k].cut)] = BarEndState::kOnLine;
+  }
+  // The ends both images show lie on each other's epipolar lines; at least one must.
+  bool anchored = false;
+  for (std::size_t e = 0; e < 2; ++e) {
+    if (out.states[0][e] != BarEndState::kSeen || out.states[1][e] != BarEndState::kSeen) continue;
+    const Eigen::Vector3d line = right_F_left * out.ends_ideal_px[0][e].homogeneous();
+    const double distance =
+        std::abs(line.dot(out.ends_ideal_px[1][e].homogeneous())) / line.head<2>().norm();
+    out.containment_excess_px = std::max(out.containment_excess_px, distance);
+    anchored = true;
+  }
+  if (!anchored) return std::nullopt;
   return out;
 }
 

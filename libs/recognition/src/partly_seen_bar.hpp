@@ -65,6 +65,8 @@ struct BarViewsAlong {
   double containment_excess_px = 0.0;
   // The union of the views along the left view's line (pixels from its first end).
   std::array<double, 2> union_along_left_px{};
+  // The bar runs along the epipolar lines (bar_views_along_epipolar).
+  bool along_epipolar = false;
 };
 
 // The two views along the bar: each right end's place on the left view's line is where its
@@ -72,6 +74,15 @@ struct BarViewsAlong {
 // runs (within 1e-3) along an epipolar line.
 std::optional<BarViewsAlong> bar_views_along(const std::array<BarView, 2>& views,
                                              const Eigen::Matrix3d& right_F_left);
+
+// Two views of a bar along the epipolar lines, one cut by the image border: along them the views'
+// extents are their disparities, so no view reaches farther than the other; every end is seen
+// but where the border cuts its view. Its ends are matched in order along the left view;
+// `containment_excess_px` is the largest distance of an end both images see from its left
+// partner's epipolar line. nullopt when a view is degenerate or no end is seen in both (nothing
+// gives the bar's depth). The fit starts from that end triangulated.
+std::optional<BarViewsAlong> bar_views_along_epipolar(const std::array<BarView, 2>& views,
+                                                      const Eigen::Matrix3d& right_F_left);
 
 struct BarFit {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();  // left camera frame, visible surface

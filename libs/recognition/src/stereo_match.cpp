@@ -153,14 +153,18 @@ class PairJudge {
     const Eigen::Vector2d b = v_.right_bar_ends[r_][1].ideal_px;
     const Eigen::Vector3d line = v_.epipolar.right_line(v_.left_ideal[l_].ideal_px);  // a^2+b^2=1
     const double length = (b - a).norm();
+    const std::array<detail::BarView, 2> views{
+        {{{v_.left_bar_ends[l_][0].ideal_px, v_.left_bar_ends[l_][1].ideal_px}, dl_.border_cut},
+         {{a, b}, dr_.border_cut}}};
     // |cos| of the angle between the bar and the line's normal: sin of the angle to the line.
     if (!(length > 0.0 && std::abs((b - a).dot(line.head<2>())) >= std::sqrt(0.5) * length)) {
-      return true;
+      // Along the epipolar lines a whole pair keeps its reference points; a cut view's is
+      // another point of the bar, so a cut pair is placed by the fit.
+      if (!cut_bar_) return true;
+      bar_ = detail::bar_views_along_epipolar(views, v_.epipolar.fundamental());
+    } else {
+      bar_ = detail::bar_views_along(views, v_.epipolar.fundamental());
     }
-    bar_ = detail::bar_views_along(
-        {{{{v_.left_bar_ends[l_][0].ideal_px, v_.left_bar_ends[l_][1].ideal_px}, dl_.border_cut},
-          {{a, b}, dr_.border_cut}}},
-        v_.epipolar.fundamental());
     if (!bar_) {
       detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
       return false;

@@ -1,8 +1,9 @@
 // Handles: bars cut at one end by the image border (StereoMatchOptions::cut_bars,
-// partly_seen_bar.hpp). Cut by the same border in both images, the centre lies half the class's typical
-// length from the end both images show; cut in one image only, the other's whole view gives it;
-// a piece too short or too long for the class, a pair cut by different borders, a bar along the
-// epipolar lines and a class without a typical length give none.
+// partly_seen_bar.hpp). Cut by the same border in both images, the centre lies half the class's
+// typical length from the end both images show; cut in one image only, the other's whole view gives
+// it; a piece too short or too long for the class, a pair cut by different borders and a class
+// without a typical length give none; a level bar along the epipolar lines is placed from the
+// end both images show.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,14 +106,26 @@ TEST_F(CutBarTest, NoPlacementWithoutTheClassLengthOrAcrossDifferentBorders) {
   EXPECT_TRUE(match(kBottom, kTop, 0.0, 1.0, BorderCut::kNone, 0.0, 0.55, BorderCut::kTop).empty());
 }
 
-TEST_F(CutBarTest, ABarAlongTheEpipolarLinesIsRefused) {
-  // A horizontal drawer handle cut by the right border: each image's reference point is the
-  // middle of what it shows, another point of the bar, and the span needs a bar across the lines.
+TEST_F(CutBarTest, ALevelBarAlongTheEpipolarLinesIsPlacedFromTheEndBothImagesShow) {
+  // A drawer's handle below eye height cut by the right border in the right image: its left end,
+  // seen in both, gives the depth; the plane of its left view holds one level direction, the
+  // bar's.
   const Eigen::Vector3d left_end(-0.1, 0.3, 2.0), right_end(0.06, 0.3, 2.0);
-  EXPECT_TRUE(
-      match(left_end, right_end, 0.0, 1.0, BorderCut::kNone, 0.0, 0.6, BorderCut::kRight).empty());
-  ASSERT_EQ(trace_.size(), 1u);
-  EXPECT_EQ(trace_[0].refused_by, StereoGate::kTriangulation);
+  const auto percepts =
+      match(left_end, right_end, 0.0, 1.0, BorderCut::kNone, 0.0, 0.6, BorderCut::kRight);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - 0.5 * (left_end + right_end)).norm(), 1e-4);
+}
+
+TEST_F(CutBarTest, ALevelBarCutInBothImagesTakesTheClassLength) {
+  // 12 cm of it, cut by the right border in both images: the centre 8 cm from its left end.
+  const Eigen::Vector3d left_end(-0.1, 0.3, 2.0), right_end(0.02, 0.3, 2.0);
+  const auto percepts =
+      match(left_end, right_end, 0.0, 1.0, BorderCut::kRight, 0.0, 0.8, BorderCut::kRight);
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT(
+      (percepts[0].left_camera_position_m - (left_end + Eigen::Vector3d(0.08, 0.0, 0.0))).norm(),
+      1e-3);
 }
 
 }  // namespace
