@@ -1,13 +1,16 @@
 // One model of a handle's bar seen whole or in part (partly_seen_bar.hpp).
 #include "partly_seen_bar.hpp"
 
-#include <ceres/ceres.h>
+#include <ceres/tiny_solver.h>
+#include <ceres/tiny_solver_autodiff_function.h>
+
+#include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
-#include "door_rectangle_fit.hpp"
 #include "pair_refusal.hpp"
 #include "rig_camera.hpp"
 
@@ -193,54 +196,80 @@ std::vector<Eigen::Vector3d> prior_directions(const std::array<Eigen::Vector2d, 
 struct Solution {
   Theta theta{};
   Eigen::Matrix<double, 6, 6> inverse;  // (J^T J)^-1
-  double cost = 0.0;                    // Ceres' final cost, priors included
+  double cost = 0.0;                    // half the squared residuals, priors included
   double worst_px = 0.0;                // the largest image residual, pixels
   double variance_factor = 1.0;         // max(1, chi^2 / (n - 6))
 };
 
+// All of a fit's residuals in one vector (Ceres' TinySolver): the ends' (two or one each), the
+// direction prior's three, then the length prior's when given.
+struct BarCost {
+  const std::vector<EndResidual>* ends;
+  DirectionPrior direction;
+  std::optional<LengthPrior> length;
+
+  int NumResiduals() const {
+    int n = 3 + (length ? 1 : 0);
+    for (const EndResidual& e : *ends) n += e.size();
+    return n;
+  }
+  template <class T>
+  bool operator()(const T* theta, T* residual) const {
+    for (const EndResidual& e : *ends) {
+      if (!e(theta, residual)) return false;
+      residual += e.size();
+    }
+    if (!direction(theta, residual)) return false;
+    return !length || (*length)(theta, residual + 3);
+  }
+};
+
+// (J^T J)^-1, or nullopt when singular (a direction of theta no residual measures).
+std::optional<Eigen::Matrix<double, 6, 6>> inverse_of(const Eigen::MatrixXd& jacobian) {
+  const Eigen::Matrix<double, 6, 6> information = jacobian.transpose() * jacobian;
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(information);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
+      ldlt.vectorD().minCoeff() <= 1e-9 * ldlt.vectorD().maxCoeff()) {
+    return std::nullopt;
+  }
+  return ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
+}
+
 // The bar fitted from `start` to the end observations with the direction prior along `d`
-// (prior_directions) and, when given, the length prior; nullopt when unusable or singular.
+// (prior_directions) and, when given, the length prior; nullopt when unusable or singular. Six
+// parameters and a dozen residuals: Ceres' TinySolver (dense Levenberg-Marquardt), without the
+// general solver's set-up per problem.
 std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>& residuals,
                               const Eigen::Vector3d& d,
                               const StereoMatchOptions::CutBar* length_prior) {
-  Solution out;
-  out.theta = start;
-  ceres::Problem problem;
-  for (const EndResidual& r : residuals) {
-    ceres::CostFunction* cost =
-        r.seen ? static_cast<ceres::CostFunction*>(
-                     new ceres::AutoDiffCostFunction<EndResidual, 2, 6>(new EndResidual(r)))
-               : new ceres::AutoDiffCostFunction<EndResidual, 1, 6>(new EndResidual(r));
-    problem.AddResidualBlock(cost, nullptr, out.theta.data());
-  }
   const bool reversed = d.dot(end_of(start.data(), 1) - end_of(start.data(), 0)) < 0.0;
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DirectionPrior, 3, 6>(
-                               new DirectionPrior{reversed ? Eigen::Vector3d(-d) : d}),
-                           nullptr, out.theta.data());
+  BarCost cost{&residuals, DirectionPrior{reversed ? Eigen::Vector3d(-d) : d}, std::nullopt};
   if (length_prior) {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LengthPrior, 1, 6>(new LengthPrior{
-                                 length_prior->typical_length_m, length_prior->length_sigma_m}),
-                             nullptr, out.theta.data());
+    cost.length = LengthPrior{length_prior->typical_length_m, length_prior->length_sigma_m};
   }
-  ceres::Solver::Options solver;
-  solver.linear_solver_type = ceres::DENSE_QR;  // 6 parameters, a dozen residuals
-  solver.num_threads = 1;
-  solver.max_num_iterations = 20;
-  solver.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver, &problem, &summary);
-  const std::optional<Eigen::Matrix<double, 6, 6>> inverse = inverse_information(problem);
-  if (!summary.IsSolutionUsable() || !inverse) return std::nullopt;
+  using Function = ceres::TinySolverAutoDiffFunction<BarCost, Eigen::Dynamic, 6>;
+  const Function function(cost);
+  ceres::TinySolver<Function> solver;
+  solver.options.max_num_iterations = 20;
+  Eigen::Matrix<double, 6, 1> x = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(start.data());
+  solver.Solve(function, &x);
+  Eigen::VectorXd r(function.NumResiduals());
+  Eigen::MatrixXd jacobian(function.NumResiduals(), 6);
+  if (!x.allFinite() || !function(x.data(), r.data(), jacobian.data())) return std::nullopt;
+  const std::optional<Eigen::Matrix<double, 6, 6>> inverse = inverse_of(jacobian);
+  if (!inverse) return std::nullopt;
+  Solution out;
+  std::copy(x.data(), x.data() + 6, out.theta.begin());
   out.inverse = *inverse;
-  out.cost = summary.final_cost;
+  out.cost = 0.5 * r.squaredNorm();
   double chi2 = 0.0;
   int count = 2 + (length_prior ? 1 : 0);  // the priors' independent residuals, about zero there
-  for (const EndResidual& r : residuals) {
+  for (const EndResidual& e : residuals) {
     double value[2] = {0.0, 0.0};
-    if (!r(out.theta.data(), value)) return std::nullopt;
-    out.worst_px = std::max(out.worst_px, std::hypot(value[0], value[1]) * r.sigma_px);
+    if (!e(out.theta.data(), value)) return std::nullopt;
+    out.worst_px = std::max(out.worst_px, std::hypot(value[0], value[1]) * e.sigma_px);
     chi2 += value[0] * value[0] + value[1] * value[1];
-    count += r.size();
+    count += e.size();
   }
   if (count > 6) out.variance_factor = std::max(1.0, chi2 / (count - 6));
   return out;
