@@ -1,18 +1,15 @@
 // One model of a handle's bar seen whole or in part (partly_seen_bar.hpp).
 #include "partly_seen_bar.hpp"
 
-#include <ceres/tiny_solver.h>
-#include <ceres/tiny_solver_autodiff_function.h>
-
-#include <Eigen/Cholesky>
-
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
 #include "pair_refusal.hpp"
 #include "rig_camera.hpp"
+#include "small_fit.hpp"
 
 namespace vsl::recognition::detail {
 namespace {
@@ -103,10 +100,12 @@ std::optional<Eigen::Vector3d> ray_crossing(const std::array<RigCamera, 2>& came
   const Eigen::Vector3d t = -left_from_right * cameras[1].camera_T_left.translation();
   const Eigen::Vector3d a = cameras[0].K.inverse() * left_px.homogeneous();
   const Eigen::Vector3d b = left_from_right * cameras[1].K.inverse() * right_px.homogeneous();
+  // Rays within about 1e-3 rad of parallel meet nowhere stereo can tell.
+  if (!(a.cross(b).norm() > 1e-3 * a.norm() * b.norm())) return std::nullopt;
   Eigen::Matrix<double, 3, 2> m;
   m << a, -b;
   const Eigen::Vector2d sw = m.colPivHouseholderQr().solve(t);
-  if (!(sw.x() > 0.0) || !(sw.y() > 0.0) || !(m.transpose() * m).determinant()) return std::nullopt;
+  if (!(sw.x() > 0.0) || !(sw.y() > 0.0)) return std::nullopt;
   return Eigen::Vector3d(0.5 * (sw.x() * a + t + sw.y() * b));
 }
 
@@ -201,7 +200,7 @@ struct Solution {
   double variance_factor = 1.0;         // max(1, chi^2 / (n - 6))
 };
 
-// All of a fit's residuals in one vector (Ceres' TinySolver): the ends' (two or one each), the
+// All of a fit's residuals in one vector (small_fit.hpp): the ends' (two or one each), the
 // direction prior's three, then the length prior's when given.
 struct BarCost {
   const std::vector<EndResidual>* ends;
@@ -224,21 +223,8 @@ struct BarCost {
   }
 };
 
-// (J^T J)^-1, or nullopt when singular (a direction of theta no residual measures).
-std::optional<Eigen::Matrix<double, 6, 6>> inverse_of(const Eigen::MatrixXd& jacobian) {
-  const Eigen::Matrix<double, 6, 6> information = jacobian.transpose() * jacobian;
-  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(information);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      ldlt.vectorD().minCoeff() <= 1e-9 * ldlt.vectorD().maxCoeff()) {
-    return std::nullopt;
-  }
-  return ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
-}
-
 // The bar fitted from `start` to the end observations with the direction prior along `d`
-// (prior_directions) and, when given, the length prior; nullopt when unusable or singular. Six
-// parameters and a dozen residuals: Ceres' TinySolver (dense Levenberg-Marquardt), without the
-// general solver's set-up per problem.
+// (prior_directions) and, when given, the length prior; nullopt when unusable or singular.
 std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>& residuals,
                               const Eigen::Vector3d& d,
                               const StereoMatchOptions::CutBar* length_prior) {
@@ -247,21 +233,13 @@ std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>
   if (length_prior) {
     cost.length = LengthPrior{length_prior->typical_length_m, length_prior->length_sigma_m};
   }
-  using Function = ceres::TinySolverAutoDiffFunction<BarCost, Eigen::Dynamic, 6>;
-  const Function function(cost);
-  ceres::TinySolver<Function> solver;
-  solver.options.max_num_iterations = 20;
-  Eigen::Matrix<double, 6, 1> x = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(start.data());
-  solver.Solve(function, &x);
-  Eigen::VectorXd r(function.NumResiduals());
-  Eigen::MatrixXd jacobian(function.NumResiduals(), 6);
-  if (!x.allFinite() || !function(x.data(), r.data(), jacobian.data())) return std::nullopt;
-  const std::optional<Eigen::Matrix<double, 6, 6>> inverse = inverse_of(jacobian);
-  if (!inverse) return std::nullopt;
+  const std::optional<SmallFit> fit =
+      solve_small(cost, Eigen::Map<const Eigen::Matrix<double, 6, 1>>(start.data()), 20);
+  if (!fit) return std::nullopt;
   Solution out;
-  std::copy(x.data(), x.data() + 6, out.theta.begin());
-  out.inverse = *inverse;
-  out.cost = 0.5 * r.squaredNorm();
+  std::copy(fit->x.data(), fit->x.data() + 6, out.theta.begin());
+  out.inverse = fit->inverse_information;
+  out.cost = 0.5 * fit->residuals.squaredNorm();
   double chi2 = 0.0;
   int count = 2 + (length_prior ? 1 : 0);  // the priors' independent residuals, about zero there
   for (const EndResidual& e : residuals) {
@@ -278,7 +256,8 @@ std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>
 }  // namespace
 
 std::optional<BarViewsAlong> bar_views_along(const std::array<BarView, 2>& views,
-                                             const Eigen::Matrix3d& right_F_left) {
+                                             const Eigen::Matrix3d& right_F_left,
+                                             double reach_tolerance_px) {
   const std::array<Eigen::Vector2d, 2>& left = views[0].ends_ideal_px;
   const double left_px = (left[1] - left[0]).norm();
   if (!(left_px > 0.0) || !((views[1].ends_ideal_px[1] - views[1].ends_ideal_px[0]).norm() > 0.0)) {
@@ -309,10 +288,20 @@ std::optional<BarViewsAlong> bar_views_along(const std::array<BarView, 2>& views
                    left_reaches_second ? BarEndState::kSeen : BarEndState::kOnLine};
   out.states[1] = {left_reaches_first ? BarEndState::kOnLine : BarEndState::kSeen,
                    left_reaches_second ? BarEndState::kOnLine : BarEndState::kSeen};
-  // Where the image border cuts a view, its end there is only a point of the bar.
+  // Where the image border cuts a view, its end there is only a point of the bar; the other
+  // view's end there is the bar's unless the cut view reaches beyond it by more than
+  // `reach_tolerance_px` (else the noise of the ends would take the bar's length from the class).
   for (std::size_t k = 0; k < 2; ++k) {
     if (views[k].cut == BorderCut::kNone) continue;
-    out.states[k][end_at_border(out.ends_ideal_px[k], views[k].cut)] = BarEndState::kOnLine;
+    const std::size_t e = end_at_border(out.ends_ideal_px[k], views[k].cut);
+    out.states[k][e] = BarEndState::kOnLine;
+    const double reach_beyond_px = k == 0 ? (e == 0 ? right_along[0] : left_px - right_along[1])
+                                          : (e == 0 ? -right_along[0] : right_along[1] - left_px);
+    const bool other_cut = views[1 - k].cut != BorderCut::kNone &&
+                           end_at_border(out.ends_ideal_px[1 - k], views[1 - k].cut) == e;
+    if (!other_cut && reach_beyond_px <= reach_tolerance_px) {
+      out.states[1 - k][e] = BarEndState::kSeen;
+    }
   }
   out.union_along_left_px = {std::min(0.0, right_along[0]), std::max(left_px, right_along[1])};
   const double right_px = right_along[1] - right_along[0];
@@ -326,7 +315,10 @@ std::optional<BarViewsAlong> bar_views_along_epipolar(const std::array<BarView, 
                                                       const Eigen::Matrix3d& right_F_left) {
   const std::array<Eigen::Vector2d, 2>& left = views[0].ends_ideal_px;
   const Eigen::Vector2d along = left[1] - left[0];
-  if (!(along.norm() > 0.0)) return std::nullopt;
+  if (!(along.norm() > 0.0) ||
+      !((views[1].ends_ideal_px[1] - views[1].ends_ideal_px[0]).norm() > 0.0)) {
+    return std::nullopt;
+  }
   BarViewsAlong out;
   out.along_epipolar = true;
   out.ends_ideal_px[0] = left;
@@ -361,10 +353,14 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
   const std::array<RigCamera, 2> cameras{
       {{rig.left_K, Eigen::Isometry3d::Identity()}, {rig.right_K, rig.right_T_left}}};
   // An end that neither image sees is the class's.
-  const bool end_unseen =
-      (views.states[0][0] == BarEndState::kOnLine && views.states[1][0] == BarEndState::kOnLine) ||
-      (views.states[0][1] == BarEndState::kOnLine && views.states[1][1] == BarEndState::kOnLine);
-  if (end_unseen && !prior) return refuse(trace, kTriangulation, 0.0, 0.0);
+  const auto unseen = [&](std::size_t e) {
+    return views.states[0][e] == BarEndState::kOnLine && views.states[1][e] == BarEndState::kOnLine;
+  };
+  const bool end_unseen = unseen(0) || unseen(1);
+  // Neither end seen: nothing places the bar along its line.
+  if ((end_unseen && !prior) || (unseen(0) && unseen(1))) {
+    return refuse(trace, kTriangulation, 0.0, 0.0);
+  }
   std::optional<Theta> theta = start_of(views, cameras);
   if (!theta) return refuse(trace, kTriangulation, 0.0, 0.0);
 
@@ -381,8 +377,12 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
   std::optional<Solution> best;
   for (const Eigen::Vector3d& d : prior_directions(views.ends_ideal_px[0], rig)) {
     std::optional<Solution> solution = solve(*theta, residuals, d, length_prior);
-    if (solution && (!best || solution->cost < best->cost)) best = std::move(solution);
-    if (best && best->worst_px <= tolerance_px) break;
+    if (!solution) continue;
+    if (solution->worst_px <= tolerance_px) {
+      best = std::move(solution);
+      break;
+    }
+    if (!best || solution->cost < best->cost) best = std::move(solution);
   }
   if (!best) return refuse(trace, kTriangulation, 0.0, 0.0);
   theta = best->theta;
@@ -394,7 +394,7 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
   fit.length_from_prior = end_unseen;
   if (end_unseen) {
     // The visible length: the union of the views along the fitted bar.
-    double lo = 1.0, hi = 0.0;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t k = 0; k < 2; ++k) {
       for (std::size_t e = 0; e < 2; ++e) {
         const double s = along_bar(*theta, cameras[k], views.ends_ideal_px[k][e]);

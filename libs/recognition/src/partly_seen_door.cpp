@@ -1,19 +1,19 @@
 // One model of a door seen in part (partly_seen_door.hpp).
 #include "partly_seen_door.hpp"
 
-#include <ceres/ceres.h>
-
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "convex_polygon.hpp"
 #include "door_rectangle_fit.hpp"
 #include "pair_refusal.hpp"
 #include "rig_camera.hpp"
+#include "small_fit.hpp"
 
 namespace vsl::recognition::detail {
 namespace {
@@ -88,6 +88,29 @@ struct SizePrior {
   template <class T>
   bool operator()(const T* theta, T* residual) const {
     residual[0] = (theta[index] - T(target_m)) / T(sigma_m);
+    return true;
+  }
+};
+
+// All of a fit's residuals in one vector (small_fit.hpp): the corners' (two or one each), then
+// the size priors given.
+struct DoorCost {
+  const std::vector<CornerResidual>* corners;
+  std::optional<SizePrior> width, height;
+
+  int NumResiduals() const {
+    int n = (width ? 1 : 0) + (height ? 1 : 0);
+    for (const CornerResidual& c : *corners) n += c.point ? 2 : 1;
+    return n;
+  }
+  template <class T>
+  bool operator()(const T* theta, T* residual) const {
+    for (const CornerResidual& c : *corners) {
+      if (!c(theta, residual)) return false;
+      residual += c.point ? 2 : 1;
+    }
+    if (width) (*width)(theta, residual++);
+    if (height) (*height)(theta, residual);
     return true;
   }
 };
@@ -346,41 +369,26 @@ std::vector<CornerResidual> corner_residuals(const std::array<DoorOutlineView, 2
 }
 
 // Solves for theta, from where it is, with the image residuals and the priors the views need
-// (Levenberg-Marquardt, dense QR); (J^T J)^-1 at the solution, nullopt when the solution is
+// (Levenberg-Marquardt, small_fit.hpp); (J^T J)^-1 at the solution, nullopt when the solution is
 // unusable. The width prior's mode is max(w_t, w_v); the height prior's the least typical height
 // the visible one does not exceed by more than kMaxVisibleOfTypical, else the greatest.
 std::optional<Matrix6d> solve(Theta& theta, const std::vector<CornerResidual>& residuals,
                               const SizePriors& priors, const Start& start,
                               const StereoMatchOptions::BorderCutDoor& door) {
-  ceres::Problem problem;
-  const auto add = [&](ceres::CostFunction* cost) {
-    problem.AddResidualBlock(cost, nullptr, theta.data());
-  };
-  for (const CornerResidual& c : residuals) {
-    if (c.point) {
-      add(new ceres::AutoDiffCostFunction<CornerResidual, 2, 6>(new CornerResidual(c)));
-    } else {
-      add(new ceres::AutoDiffCostFunction<CornerResidual, 1, 6>(new CornerResidual(c)));
-    }
-  }
-  using Prior = ceres::AutoDiffCostFunction<SizePrior, 1, 6>;
+  DoorCost cost{&residuals, std::nullopt, std::nullopt};
   if (priors.width) {
-    add(new Prior(new SizePrior{4, std::max(door.typical_width_m, start.visible_width_m),
-                                door.width_sigma_m}));
+    cost.width =
+        SizePrior{4, std::max(door.typical_width_m, start.visible_width_m), door.width_sigma_m};
   }
   if (priors.height) {
-    add(new Prior(new SizePrior{5, start.typical_height_m.value_or(door.typical_heights_m.back()),
-                                std::max(door.height_sigma_m, 1e-3)}));
+    cost.height = SizePrior{5, start.typical_height_m.value_or(door.typical_heights_m.back()),
+                            std::max(door.height_sigma_m, 1e-3)};
   }
-  ceres::Solver::Options solver;
-  solver.linear_solver_type = ceres::DENSE_QR;
-  solver.num_threads = 1;
-  solver.max_num_iterations = 30;
-  solver.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver, &problem, &summary);
-  if (!summary.IsSolutionUsable() || !(theta[4] > 0.0) || !(theta[5] > 0.0)) return std::nullopt;
-  return inverse_information(problem);
+  const std::optional<SmallFit> fit =
+      solve_small(cost, Eigen::Map<const Eigen::Matrix<double, 6, 1>>(theta.data()), 30);
+  if (!fit || !(fit->x[4] > 0.0) || !(fit->x[5] > 0.0)) return std::nullopt;
+  std::copy(fit->x.data(), fit->x.data() + 6, theta.begin());
+  return fit->inverse_information;
 }
 
 // The largest image residual at theta, ideal pixels; nullopt where a corner is behind its camera

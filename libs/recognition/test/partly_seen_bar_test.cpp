@@ -43,7 +43,7 @@ class PartlySeenBarTest : public ::testing::Test {
 
   std::optional<BarFit> judge(const std::array<BarView, 2>& v, StereoPairTrace& trace,
                               const StereoMatchOptions::CutBar* prior = nullptr) const {
-    const std::optional<BarViewsAlong> along = bar_views_along(v, fundamental_);
+    const std::optional<BarViewsAlong> along = bar_views_along(v, fundamental_, 3.0);
     if (!along) return std::nullopt;
     return judge_partly_seen_bar(*along, rig_, prior, 0.7, 3.0, trace);
   }
@@ -62,7 +62,8 @@ const Eigen::Vector3d kMiddle = 0.5 * (kBottom + kTop);
 TEST_F(PartlySeenBarTest, TheViewReachingFartherSeesEachEnd) {
   // Left: the lower 70 %; right: the upper 80 %. The bottom end is the left's, the top the
   // right's; the other view's end there lies on the bar.
-  const auto along = bar_views_along(views(kBottom, kTop, {0.0, 0.7}, {0.2, 1.0}), fundamental_);
+  const auto along =
+      bar_views_along(views(kBottom, kTop, {0.0, 0.7}, {0.2, 1.0}), fundamental_, 3.0);
   ASSERT_TRUE(along);
   EXPECT_EQ(along->states[0][0], S::kSeen);
   EXPECT_EQ(along->states[0][1], S::kOnLine);
@@ -76,7 +77,7 @@ TEST_F(PartlySeenBarTest, AViewWithinTheOtherHasNoEndAndSticksOutByNothing) {
   // The right view's ends are listed top first: matched along the bar all the same.
   std::array<BarView, 2> v = views(kBottom, kTop, {0.2, 0.8}, {0.0, 1.0});
   std::swap(v[1].ends_ideal_px[0], v[1].ends_ideal_px[1]);
-  const auto along = bar_views_along(v, fundamental_);
+  const auto along = bar_views_along(v, fundamental_, 3.0);
   ASSERT_TRUE(along);
   EXPECT_EQ(along->states[0][0], S::kOnLine);
   EXPECT_EQ(along->states[0][1], S::kOnLine);
@@ -88,15 +89,59 @@ TEST_F(PartlySeenBarTest, AViewWithinTheOtherHasNoEndAndSticksOutByNothing) {
 TEST_F(PartlySeenBarTest, AnEndAtTheCuttingBorderIsOnTheBarWhateverTheOtherViewShows) {
   // Both views cut by the top border; the left one reaches higher up the bar.
   const auto along = bar_views_along(
-      views(kBottom, kTop, {0.0, 0.6}, {0.0, 0.5}, BorderCut::kTop, BorderCut::kTop), fundamental_);
+      views(kBottom, kTop, {0.0, 0.6}, {0.0, 0.5}, BorderCut::kTop, BorderCut::kTop), fundamental_,
+      3.0);
   ASSERT_TRUE(along);
   EXPECT_EQ(along->states[0][1], S::kOnLine);
   EXPECT_EQ(along->states[1][1], S::kOnLine);
+  // Both start at the bottom end: the left view sees it (a tie), the right's lies on the bar.
+  EXPECT_EQ(along->states[0][0], S::kSeen);
+  EXPECT_EQ(along->states[1][0], S::kOnLine);
+}
+
+TEST_F(PartlySeenBarTest, ACutViewReachingBeyondTheOtherByNoiseLeavesItsEndSeen) {
+  // The right view, cut at the top, ends 1 % of the bar (about 0.3 px) above the left's top end:
+  // the left's is the bar's. Reaching 30 % beyond it, the left view is a fragment: no image shows
+  // the top end.
+  for (const auto& [left_to, expected] : {std::pair{0.99, S::kSeen}, std::pair{0.7, S::kOnLine}}) {
+    const auto along = bar_views_along(
+        views(kBottom, kTop, {0.0, left_to}, {0.0, 1.0}, BorderCut::kNone, BorderCut::kTop),
+        fundamental_, 3.0);
+    ASSERT_TRUE(along);
+    EXPECT_EQ(along->states[0][1], expected) << left_to;
+    EXPECT_EQ(along->states[1][1], S::kOnLine);
+  }
+}
+
+TEST_F(PartlySeenBarTest, ALevelBarAlongTheEpipolarLinesIsAnchoredByAnEndBothImagesShow) {
+  const Eigen::Vector3d a(-0.1, 0.3, 2.0), b(0.06, 0.3, 2.0);
+  // Cut by the right border in the right image: its left end is seen in both.
+  const auto along = bar_views_along_epipolar(
+      views(a, b, {0.0, 1.0}, {0.0, 0.6}, BorderCut::kNone, BorderCut::kRight), fundamental_);
+  ASSERT_TRUE(along);
+  EXPECT_TRUE(along->along_epipolar);
+  EXPECT_EQ(along->states[0][0], S::kSeen);
+  EXPECT_EQ(along->states[0][1], S::kSeen);
+  EXPECT_EQ(along->states[1][0], S::kSeen);
+  EXPECT_EQ(along->states[1][1], S::kOnLine);
+  EXPECT_NEAR(along->containment_excess_px, 0.0, 1e-6);
+  // Cut at opposite ends, no end is seen in both: nothing gives its depth.
+  EXPECT_FALSE(bar_views_along_epipolar(
+      views(a, b, {0.3, 1.0}, {0.0, 0.6}, BorderCut::kLeft, BorderCut::kRight), fundamental_));
+}
+
+TEST_F(PartlySeenBarTest, WithoutUpTheBarLiesAtConstantDepth) {
+  rig_.up = Eigen::Vector3d::Zero();
+  StereoPairTrace trace;
+  const auto fit = judge(views(kBottom, kTop, {0.0, 1.0}, {0.2, 0.8}), trace);
+  ASSERT_TRUE(fit);
+  EXPECT_LT((fit->centre_m - kMiddle).norm(), 1e-4);
 }
 
 TEST_F(PartlySeenBarTest, ViewsAlongTheEpipolarLinesHaveNoPlaceOnEachOther) {
   const Eigen::Vector3d left_end(0.1, 0.2, 2.0), right_end(0.26, 0.2, 2.0);
-  EXPECT_FALSE(bar_views_along(views(left_end, right_end, {0.0, 1.0}, {0.0, 1.0}), fundamental_));
+  EXPECT_FALSE(
+      bar_views_along(views(left_end, right_end, {0.0, 1.0}, {0.0, 1.0}), fundamental_, 3.0));
 }
 
 TEST_F(PartlySeenBarTest, EveryUnionOfTwoViewsGivesTheWholeBar) {
