@@ -20,6 +20,10 @@ constexpr double kMaxVerticalOutOfPlaneSin = 0.3;
 // A plane through the camera centre closer to level than this angle's sine (about 3 degrees) has
 // no level direction of its own: a bar at eye height.
 constexpr double kMinLevelDirectionSin = 0.05;
+// A view's two ends are its blob's middle plus and minus half its extent along its axis: across
+// the bar they share the middle's error, so each is taken as this many times noisier than a
+// pixel's (the square root of the ends per view), and a view measures the bar's place once.
+constexpr double kEndSigmaFactor = 1.4142135623730951;  // sqrt(2)
 // The direction prior's standard deviation, radians (partly_seen_bar.hpp).
 constexpr double kDirectionSigmaRad = 0.01;
 // With an end from the prior, the visible length's range as fractions of the typical length.
@@ -368,7 +372,7 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Do
   for (std::size_t k = 0; k < 2; ++k) {
     for (std::size_t e = 0; e < 2; ++e) {
       residuals.push_back({&cameras[k], e, views.states[k][e] == BarEndState::kSeen,
-                           views.ends_ideal_px[k][e], pixel_sigma_px});
+                           views.ends_ideal_px[k][e], kEndSigmaFactor * pixel_sigma_px});
     }
   }
   // The bar along the directions the prior allows, in order: the first whose image residuals are

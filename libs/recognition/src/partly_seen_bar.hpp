@@ -7,7 +7,9 @@
 // and camera k (0 left, 1 right) sees X at p_k(X) = dehomogenize(K_k (R_k X + t_k)).
 //
 // Observations. Each image's view contributes its two ends m_ke (ideal pixels), each in one state:
-//   seen      the bar's end: r = (p_k(P_e) - m_ke) / sigma (two residuals);
+//   seen      the bar's end: r = (p_k(P_e) - m_ke) / sigma (two residuals), sigma = sqrt(2) times
+//             the pixel noise: a view's ends are its blob's middle plus and minus half its extent,
+//             so across the bar they share the middle's error (the view measures its place once);
 //   on line   a point of the bar short of its end (the image border cuts the view there, or
 //             segmentation kept only part of the bar in this image): the distance of m_ke from
 //             the projected line through p_k(P_0) and p_k(P_1), over sigma (one residual).
