@@ -39,7 +39,7 @@
 // level planes) takes the prior too, refitted. The image residuals are divided by each corner's
 // sigma (DoorOutlineView::sigma_px: the pixel noise, or the position gate's tolerance where the
 // caller could not correlate a right outline's side), so all are in units of their sigma; the
-// fit is Ceres' Levenberg-Marquardt (dense QR) from the outlines' triangulated corners, and the
+// fit is Levenberg-Marquardt (small_fit.hpp) from the outlines' triangulated corners, and the
 // centre's covariance the top left block of (J^T J)^-1 at the solution: along an unmeasured
 // dimension it holds the class's spread, (sigma / 2)^2 (the centre moves half of a size's error).
 // It is scaled by the a-posteriori variance factor chi^2 / (n - 6) where that exceeds 1: a
