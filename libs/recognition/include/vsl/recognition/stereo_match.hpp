@@ -222,8 +222,9 @@ struct StereoMatchOptions {
   // the border is only a point of the bar. Where neither image shows an end (both cut by the same
   // border, or the other view ends short of it), the bar's length is the class's typical one,
   // with its spread as the prior's sigma, and the visible part must be 0.4 .. 1.1 of the typical
-  // length. Views cut by different borders are not paired. Metres; a type without an entry pairs
-  // no cut bars.
+  // length. A cut pair along the epipolar lines (a level handle) goes through the same fit, its
+  // depth from the ends both images see. Views cut by different borders are not paired. Metres;
+  // a type without an entry pairs no cut bars.
   struct CutBar {
     std::string type;
     double typical_length_m = 0.0;
