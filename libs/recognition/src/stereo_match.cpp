@@ -209,6 +209,9 @@ class PairJudge {
   // the door's fit (fit_door), each with the fit's covariance.
   bool place_point() {
     offset_m_ = reference_depth_offset(o_, dl_.type);
+    // A bar's views need not show the same part of it, so their reference points are not one
+    // point: the bar's fit alone places it.
+    if (bar_) return place_bar();
     triangulation_ = v_.triangulator.triangulate(v_.left_ideal[l_], v_.right_ideal[r_],
                                                  o_.pixel_sigma_px, offset_m_);
     if (!triangulation_) {
@@ -218,15 +221,6 @@ class PairJudge {
     // The gates below measure the visible surface, before the reference point's offset.
     point_ = triangulation_->left_camera_position_m -
              offset_m_ * triangulation_->left_camera_position_m.normalized();
-    if (bar_) {
-      const std::optional<detail::BarFit> fit =
-          detail::judge_partly_seen_bar(*bar_, v_.rig, cut_bar_of(o_, dl_.type), o_.pixel_sigma_px,
-                                        o_.max_epipolar_distance_px, trace_);
-      if (!fit) return false;
-      set_point(fit->centre_m);
-      triangulation_->left_camera_covariance_m2 = fit->centre_covariance_m2;
-      if (!fit->length_from_prior) bar_length_m_ = fit->length_m;
-    }
     if (rectangles_ && border_cut_door(o_, dl_.type) && v_.up.norm() > 0.0 &&
         detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
       return fit_door();
@@ -260,6 +254,17 @@ class PairJudge {
     set_point(reference_m - offset_m_ * reference_m.normalized());
     triangulation_->left_camera_covariance_m2 = fit->triangulation.left_camera_covariance_m2;
     rectangle_ = true;
+    return true;
+  }
+  bool place_bar() {
+    const std::optional<detail::BarFit> fit =
+        detail::judge_partly_seen_bar(*bar_, v_.rig, cut_bar_of(o_, dl_.type), o_.pixel_sigma_px,
+                                      o_.max_epipolar_distance_px, trace_);
+    if (!fit) return false;
+    triangulation_.emplace();
+    set_point(fit->centre_m);
+    triangulation_->left_camera_covariance_m2 = fit->centre_covariance_m2;
+    if (!fit->length_from_prior) bar_length_m_ = fit->length_m;
     return true;
   }
   void set_point(const Eigen::Vector3d& visible_m) {
