@@ -176,7 +176,7 @@ double along_bar(const Theta& theta, const RigCamera& camera, const Eigen::Vecto
 // rad of up (a handle on a door) and the plane's level direction (a handle on a drawer seen from
 // above); without it, the plane's direction of constant depth.
 std::vector<Eigen::Vector3d> prior_directions(const std::array<Eigen::Vector2d, 2>& left_ends_px,
-                                              const DoorRig& rig) {
+                                              const PinholeRig& rig) {
   const Eigen::Matrix3d k_inverse = rig.left_K.inverse();
   const Eigen::Vector3d n = (k_inverse * left_ends_px[0].homogeneous())
                                 .cross(k_inverse * left_ends_px[1].homogeneous())
@@ -349,13 +349,12 @@ std::optional<BarViewsAlong> bar_views_along_epipolar(const std::array<BarView, 
   return out;
 }
 
-std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const DoorRig& rig,
+std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const PinholeRig& rig,
                                             const StereoMatchOptions::CutBar* prior,
                                             double pixel_sigma_px, double tolerance_px,
                                             StereoPairTrace& trace) {
   using enum StereoGate;
-  const std::array<RigCamera, 2> cameras{
-      {{rig.left_K, Eigen::Isometry3d::Identity()}, {rig.right_K, rig.right_T_left}}};
+  const std::array<RigCamera, 2> cameras = rig.cameras();
   // An end that neither image sees is the class's.
   const auto unseen = [&](std::size_t e) {
     return views.states[0][e] == BarEndState::kOnLine && views.states[1][e] == BarEndState::kOnLine;

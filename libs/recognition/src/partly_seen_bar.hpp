@@ -50,7 +50,7 @@
 #include <array>
 #include <optional>
 
-#include "partly_seen_door.hpp"
+#include "rig_camera.hpp"
 #include "vsl/recognition/detection.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -106,7 +106,7 @@ struct BarFit {
 // failed or leaves the bar undetermined, an end unseen and no `prior`; kEpipolar: an image
 // residual beyond `tolerance_px`; kExtent: the visible length against the prior), otherwise the
 // bar.
-std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const DoorRig& rig,
+std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const PinholeRig& rig,
                                             const StereoMatchOptions::CutBar* prior,
                                             double pixel_sigma_px, double tolerance_px,
                                             StereoPairTrace& trace);

@@ -538,7 +538,7 @@ std::array<CornerState, 4> corner_states_of(BorderCut cut) {
 }
 
 std::optional<Candidate> judge_partly_seen_door(
-    int l, int r, const std::array<DoorOutlineView, 2>& views, const DoorRig& rig,
+    int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,
     const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
     const PartlySeenLimits& limits, StereoPairTrace& trace) {
@@ -553,8 +553,7 @@ std::optional<Candidate> judge_partly_seen_door(
   }
   const auto [e1, e2] = horizontal_basis(rig.up);
   const Basis basis{e1, e2, rig.up};
-  const std::array<RigCamera, 2> cameras{
-      {{rig.left_K, Eigen::Isometry3d::Identity()}, {rig.right_K, rig.right_T_left}}};
+  const std::array<RigCamera, 2> cameras = rig.cameras();
   const std::optional<Start> start = start_of(views, cameras, basis, triangulator, measured, door);
   if (!start) return refuse(trace, kTriangulation, 0.0, 0.0);
   SizePriors priors{!(measured[kLeft] && measured[kRight]), !(measured[kTop] && measured[kBottom])};

@@ -63,6 +63,7 @@
 #include <array>
 #include <optional>
 
+#include "rig_camera.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
 #include "vsl/recognition/detection.hpp"
@@ -96,14 +97,6 @@ struct DoorOutlineView {
 // own corner (hidden).
 std::array<CornerState, 4> corner_states_of(BorderCut cut);
 
-// The two cameras (ideal pinholes) and the world's vertical, left camera frame.
-struct DoorRig {
-  Eigen::Matrix3d left_K = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d right_K = Eigen::Matrix3d::Identity();
-  Eigen::Isometry3d right_T_left = Eigen::Isometry3d::Identity();
-  Eigen::Vector3d up = Eigen::Vector3d::Zero();  // unit
-};
-
 // What a fit must meet beyond the class: every corner within `tolerance_px` of the model (ideal
 // pixels), and an outline whose lower edge is level on the face at least `min_visible_if_level_m`
 // of the door in view (a drawer front is as short; 0: any).
@@ -120,7 +113,7 @@ struct PartlySeenLimits {
 // `reference_offset_m` behind the face along the ray) and covariance otherwise. The caller tests
 // the handles inside.
 std::optional<Candidate> judge_partly_seen_door(
-    int l, int r, const std::array<DoorOutlineView, 2>& views, const DoorRig& rig,
+    int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,
     const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
     const PartlySeenLimits& limits, StereoPairTrace& trace);

@@ -1,10 +1,12 @@
-// A pinhole camera of the stereo rig as the fits of partly seen objects use it
+// The stereo rig's pinhole cameras as the fits of partly seen objects use them
 // (partly_seen_door.hpp, partly_seen_bar.hpp), and the two image residuals they share. Templated
 // on the scalar for Ceres' Jets. Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include <array>
 
 namespace vsl::recognition::detail {
 
@@ -54,6 +56,18 @@ struct RigCamera {
     residual[0] = (line.x() * T(measured_px.x()) + line.y() * T(measured_px.y()) + line.z()) /
                   (length * T(sigma_px));
     return true;
+  }
+};
+
+// The two cameras (ideal pinholes) and the world's vertical, left camera frame.
+struct PinholeRig {
+  Eigen::Matrix3d left_K = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d right_K = Eigen::Matrix3d::Identity();
+  Eigen::Isometry3d right_T_left = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d up = Eigen::Vector3d::Zero();  // unit; zero when unknown
+
+  std::array<RigCamera, 2> cameras() const {
+    return {{{left_K, Eigen::Isometry3d::Identity()}, {right_K, right_T_left}}};
   }
 };
 

@@ -120,7 +120,7 @@ struct StereoViews {
   const Eigen::Vector3d& up;  // in the left camera frame; zero when unknown
   const EpipolarGeometry epipolar;
   const Triangulator triangulator;
-  const DoorRig rig;  // the ideal pinholes and `up` for door fits
+  const PinholeRig rig;  // the ideal pinholes and `up` for the door and bar fits
   const double log_max_area_ratio;
   std::vector<IdealPixel> left_ideal, right_ideal;
   std::optional<SideCorrelator> correlator, reverse_correlator;

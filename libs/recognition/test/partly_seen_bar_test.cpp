@@ -50,7 +50,7 @@ class PartlySeenBarTest : public ::testing::Test {
 
   head::CameraIntrinsics camera_;
   Eigen::Isometry3d left_T_right_ = Eigen::Isometry3d::Identity();
-  DoorRig rig_;
+  PinholeRig rig_;
   Eigen::Matrix3d fundamental_;
   StereoMatchOptions::CutBar handle_{"handle", 0.16, 0.03};
 };

@@ -72,7 +72,7 @@ class PartlySeenDoorTest : public ::testing::Test {
   head::CameraIntrinsics camera_;
   Eigen::Isometry3d left_T_right_ = Eigen::Isometry3d::Identity();
   Triangulator triangulator_;
-  DoorRig rig_;
+  PinholeRig rig_;
   StereoMatchOptions options_;
   StereoMatchOptions::BorderCutDoor door_;
 };
