@@ -173,6 +173,20 @@ TEST_F(PartlySeenBarTest, AnEndNeitherImageShowsIsTheClassLengthFromTheOther) {
   EXPECT_NEAR(fit->centre_covariance_m2(1, 1), 0.015 * 0.015, 0.2 * 0.015 * 0.015);
 }
 
+TEST_F(PartlySeenBarTest, TheCovarianceGrowsWithTheResiduals) {
+  // Exact views: (J^T J)^-1. The right view leaning by 1.5 px at each end (well within the
+  // tolerance) against the vertical prior: chi^2 / (n - 6) above 1 scales the covariance.
+  StereoPairTrace trace;
+  const auto exact = judge(views(kBottom, kTop, {0.0, 1.0}, {0.0, 1.0}), trace);
+  ASSERT_TRUE(exact);
+  std::array<BarView, 2> leaning = views(kBottom, kTop, {0.0, 1.0}, {0.0, 1.0});
+  leaning[1].ends_ideal_px[0].x() += 1.5;
+  leaning[1].ends_ideal_px[1].x() -= 1.5;
+  const auto scaled = judge(leaning, trace);
+  ASSERT_TRUE(scaled) << stereo_gate_name(trace.refused_by) << " " << trace.value;
+  EXPECT_GT(scaled->centre_covariance_m2.trace(), 1.5 * exact->centre_covariance_m2.trace());
+}
+
 TEST_F(PartlySeenBarTest, WithoutTheClassLengthAnUnseenEndIsRefused) {
   StereoPairTrace trace;
   EXPECT_FALSE(
