@@ -95,32 +95,15 @@ std::size_t end_at_border(const std::array<Eigen::Vector2d, 2>& ends, BorderCut 
   }
 }
 
-// The closest point between the left ray through `left_px` and the right ray through `right_px`
-// (left camera frame), nullopt when they are parallel or it lies behind a camera.
-std::optional<Eigen::Vector3d> ray_crossing(const std::array<RigCamera, 2>& cameras,
-                                            const Eigen::Vector2d& left_px,
-                                            const Eigen::Vector2d& right_px) {
-  const Eigen::Matrix3d left_from_right = cameras[1].camera_T_left.linear().transpose();
-  const Eigen::Vector3d t = -left_from_right * cameras[1].camera_T_left.translation();
-  const Eigen::Vector3d a = cameras[0].K.inverse() * left_px.homogeneous();
-  const Eigen::Vector3d b = left_from_right * cameras[1].K.inverse() * right_px.homogeneous();
-  // Rays within about 1e-3 rad of parallel meet nowhere stereo can tell.
-  if (!(a.cross(b).norm() > 1e-3 * a.norm() * b.norm())) return std::nullopt;
-  Eigen::Matrix<double, 3, 2> m;
-  m << a, -b;
-  const Eigen::Vector2d sw = m.colPivHouseholderQr().solve(t);
-  if (!(sw.x() > 0.0) || !(sw.y() > 0.0)) return std::nullopt;
-  return Eigen::Vector3d(0.5 * (sw.x() * a + t + sw.y() * b));
-}
-
 // A bar along the epipolar lines: each end both images see triangulated, the others on their
 // left rays at its depth (the start of the fit).
 std::optional<Theta> start_along_epipolar(const BarViewsAlong& views,
-                                          const std::array<RigCamera, 2>& cameras) {
+                                          const std::array<RigCamera, 2>& cameras,
+                                          const Triangulator& triangulator) {
   std::optional<Eigen::Vector3d> anchor;
   for (std::size_t e = 0; e < 2 && !anchor; ++e) {
     if (views.states[0][e] == BarEndState::kSeen && views.states[1][e] == BarEndState::kSeen) {
-      anchor = ray_crossing(cameras, views.ends_ideal_px[0][e], views.ends_ideal_px[1][e]);
+      anchor = triangulator.point(views.ends_ideal_px[0][e], views.ends_ideal_px[1][e]);
     }
   }
   if (!anchor) return std::nullopt;
@@ -135,8 +118,9 @@ std::optional<Theta> start_along_epipolar(const BarViewsAlong& views,
 
 // The left view's ends lifted onto the right view's plane through the right camera centre (the
 // start of the fit): stereo's depth where the bar crosses the epipolar lines.
-std::optional<Theta> start_of(const BarViewsAlong& views, const std::array<RigCamera, 2>& cameras) {
-  if (views.along_epipolar) return start_along_epipolar(views, cameras);
+std::optional<Theta> start_of(const BarViewsAlong& views, const std::array<RigCamera, 2>& cameras,
+                              const Triangulator& triangulator) {
+  if (views.along_epipolar) return start_along_epipolar(views, cameras, triangulator);
   const std::array<Eigen::Vector2d, 2>& left = views.ends_ideal_px[0];
   const std::array<Eigen::Vector2d, 2>& right = views.ends_ideal_px[1];
   const Eigen::Matrix3d left_from_right = cameras[1].camera_T_left.linear().transpose();
@@ -350,6 +334,7 @@ std::optional<BarViewsAlong> bar_views_along_epipolar(const std::array<BarView, 
 }
 
 std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const PinholeRig& rig,
+                                            const Triangulator& triangulator,
                                             const StereoMatchOptions::CutBar* prior,
                                             double pixel_sigma_px, double tolerance_px,
                                             StereoPairTrace& trace) {
@@ -364,7 +349,7 @@ std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const Pi
   if ((end_unseen && !prior) || (unseen(0) && unseen(1))) {
     return refuse(trace, kTriangulation, 0.0, 0.0);
   }
-  std::optional<Theta> theta = start_of(views, cameras);
+  std::optional<Theta> theta = start_of(views, cameras, triangulator);
   if (!theta) return refuse(trace, kTriangulation, 0.0, 0.0);
 
   std::vector<EndResidual> residuals;

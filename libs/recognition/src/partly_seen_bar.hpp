@@ -51,6 +51,7 @@
 #include <optional>
 
 #include "rig_camera.hpp"
+#include "triangulation.hpp"
 #include "vsl/recognition/detection.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -105,8 +106,9 @@ struct BarFit {
 // Fits the bar to the two views; nullopt, with the refusal in `trace` (kTriangulation: the fit
 // failed or leaves the bar undetermined, an end unseen and no `prior`; kEpipolar: an image
 // residual beyond `tolerance_px`; kExtent: the visible length against the prior), otherwise the
-// bar.
+// bar. `triangulator`: the same rig's, for the start of a bar along the epipolar lines.
 std::optional<BarFit> judge_partly_seen_bar(const BarViewsAlong& views, const PinholeRig& rig,
+                                            const Triangulator& triangulator,
                                             const StereoMatchOptions::CutBar* prior,
                                             double pixel_sigma_px, double tolerance_px,
                                             StereoPairTrace& trace);

@@ -258,8 +258,8 @@ class PairJudge {
   }
   bool place_bar() {
     const std::optional<detail::BarFit> fit =
-        detail::judge_partly_seen_bar(*bar_, v_.rig, cut_bar_of(o_, dl_.type), o_.pixel_sigma_px,
-                                      o_.max_epipolar_distance_px, trace_);
+        detail::judge_partly_seen_bar(*bar_, v_.rig, v_.triangulator, cut_bar_of(o_, dl_.type),
+                                      o_.pixel_sigma_px, o_.max_epipolar_distance_px, trace_);
     if (!fit) return false;
     triangulation_.emplace();
     set_point(fit->centre_m);

@@ -45,7 +45,8 @@ class PartlySeenBarTest : public ::testing::Test {
                               const StereoMatchOptions::CutBar* prior = nullptr) const {
     const std::optional<BarViewsAlong> along = bar_views_along(v, fundamental_, 3.0);
     if (!along) return std::nullopt;
-    return judge_partly_seen_bar(*along, rig_, prior, 0.7, 3.0, trace);
+    const Triangulator triangulator(camera_, camera_, left_T_right_);
+    return judge_partly_seen_bar(*along, rig_, triangulator, prior, 0.7, 3.0, trace);
   }
 
   head::CameraIntrinsics camera_;
