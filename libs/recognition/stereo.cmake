@@ -4,9 +4,8 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/epipolar.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/triangulation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/side_correlation.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/single_view.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/one_image_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/partly_seen_door.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/one_side_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/twin_handle_split.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/partly_seen_bar.cpp
@@ -29,7 +28,7 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/occluder_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/twin_handle_split_test.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/test/one_side_door_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/one_image_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_correlation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)
 list(APPEND VSL_RECOGNITION_BENCHES ${CMAKE_CURRENT_SOURCE_DIR}/bench/stereo_bench.cpp

@@ -3,13 +3,13 @@
 // simulated head's calibration. BM_SideCorrelation: one door side placed by correlation along
 // the epipolar lines (side_correlation.hpp), a 200 px side searched over +-41 px (a door 140 px
 // wide), twice per door pair (the correlator's set-up included: it keeps the sweeps it made).
-// BM_SingleViewDoor: a door outline placed from its own image alone
-// (single_view.hpp), both sides swept over the whole depth range. BM_BorderCutPair: one pair of
+// BM_SingleViewDoor: a door outline placed from its own image alone by the door's fit, both sides
+// swept over the whole depth range (one_image_door.hpp). BM_BorderCutPair: one pair of
 // door outlines cut by the top border matched and placed (partly_seen_door.hpp), both sides
 // correlated, the correlators' set-up included. BM_OneSideDoor: the same door, its outline in the
-// left image only, placed from its right side swept over the whole depth range and the level plane
-// of its bottom edge, its left side found in the right image where that plane puts it
-// (one_side_door.hpp), the correlators' set-up included. BM_OccludedCornerDoor: a pair of door
+// left image only, placed by the door's fit from its outline and its right side swept over the
+// whole depth range, its left side found in the right image where the fit puts it
+// (one_image_door.hpp), the correlators' set-up included. BM_OccludedCornerDoor: a pair of door
 // outlines whose bottom-left corner an occluder hides in both images, placed from the other three
 // corners (partly_seen_door.hpp, a hidden corner). BM_OccluderCutDoor: a pair of door outlines
 // whose lower part the table's top hides in both images, placed with their lower corners on the
@@ -35,7 +35,6 @@
 #include <opencv2/core.hpp>
 
 #include "../src/side_correlation.hpp"
-#include "../src/single_view.hpp"
 #include "../src/twin_handle_split.hpp"
 #include "support/cut_door.hpp"
 #include "vsl/head/stereo_calibration.hpp"
@@ -142,29 +141,21 @@ struct DarkDoorScene {
   cv::Mat right{480, 640, CV_8UC1, cv::Scalar(190)};
 };
 
+// BM_SingleViewDoor: the whole outline of DarkDoorScene's door in the left image only, placed by
+// the door's fit from it and both sides swept over the whole depth range (one_image_door.hpp),
+// the correlators' set-up included.
 void BM_SingleViewDoor(benchmark::State& state) {
   const DarkDoorScene scene(140);
-  const head::StereoCalibration& calibration = scene.calibration;
-  const Eigen::Isometry3d& left_T_right = scene.left_T_right;
-  const cv::Mat &left = scene.left, &right = scene.right;
-  const Eigen::Vector3d up(0.0, -1.0, 0.0);
   StereoMatchOptions options;
+  options.min_side_correlation = 0.7;
   options.min_single_view_correlation = 0.7;
   options.max_side_tilt_rad = 0.03;
-  options.max_edge_slope_rad = 0.3;
-  const std::array<Eigen::Vector2d, 4> corners{Eigen::Vector2d(160, 140), Eigen::Vector2d(300, 140),
-                                               Eigen::Vector2d(300, 340),
-                                               Eigen::Vector2d(160, 340)};
-  double depth_m = 0.0;
-  for (auto _ : state) {
-    const detail::SideCorrelator correlator(left, right, calibration.left, calibration.right,
-                                            left_T_right, up);
-    const auto door = detail::place_single_view_door(corners, correlator, calibration.left, up,
-                                                     options, nullptr, 0.0);
-    depth_m = door ? door->centre_m.z() : 0.0;
-    benchmark::DoNotOptimize(depth_m);
-  }
-  state.counters["depth_m"] = depth_m;
+  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1)};
+  Detection outline = test::top_cut_door_outline(160.0);
+  outline.border_cut = BorderCut::kNone;
+  outline.corners_px = {{159.5, 139.5}, {299.5, 139.5}, {299.5, 339.5}, {159.5, 339.5}};
+  outline.reference_px = {229.5, 239.5};
+  scene.run(state, {outline}, {}, options);
 }
 BENCHMARK(BM_SingleViewDoor)->Unit(benchmark::kMicrosecond);
 
@@ -259,7 +250,6 @@ void BM_OccludedCornerDoor(benchmark::State& state) {
   }
   StereoMatchOptions options;
   options.max_side_tilt_rad = 0.03;
-  options.max_edge_slope_rad = 0.3;
   options.height_range_m = {{"door", 0.5, 2.5}};
   StereoMatchOptions::BorderCutDoor door{.type = "door", .typical_heights_m = {0.716, 1.246}};
   door.min_width_m = 0.3;
@@ -304,7 +294,6 @@ void BM_OccluderCutDoor(benchmark::State& state) {
   StereoMatchOptions options;
   options.bar_types = {"handle"};
   options.max_side_tilt_rad = 0.03;
-  options.max_edge_slope_rad = 0.3;
   options.height_range_m = {{"door", 0.5, 2.5}};
   StereoMatchOptions::BorderCutDoor door = test::cut_door_options({0.716}, 0.0);
   door.occluder_cut = true;

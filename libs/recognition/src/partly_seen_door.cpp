@@ -34,6 +34,9 @@ constexpr double kLevelEdgeRad = 0.05;
 // sigma above 0.3 m, 8 were false door percepts and 4 true; 0.25 and 0.3 differed by a few.
 constexpr double kMaxCentreSigmaWithHiddenM = 0.25;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The least sine of the angle between a corner's ray and the level plane it is placed on in the
+// start (below it, a pixel of noise moves the point too far along the ray).
+constexpr double kMinRayElevationSin = 0.05;
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Theta = std::array<double, 6>;  // (c, psi, w, h): left camera frame, metres and radians
@@ -71,6 +74,7 @@ struct CornerResidual {
   bool point;
   Eigen::Vector2d measured_px;
   double sigma_px;
+  double tolerance_px;  // the fit's gate on this corner (pixels)
 
   template <class T>
   bool operator()(const T* theta, T* residual) const {
@@ -155,28 +159,43 @@ struct Face {
 };
 
 // The start's face. Its corners (left camera frame, metres) are triangulated where both images
-// see the corner (or where a side leaves both at one border row); a corner the left image alone
-// shows on its ray at the level of its edge's other end, since the door's edges are level. The
-// face is turned along the level edge they span (the mean of the right column's corners less the
-// left one's), else faces the camera; nullopt without a corner, or with no level direction left.
+// put the corner on its vertical side (seen, or where the side leaves the image or the outline);
+// a corner that one image alone shows (the left one first) lies on that image's ray at the level
+// of its edge's other end, since the door's edges are level. The face is turned along the level
+// edge they span (the mean of the right column's corners less the left one's), else faces the
+// camera; nullopt without a corner, or with no level direction left.
 std::optional<Face> start_face(const std::array<DoorOutlineView, 2>& views,
+                               const std::array<RigCamera, 2>& cameras,
                                const Triangulator& triangulator, const Eigen::Vector3d& up) {
+  const auto on_vertical = [](CornerState s) {
+    return s == CornerState::kSeen || s == CornerState::kOnSide;
+  };
   std::array<std::optional<Eigen::Vector3d>, 4> points;
   for (std::size_t j = 0; j < 4; ++j) {
-    const CornerState sl = views[0].states[j], sr = views[1].states[j];
-    if ((sl == CornerState::kSeen && sr == CornerState::kSeen) ||
-        (sl == CornerState::kOnSide && sr == CornerState::kOnSide)) {
+    if (on_vertical(views[0].states[j]) && on_vertical(views[1].states[j])) {
       points[j] = triangulator.point(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
     }
   }
-  for (std::size_t j = 0; j < 4; ++j) {
-    const std::size_t partner = kAlongEdge[j];
-    const CornerState sl = views[0].states[j];
-    if (points[j] || !points[partner] || (sl != CornerState::kSeen && sl != CornerState::kOnEdge)) {
-      continue;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Eigen::Isometry3d left_T_camera = cameras[k].camera_T_left.inverse();
+    for (std::size_t j = 0; j < 4; ++j) {
+      const std::size_t partner = kAlongEdge[j];
+      const CornerState state = views[k].states[j];
+      if (points[j] || !points[partner] ||
+          (state != CornerState::kSeen && state != CornerState::kOnEdge)) {
+        continue;
+      }
+      // X = o + s r on the level plane through the partner: (X - P) . up = 0 (as
+      // Triangulator::left_ray_on_level_plane, whose elevation bound this keeps).
+      const Eigen::Vector3d ray =
+          (left_T_camera.linear() *
+           (cameras[k].K.inverse() * views[k].corners_ideal_px[j].homogeneous()))
+              .normalized();
+      const Eigen::Vector3d origin = left_T_camera.translation();
+      if (std::abs(ray.dot(up)) < kMinRayElevationSin) continue;
+      const double s = (*points[partner] - origin).dot(up) / ray.dot(up);
+      if (s > 0.0) points[j] = origin + s * ray;
     }
-    points[j] =
-        triangulator.left_ray_on_level_plane(views[0].corners_ideal_px[j], *points[partner], up);
   }
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   std::array<Eigen::Vector3d, 2> column_sum{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
@@ -244,7 +263,7 @@ std::optional<Start> start_of(const std::array<DoorOutlineView, 2>& views,
                               const std::array<RigCamera, 2>& cameras, const Basis& basis,
                               const Triangulator& triangulator, const Measured& measured,
                               const StereoMatchOptions::BorderCutDoor& door) {
-  const std::optional<Face> face = start_face(views, triangulator, basis.up);
+  const std::optional<Face> face = start_face(views, cameras, triangulator, basis.up);
   if (!face) return std::nullopt;
   const Eigen::Vector3d normal = face->a.cross(basis.up);
   OnFace on_face;
@@ -352,17 +371,20 @@ std::optional<Refusal> prior_refusal(const Start& start,
 // The image residuals (partly_seen_door.hpp), per image and corner it uses.
 std::vector<CornerResidual> corner_residuals(const std::array<DoorOutlineView, 2>& views,
                                              const std::array<RigCamera, 2>& cameras,
-                                             const Basis& basis, double pixel_sigma_px) {
+                                             const Basis& basis, double pixel_sigma_px,
+                                             double tolerance_px) {
   std::vector<CornerResidual> residuals;
   for (std::size_t k = 0; k < 2; ++k) {
     for (std::size_t j = 0; j < 4; ++j) {
       const Use use = use_of(views, k, j);
       if (use == Use::kNone) continue;
       const double sigma_px = views[k].sigma_px[j];
+      const double own_tolerance_px = views[k].tolerance_px[j];
       residuals.push_back(CornerResidual{&cameras[k], basis, j,
                                          use == Use::kOnLevel ? kAlongEdge[j] : kBelowOrAbove[j],
                                          use == Use::kPoint, views[k].corners_ideal_px[j],
-                                         sigma_px > 0.0 ? sigma_px : pixel_sigma_px});
+                                         sigma_px > 0.0 ? sigma_px : pixel_sigma_px,
+                                         own_tolerance_px > 0.0 ? own_tolerance_px : tolerance_px});
     }
   }
   return residuals;
@@ -391,19 +413,25 @@ std::optional<Matrix6d> solve(Theta& theta, const std::vector<CornerResidual>& r
   return fit->inverse_information;
 }
 
-// The largest image residual at theta, ideal pixels; nullopt where a corner is behind its camera
-// or a projected side or edge has no length.
-std::optional<double> worst_residual_px(const std::vector<CornerResidual>& residuals,
-                                        const Theta& theta) {
-  double worst_px = 0.0;
+// An image residual (ideal pixels) and its corner's tolerance.
+struct Residual {
+  double px = 0.0, tolerance_px = 1.0;
+  double fraction() const { return px / tolerance_px; }
+};
+
+// The image residual at theta largest for its tolerance; nullopt where a corner is behind its
+// camera or a projected side or edge has no length.
+std::optional<Residual> worst_residual(const std::vector<CornerResidual>& residuals,
+                                       const Theta& theta) {
+  Residual worst;
   for (const CornerResidual& c : residuals) {
     double r[2] = {0.0, 0.0};
     if (!c(theta.data(), r)) return std::nullopt;
-    const double px = std::hypot(r[0], c.point ? r[1] : 0.0) * c.sigma_px;
-    if (!std::isfinite(px)) return std::nullopt;
-    worst_px = std::max(worst_px, px);
+    const Residual residual{std::hypot(r[0], c.point ? r[1] : 0.0) * c.sigma_px, c.tolerance_px};
+    if (!std::isfinite(residual.px)) return std::nullopt;
+    if (residual.fraction() > worst.fraction()) worst = residual;
   }
-  return worst_px;
+  return worst;
 }
 
 // A corner hidden in an image lies within the rectangle's projection there: an occluder hides a
@@ -447,18 +475,18 @@ std::optional<Refusal> hidden_corner_refusal(const std::array<DoorOutlineView, 2
 }
 
 // The gates after the fit, in order (partly_seen_door.hpp): every image residual within the
-// tolerance (`worst_px`, ideal pixels), the hidden corners, the widths' ratio, the size, the
+// tolerance (`worst`), the hidden corners, the widths' ratio, the size, the
 // viewing angle and depth, the centre's sigma with a corner hidden. The first that refuses.
 std::optional<Refusal> fit_refusal(const std::array<DoorOutlineView, 2>& views,
                                    const std::array<RigCamera, 2>& cameras, const Basis& basis,
                                    const Theta& theta, const SizePriors& priors,
-                                   const Matrix6d& inverse, double worst_px,
+                                   const Matrix6d& inverse, const Residual& worst,
                                    const StereoMatchOptions& options,
                                    const StereoMatchOptions::BorderCutDoor& door,
                                    const PartlySeenLimits& limits) {
   using enum StereoGate;
-  if (!(worst_px <= limits.tolerance_px)) {
-    return Refusal{kRectangleFit, worst_px, limits.tolerance_px};
+  if (!(worst.px <= worst.tolerance_px)) {
+    return Refusal{kRectangleFit, worst.px, worst.tolerance_px};
   }
   if (auto refusal = hidden_corner_refusal(views, cameras, basis, theta, limits.tolerance_px,
                                            limits.hidden_by_occluder)) {
@@ -477,22 +505,23 @@ std::optional<Refusal> fit_refusal(const std::array<DoorOutlineView, 2>& views,
                          : std::nullopt) {
     return refusal;
   }
-  const double min_width_m = priors.width ? -kInf : door.min_width_m;
+  const double min_width_m = priors.width || !limits.min_width ? -kInf : door.min_width_m;
   if (auto refusal = outside(kExtent, theta[4], min_width_m, door.max_width_m)) return refusal;
   // Seen from within about 78 deg of head-on (nearly edge-on, two strips of doors make a long face
   // receding in depth), and the centre within the depth range (left camera z, metres).
   const Eigen::Vector3d centre_m(theta[0], theta[1], theta[2]);
   const Eigen::Vector3d a = std::cos(theta[3]) * basis.e1 + std::sin(theta[3]) * basis.e2;
   const double cos_viewing = std::abs(a.cross(basis.up).dot(centre_m.normalized()));
-  if (auto refusal = outside(kExtent, cos_viewing, kMinCosViewing, kInf)) return refusal;
+  if (auto refusal = outside(kExtent, cos_viewing, limits.min_cos_viewing, kInf)) return refusal;
   if (auto refusal = outside(kDepth, centre_m.z(), options.min_depth_m, options.max_depth_m)) {
     return refusal;
   }
   // A fit resting on a corner that an image does not show must still place the door: its
   // centre's standard deviation (the largest, metres) within kMaxCentreSigmaWithHiddenM.
-  if (!has(views[0], CornerState::kHidden) && !has(views[1], CornerState::kHidden)) {
-    return std::nullopt;
-  }
+  const auto unshown = [&](const DoorOutlineView& v) {
+    return has(v, CornerState::kHidden) || has(v, CornerState::kAbsent);
+  };
+  if (!unshown(views[0]) && !unshown(views[1])) return std::nullopt;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inverse.topLeftCorner<3, 3>());
   const double sigma_m = std::sqrt(std::max(eigen.eigenvalues().maxCoeff(), 0.0));
   return outside(kDepth, sigma_m, -kInf, kMaxCentreSigmaWithHiddenM);
@@ -541,7 +570,7 @@ std::optional<Candidate> judge_partly_seen_door(
     int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,
     const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
-    const PartlySeenLimits& limits, StereoPairTrace& trace) {
+    const PartlySeenLimits& limits, StereoPairTrace& trace, FittedDoor* fitted) {
   using enum StereoGate;
   const auto refuse_by = [&](const Refusal& refusal) {
     return refuse(trace, refusal.gate, refusal.value, refusal.limit);
@@ -565,7 +594,7 @@ std::optional<Candidate> judge_partly_seen_door(
     return refuse(trace, kHeight, start->visible_height_m, limits.min_visible_if_level_m);
   }
   const std::vector<CornerResidual> residuals =
-      corner_residuals(views, cameras, basis, options.pixel_sigma_px);
+      corner_residuals(views, cameras, basis, options.pixel_sigma_px, limits.tolerance_px);
   const DoorRectangle& s = start->rectangle;
   Theta theta{s.centre_m.x(), s.centre_m.y(), s.centre_m.z(), s.yaw_rad, s.width_m, s.height_m};
   std::optional<Matrix6d> inverse = solve(theta, residuals, priors, *start, door);
@@ -599,9 +628,9 @@ std::optional<Candidate> judge_partly_seen_door(
     if (!inverse) return refuse(trace, kTriangulation, 0.0, 0.0);
   }
   // Position: every corner within the tolerance of two door outlines; then the rest of the gates.
-  const std::optional<double> worst_px = worst_residual_px(residuals, theta);
-  if (!worst_px) return refuse(trace, kTriangulation, 0.0, 0.0);
-  if (const auto refusal = fit_refusal(views, cameras, basis, theta, priors, *inverse, *worst_px,
+  const std::optional<Residual> worst = worst_residual(residuals, theta);
+  if (!worst) return refuse(trace, kTriangulation, 0.0, 0.0);
+  if (const auto refusal = fit_refusal(views, cameras, basis, theta, priors, *inverse, *worst,
                                        options, door, limits)) {
     return refuse_by(*refusal);
   }
@@ -609,10 +638,14 @@ std::optional<Candidate> judge_partly_seen_door(
   // point `reference_offset_m` behind the face along the ray, its covariance the centre's (the
   // offset's own Jacobian is within a per cent of the identity at a door's range).
   const Eigen::Vector3d centre_m(theta[0], theta[1], theta[2]);
-  const double cost = (*worst_px / limits.tolerance_px) * (*worst_px / limits.tolerance_px);
+  const double cost = worst->fraction() * worst->fraction();
   Eigen::Matrix3d covariance = inverse->topLeftCorner<3, 3>();
   covariance *= variance_factor(residuals, theta, priors);
   trace.cost = cost;
+  if (fitted) {
+    *fitted = FittedDoor{DoorRectangle{centre_m, theta[3], theta[4], theta[5]}, priors.width,
+                         priors.height};
+  }
   return Candidate{
       .left = l,
       .right = r,

@@ -27,6 +27,8 @@
 //   merged    nothing (a corner of a side that is no door edge in this image: an occluder's
 //             contour or a neighbour's strip that segmentation merged; the side gate,
 //             door_pair.hpp). Unlike a hidden corner, its outline point may lie outside the door.
+//   absent    nothing: the image gives no outline there (a door placed from the other image,
+//             where this one shows only the sides swept into it: one_image_door.hpp).
 // A side of the rectangle is measured when, in either image, a corner on it is seen (a vertical
 // side's in the right image too) or lies on it (on side for the vertical sides, on edge for the
 // top and bottom edges). Each dimension needs one of its two sides measured; an unmeasured one is
@@ -63,6 +65,7 @@
 #include <array>
 #include <optional>
 
+#include "door_rectangle_fit.hpp"
 #include "rig_camera.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
@@ -79,7 +82,7 @@ inline constexpr double kMaxVisibleOfTypical = 1.05;
 // one_side_door.cpp).
 inline constexpr double kMinCosViewing = 0.2;
 
-enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden, kMerged };
+enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden, kMerged, kAbsent };
 
 // One image's outline of the door: its corners (ideal pixels, clockwise from the top left) and
 // what each is.
@@ -89,6 +92,8 @@ struct DoorOutlineView {
                                     CornerState::kSeen};
   // Each corner's standard deviation, pixels; 0: StereoMatchOptions::pixel_sigma_px.
   std::array<double, 4> sigma_px{};
+  // Each corner's gate on the fit's residual, pixels; 0: PartlySeenLimits::tolerance_px.
+  std::array<double, 4> tolerance_px{};
 };
 
 // The corner states of an outline that `cut` cuts along the image border: a corner whose row the
@@ -106,16 +111,27 @@ struct PartlySeenLimits {
   // The hidden corners are an occluder's: one hidden in both images must be away from the door's
   // own corner (else nothing hides it). Otherwise the image border hides them.
   bool hidden_by_occluder = false;
+  // The least cosine of the angle between the door's normal and the view.
+  double min_cos_viewing = kMinCosViewing;
+  bool min_width = true;
 };
 
-// Judges the pair (left detection `l`, right detection `r`) as one door seen in the two views,
-// recording a refusal in `trace`; the candidate with its centre (left camera frame,
-// `reference_offset_m` behind the face along the ray) and covariance otherwise. The caller tests
+// The fitted rectangle, and which of its sizes are the class's (partly_seen_door.hpp: a size no
+// image measures, or measures worse than the class knows it).
+struct FittedDoor {
+  DoorRectangle rectangle;
+  bool width_from_class = false, height_from_class = false;
+};
+
+// Judges the pair (left detection `l`, right detection `r`; -1 for an image that gives no outline,
+// one_image_door.hpp) as one door seen in the two views, recording a refusal in `trace`; the
+// candidate with its centre (left camera frame, `reference_offset_m` behind the face along the
+// ray) and covariance otherwise, and the fitted rectangle in `fitted` when given. The caller tests
 // the handles inside.
 std::optional<Candidate> judge_partly_seen_door(
     int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,
     const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
-    const PartlySeenLimits& limits, StereoPairTrace& trace);
+    const PartlySeenLimits& limits, StereoPairTrace& trace, FittedDoor* fitted = nullptr);
 
 }  // namespace vsl::recognition::detail

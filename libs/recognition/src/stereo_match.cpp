@@ -2,8 +2,8 @@
 // (stereo_views.hpp); every pair judged, its gates in order (PairJudge; the door outlines' own
 // gates: door_pair.hpp; the door's fit, whole, cut by the image border or by an occluder:
 // door_pairing.hpp, partly_seen_door.hpp); the one-to-one assignment (stereo_assignment.hpp); the
-// whole door pairs an occluder explains (door_pairing.hpp); doors from one image (single_view.hpp,
-// one_side_door.hpp). Geometry: epipolar.hpp (gate) and triangulation.hpp (point and
+// whole door pairs an occluder explains (door_pairing.hpp); doors from one image
+// (one_image_door.hpp). Geometry: epipolar.hpp (gate) and triangulation.hpp (point and
 // covariance).
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -17,12 +17,11 @@
 #include "door_pair.hpp"
 #include "door_pairing.hpp"
 #include "epipolar.hpp"
-#include "one_side_door.hpp"
+#include "one_image_door.hpp"
 #include "pair_refusal.hpp"
 #include "partly_seen_bar.hpp"
 #include "partly_seen_door.hpp"
 #include "side_correlation.hpp"
-#include "single_view.hpp"
 #include "stereo_assignment.hpp"
 #include "stereo_views.hpp"
 #include "triangulation.hpp"
@@ -438,41 +437,21 @@ StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {
   return percept;
 }
 
-// One detection of one image that no pair took, placed from that image alone: whole outlines
-// from both sides (pass 0, single_view.hpp); what is left from one side and the level planes of
-// its edges (pass 1, one_side_door.hpp: the other side beyond the other image's border, or one
-// of two peaks of a repeated edge).
+// One detection of one image that no pair took, placed from that image alone by the door's fit
+// (one_image_door.hpp): whole outlines from both sides (pass 0); what is left from one side
+// (pass 1: the other side beyond the other image's border, or one of two peaks of a repeated
+// edge), and whole outlines also with the sides' roles swapped (merged_side).
 std::optional<StereoPercept> place_from_one_image(const StereoViews& v, int image, std::size_t d,
-                                                  int pass, const detail::StereoRig& rig) {
-  const StereoMatchOptions& options = v.options;
+                                                  int pass) {
+  const int index = static_cast<int>(d);
+  if (pass == 0) return detail::place_one_image_door(v, image, index, detail::SweptSides::kBoth);
+  std::optional<StereoPercept> percept =
+      detail::place_one_image_door(v, image, index, detail::SweptSides::kInner);
   const Detection& detection = (image == 0 ? v.left : v.right)[d];
-  const auto& corners = (image == 0 ? v.left_corners : v.right_corners)[d];
-  const detail::SideCorrelator& sweep = image == 0 ? *v.correlator : *v.reverse_correlator;
-  const detail::IdealPixel& reference = (image == 0 ? v.left_ideal : v.right_ideal)[d];
-  const double offset_m = reference_depth_offset(options, detection.type);
-  if (pass == 0) {
-    return detail::single_view_percept(detection, static_cast<int>(d), image, corner_array(corners),
-                                       reference, sweep, v.triangulator, rig, options,
-                                       height_range(options, detection.type),
-                                       class_max_width_m(options, detection.type), offset_m);
+  if (!percept && border_cut_door(v.options, detection.type)->merged_side) {
+    percept = detail::place_one_image_door(v, image, index, detail::SweptSides::kOuter);
   }
-  const StereoMatchOptions::BorderCutDoor& cut_door = *border_cut_door(options, detection.type);
-  const Eigen::Isometry3d other_T_own = image == 0 ? v.left_T_right.inverse() : v.left_T_right;
-  const Eigen::Vector3d up_in_own =
-      image == 0 ? v.up : Eigen::Vector3d(v.left_T_right.linear().transpose() * v.up);
-  const auto place = [&](detail::SweptSide swept) {
-    return detail::place_one_side_door(corner_array(corners), detection.border_cut, image, sweep,
-                                       image == 0 ? v.left_intrinsics : v.right_intrinsics,
-                                       image == 0 ? v.right_intrinsics : v.left_intrinsics,
-                                       other_T_own, up_in_own, options, cut_door,
-                                       height_range(options, detection.type), swept);
-  };
-  std::optional<detail::OneSideDoor> door = place(detail::SweptSide::kInner);
-  if (!door && cut_door.merged_side) door = place(detail::SweptSide::kOuter);
-  if (!door) return std::nullopt;
-  return detail::one_image_percept(detection, static_cast<int>(d), image, door->centre_m,
-                                   door->side_correlation, door->height_sigma_m, reference,
-                                   v.triangulator, rig, options, offset_m);
+  return percept;
 }
 
 // The detections no pair took, placed from one image (place_from_one_image) unless a percept of
@@ -488,7 +467,6 @@ void place_single_views(const StereoViews& v, const std::vector<detail::Candidat
     paired[0][static_cast<std::size_t>(c.left)] = 1;
     paired[1][static_cast<std::size_t>(c.right)] = 1;
   }
-  const detail::StereoRig rig{v.left_intrinsics, v.right_intrinsics, v.left_T_right, v.up};
   std::array<std::vector<char>, 2> placed{std::vector<char>(v.left.size(), 0),
                                           std::vector<char>(v.right.size(), 0)};
   for (int pass = 0; pass < 2; ++pass) {
@@ -513,7 +491,7 @@ void place_single_views(const StereoViews& v, const std::vector<detail::Candidat
                 .gate != StereoGate::kNone) {
           continue;
         }
-        const std::optional<StereoPercept> percept = place_from_one_image(v, image, d, pass, rig);
+        const std::optional<StereoPercept> percept = place_from_one_image(v, image, d, pass);
         if (!percept) continue;
         if (pass == 0) placed[static_cast<std::size_t>(image)][d] = 1;
         const bool near_another = std::any_of(out.begin(), out.end(), [&](const StereoPercept& p) {

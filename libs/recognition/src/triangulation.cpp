@@ -10,9 +10,6 @@ namespace {
 // sin^2 of the smallest angle between the rays that still counts as an intersection.
 constexpr double kMinSin2 = 1e-12;
 constexpr double kDifferenceStepPx = 1e-3;
-// left_ray_on_level_plane: the smallest sine of the angle between a ray and the horizontal plane
-// it must meet (below it, a pixel of noise moves the point too far along the ray).
-constexpr double kMinRayElevationSin = 0.05;
 
 }  // namespace
 
@@ -33,19 +30,6 @@ std::optional<Eigen::Vector2d> Triangulator::project_right(const Eigen::Vector3d
   const Eigen::Vector3d h = right_k_from_left_ * (point_m - right_centre_m_);
   if (!(h.z() > 0.0)) return std::nullopt;
   return h.hnormalized();
-}
-
-std::optional<Eigen::Vector3d> Triangulator::left_ray_on_level_plane(
-    const Eigen::Vector2d& left_ideal_px, const Eigen::Vector3d& on_plane_m,
-    const Eigen::Vector3d& up) const {
-  if (!(up.norm() > 0.0)) return std::nullopt;
-  const Eigen::Vector3d u = up.normalized();
-  const Eigen::Vector3d ray = (left_k_inverse_ * left_ideal_px.homogeneous()).normalized();
-  const double ur = u.dot(ray);
-  if (!(std::abs(ur) > kMinRayElevationSin)) return std::nullopt;
-  const double s = u.dot(on_plane_m) / ur;
-  if (!(s > 0.0)) return std::nullopt;
-  return Eigen::Vector3d(s * ray);
 }
 
 namespace {
@@ -84,42 +68,6 @@ std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
     }
   }
   return tilts;
-}
-
-Eigen::Vector3d Triangulator::rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends) {
-  return (ends[0] + ends[1] + ends[2] + ends[3]) / 4.0;
-}
-
-double Triangulator::rectangle_width(const std::array<Eigen::Vector3d, 4>& ends) {
-  return (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
-}
-
-std::optional<double> Triangulator::informative_edge_slope(
-    const std::array<Eigen::Vector3d, 4>& ends, const Eigen::Vector3d& up) {
-  if (!(up.norm() > 0.0)) return std::nullopt;
-  const Eigen::Vector3d u = up.normalized();
-  // Of the two edges, the one seen farther from the cameras' height: a side placed at a wrong
-  // depth moves its ends along their rays, so an edge near that height stays nearly level
-  // whatever the depth and tells little, and one far from it slopes most. (Above or below the
-  // eyes, that is the edge the occluders in front of cupboards hide least: a wall cupboard's top,
-  // a base unit's bottom.)
-  std::optional<double> slope;
-  double best_elevation = -1.0;
-  for (const auto& [a, b] : {std::pair{0, 2}, std::pair{1, 3}}) {
-    const Eigen::Vector3d& p = ends[static_cast<std::size_t>(a)];
-    const Eigen::Vector3d& q = ends[static_cast<std::size_t>(b)];
-    const Eigen::Vector3d edge = q - p;
-    const double rise = std::abs(edge.dot(u));
-    const double run = (edge - edge.dot(u) * u).norm();
-    if (!(run > 0.0) || !(p.norm() > 0.0) || !(q.norm() > 0.0)) continue;
-    const double elevation =
-        std::min(std::abs(p.normalized().dot(u)), std::abs(q.normalized().dot(u)));
-    if (elevation > best_elevation) {
-      best_elevation = elevation;
-      slope = rise / run;
-    }
-  }
-  return slope;
 }
 
 std::optional<Eigen::Vector3d> Triangulator::midpoint(const Eigen::Vector2d& left_ideal_px,

@@ -54,23 +54,6 @@ class Triangulator {
   std::optional<Eigen::Vector3d> point(const Eigen::Vector2d& left_ideal_px,
                                        const Eigen::Vector2d& right_ideal_px) const;
 
-  // A rectangle (a door's front face) by the ends of its two vertical sides (left camera frame,
-  // metres): the first side's two ends, then the second's, each side's in the order of its
-  // corners, so that ends 0 and 2 bound one level edge and 1 and 3 the other. Its centre is the
-  // mean of the ends; its width the distance between the sides' middles.
-  static Eigen::Vector3d rectangle_centre(const std::array<Eigen::Vector3d, 4>& ends);
-  static double rectangle_width(const std::array<Eigen::Vector3d, 4>& ends);
-
-  // The slope (rise over run, `up` a vector in the left camera frame) of the level edge seen
-  // farther above or below the cameras (the larger least elevation of its two ends' rays): the
-  // edge that tells whether the sides' depths agree. A side placed at a wrong depth moves its ends
-  // along their rays, so an edge near the cameras' height stays nearly level whatever the depth.
-  // A base unit's top edge in the image is the worktop's front lip, which hides a strip of the
-  // door that is wider at the far side when seen at a grazing angle, so the outline's top corners
-  // are not on one level line of the door; its bottom edge, farther below the eyes, is. nullopt
-  // when both edges are vertical or `up` is zero.
-  static std::optional<double> informative_edge_slope(const std::array<Eigen::Vector3d, 4>& ends,
-                                                      const Eigen::Vector3d& up_in_left_camera);
   // The corner indices of the two sides nearer the image vertical: {0, 3} and {1, 2}, or {0, 1}
   // and {3, 2}.
   static std::array<std::array<int, 2>, 2> vertical_sides(
@@ -94,13 +77,6 @@ class Triangulator {
   // when it is not in front of that camera.
   std::optional<Eigen::Vector2d> project_left(const Eigen::Vector3d& point_m) const;
   std::optional<Eigen::Vector2d> project_right(const Eigen::Vector3d& point_m) const;
-
-  // Where the left camera's ray through `left_ideal_px` meets the horizontal plane (normal `up`,
-  // left camera frame) through `on_plane_m`; nullopt when the ray runs within 0.05 rad of the
-  // plane or meets it behind the camera.
-  std::optional<Eigen::Vector3d> left_ray_on_level_plane(const Eigen::Vector2d& left_ideal_px,
-                                                         const Eigen::Vector3d& on_plane_m,
-                                                         const Eigen::Vector3d& up) const;
 
   // The midpoint with its covariance, then moved `reference_depth_offset_m` further along the
   // left viewing ray (the class's reference point lies behind the visible surface).

@@ -24,7 +24,6 @@ class BorderCutTest : public ::testing::Test {
  protected:
   BorderCutTest() {
     options_.bar_types = {"handle"};
-    options_.max_edge_slope_rad = 0.3;
     options_.border_cut = {test::cut_door_options({kHeightM}, 0.0)};
   }
 

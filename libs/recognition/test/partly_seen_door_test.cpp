@@ -216,5 +216,45 @@ TEST_F(PartlySeenDoorTest, RefusesWhatTheViewsAndTheClassCannotPlace) {
   EXPECT_TRUE(judge(views(hidden, hidden), trace).has_value());
 }
 
+// A door placed from one image (one_image_door.hpp): that image's outline, and of the other
+// image only where its sides are (on side) or nothing (absent), from either image.
+TEST_F(PartlySeenDoorTest, OneImagesOutlineAndTheOthersSidesPlaceTheDoor) {
+  constexpr std::array<S, 4> kWhole{S::kSeen, S::kSeen, S::kSeen, S::kSeen};
+  constexpr std::array<S, 4> kSides{S::kOnSide, S::kOnSide, S::kOnSide, S::kOnSide};
+  // Only the left side (0 and 3) in the other image: the right one from the outline's level edges.
+  constexpr std::array<S, 4> kLeftSide{S::kOnSide, S::kAbsent, S::kAbsent, S::kOnSide};
+  for (const auto& [left, right] : std::array<std::array<std::array<S, 4>, 2>, 4>{
+           {{kWhole, kSides}, {kSides, kWhole}, {kWhole, kLeftSide}, {kLeftSide, kWhole}}}) {
+    StereoPairTrace trace;
+    FittedDoor fitted;
+    const auto c = judge_partly_seen_door(0, -1, views(left, right), rig_, triangulator_, options_,
+                                          door_, 0.0, {3.0, 0.0, false}, trace, &fitted);
+    ASSERT_TRUE(c.has_value()) << stereo_gate_name(trace.refused_by) << " " << trace.value;
+    EXPECT_LT((c->triangulation.left_camera_position_m - kCentre).norm(), 1e-3);
+    EXPECT_NEAR(fitted.rectangle.width_m, kWidthM, 1e-3);
+    EXPECT_NEAR(fitted.rectangle.height_m, kHeightM, 1e-3);
+    EXPECT_FALSE(fitted.width_from_class);
+    EXPECT_FALSE(fitted.height_from_class);
+  }
+}
+
+// Each corner may carry its own gate: a side placed by correlation is held to a pixel or two
+// where the outline's corners are held to the position gate.
+TEST_F(PartlySeenDoorTest, ACornersOwnToleranceGatesItsResidual) {
+  constexpr std::array<S, 4> kWhole{S::kSeen, S::kSeen, S::kSeen, S::kSeen};
+  constexpr std::array<S, 4> kSides{S::kOnSide, S::kOnSide, S::kOnSide, S::kOnSide};
+  std::array<DoorOutlineView, 2> v = views(kWhole, kSides);
+  // The other image's right side leans (its top 4 px right of its bottom): a vertical side
+  // meets it within about 2 px, inside the outlines' 3 px ...
+  v[1].corners_ideal_px[1].x() += 4.0;
+  StereoPairTrace trace;
+  EXPECT_TRUE(judge(v, trace).has_value()) << stereo_gate_name(trace.refused_by);
+  // ... not within its own 1 px.
+  v[1].tolerance_px[1] = v[1].tolerance_px[2] = 1.0;
+  EXPECT_FALSE(judge(v, trace).has_value());
+  EXPECT_EQ(trace.refused_by, StereoGate::kRectangleFit);
+  EXPECT_DOUBLE_EQ(trace.limit, 1.0);
+}
+
 }  // namespace
 }  // namespace vsl::recognition::detail

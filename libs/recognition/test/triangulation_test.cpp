@@ -202,42 +202,6 @@ TEST_F(TriangulationTest, CovarianceGrowsWithTheSquareOfTheDepth) {
 namespace vsl::recognition {
 namespace {
 
-// The sides' ends of a door 0.5 m wide (left camera frame, y down, up = -y), in the order of
-// Triangulator::rectangle_centre: the left side's top and bottom, then the right side's.
-std::array<Eigen::Vector3d, 4> door_ends(double top_y, double bottom_y) {
-  return {Eigen::Vector3d(-0.25, top_y, 2.0), Eigen::Vector3d(-0.25, bottom_y, 2.0),
-          Eigen::Vector3d(0.25, top_y, 2.0), Eigen::Vector3d(0.25, bottom_y, 2.0)};
-}
-
-TEST(InformativeEdgeSlope, TheEdgeSeenFarthestFromTheCamerasHeightIsJudged) {
-  const Eigen::Vector3d up(0.0, -1.0, 0.0);
-  // A base unit's door seen from above: its top edge near the eyes' height (0.05 m below), its
-  // bottom 0.8 m below. Its right side placed 10% too far along its rays: both ends move along
-  // them, the bottom one 8 cm down, the top one only 5 mm.
-  std::array<Eigen::Vector3d, 4> ends = door_ends(0.05, 0.8);
-  ends[2] *= 1.1;
-  ends[3] *= 1.1;
-  const double bottom_slope = 0.08 / (ends[3] - ends[1]).norm();
-  EXPECT_NEAR(*detail::Triangulator::informative_edge_slope(ends, up), bottom_slope, 0.01);
-  // The top edge is the worktop's lip, 6 cm lower at the far side in the image: that edge
-  // slopes, the bottom one is level; the door's sides agree.
-  std::array<Eigen::Vector3d, 4> lipped = door_ends(0.05, 0.8);
-  lipped[2].y() += 0.06;
-  EXPECT_NEAR(*detail::Triangulator::informative_edge_slope(lipped, up), 0.0, 1e-9);
-  // A wall cupboard's door above the eyes: its top edge tells.
-  std::array<Eigen::Vector3d, 4> wall = door_ends(-0.8, -0.05);
-  wall[3].y() += 0.06;  // its bottom edge, near the eyes, off
-  EXPECT_NEAR(*detail::Triangulator::informative_edge_slope(wall, up), 0.0, 1e-9);
-  EXPECT_FALSE(
-      detail::Triangulator::informative_edge_slope(wall, Eigen::Vector3d::Zero()).has_value());
-}
-
-}  // namespace
-}  // namespace vsl::recognition
-
-namespace vsl::recognition {
-namespace {
-
 // The reference-and-disparity noise model: both pixels move together by the reference error,
 // the right one also by the disparity error. Its covariance matches the scatter of seeded Monte
 // Carlo draws of exactly that noise (NEES 3), and seen straight ahead it separates: the

@@ -62,11 +62,6 @@ struct StereoMatchOptions {
   // (but see BorderCutDoor::occluded_corner for a side that is no door edge in both images).
   // Needs the up direction (match_and_triangulate's up_in_left_camera); 0 turns it off.
   double max_side_tilt_rad = 0.0;
-  // Single-view door outlines (min_single_view_correlation) are refused when the level edge seen
-  // farther from the cameras' height (Triangulator::informative_edge_slope), between the sides'
-  // swept ends, slopes by more than this angle: a door's are level, and a side swept to a wrong
-  // depth tilts them. Needs the up direction; 0 turns it off.
-  double max_edge_slope_rad = 0.0;
   // Types whose detections are bars (handles): a pair of such elongated detections (both at
   // least min_elongation_for_orientation, their axis at least 45 degrees from the epipolar line)
   // is placed by the fit of a 3D segment to both views (partly_seen_bar.hpp) rather than by its
@@ -95,19 +90,18 @@ struct StereoMatchOptions {
   // Rectangle outlines (doors) that no pair took, placed from their own image alone: a door
   // whose outline is clean in one image is often merged with a neighbour, or a little off the
   // class model, in the other, and then has no partner. Both vertical sides of the outline are
-  // swept into the other image over the whole depth range (side_correlation.hpp); the outline
-  // makes a percept when both sides score at least this, each side's best score beats its
-  // second-best distinct peak by single_view_min_peak_margin (a run of equal doors repeats every
-  // edge), the outline's sides are vertical in 3D (max_side_tilt_rad), its top and bottom edges
-  // level (max_edge_slope_rad), its height and depth within their ranges, at most
-  // single_view_max_bars_inside detections of a bar type (handles) lie inside the outline (a door
-  // carries one handle; a stack of drawer fronts, or two doors, merged into one door-shaped blob
-  // carry several), and no percept of its type lies within single_view_min_separation_m of it.
-  // Its covariance is the one the pixel noise gives a pair at that point. The class's
-  // major_extent_range_m is not tested (a door's width is no class property; none is
-  // configured). Needs min_side_correlation > 0 (its correlator and images;
-  // stereo_match_options_from refuses the option without it) and the up direction; 0 turns it
-  // off.
+  // swept into the other image over the whole depth range (side_correlation.hpp), and the door's
+  // fit (partly_seen_door.hpp) places it from the outline and the sides where the sweeps put
+  // them (one_image_door.hpp). The outline makes a percept when both sides score at least this,
+  // its sides are vertical in 3D (max_side_tilt_rad), exactly one combination of the sides' peaks
+  // (the best, and the second-best where it is within single_view_min_peak_margin: a run of equal
+  // doors repeats every edge) fits a door of its class (border_cut: a type without a door class
+  // makes no single views), at most single_view_max_bars_inside detections of a bar type
+  // (handles) lie inside the outline (a door carries one handle; a stack of drawer fronts, or two
+  // doors, merged into one door-shaped blob carry several), and no percept of its type lies
+  // within single_view_min_separation_m of it. Its covariance is the fit's. Needs
+  // min_side_correlation > 0 (its correlator and images; stereo_match_options_from refuses the
+  // option without it) and the up direction; 0 turns it off.
   double min_single_view_correlation = 0.0;
   double single_view_min_peak_margin = 0.1;
   double single_view_min_separation_m = 0.2;
