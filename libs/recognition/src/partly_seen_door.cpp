@@ -21,6 +21,9 @@ namespace {
 // The corner on the same vertical side (0-3, 1-2) and on the same level edge (0-1, 3-2).
 constexpr std::array<std::size_t, 4> kBelowOrAbove{3, 2, 1, 0};
 constexpr std::array<std::size_t, 4> kAlongEdge{1, 0, 3, 2};
+// A typical door seen whole up to the border or an occluder measures its height plus the noise
+// of its ends: up to this fraction of the typical height.
+constexpr double kMaxVisibleOfTypical = 1.05;
 // At least this fraction of the typical width in view: less of a door is mostly a strip that
 // segmentation split off.
 constexpr double kMinVisibleOfTypicalWidth = 0.5;

@@ -48,15 +48,16 @@
 // segmented outline's corners scatter by more than the pixel noise, and by as much as the fit's
 // residuals show.
 //
-// Accepted when every image residual is within the caller's tolerance (PartlySeenLimits); a
-// hidden corner's outline point lies within the door's projection (and, hidden in both images by
-// an occluder, away from the door's own corner); a measured height is within height_range_m, a
-// measured width at least min_width_m, any width at most max_width_m; a size from the prior has
-// at least half of it in view; the door is seen from within about 78 deg of head-on, within the
-// depth range; a level lower edge shows PartlySeenLimits::min_visible_if_level_m; and, resting on
-// a hidden corner, the centre's standard deviation is at most 0.25 m. The whole, cut, corner,
-// occluder, one-hidden-corner and merged-side cases are these states, not separate
-// constructions.
+// Accepted when every image residual is within its corner's tolerance (DoorOutlineView::
+// tolerance_px, else the caller's: PartlySeenLimits); a hidden corner's outline point lies within
+// the door's projection (and, hidden in both images by an occluder, away from the door's own
+// corner); a measured height is within height_range_m, a measured width at least min_width_m
+// (unless the caller waives it), any width at most max_width_m; a size from the prior has at least
+// half of it in view; the door is seen from within about 78 deg of head-on (unless waived), within
+// the depth range; a level lower edge shows PartlySeenLimits::min_visible_if_level_m; and,
+// resting on a hidden or absent corner, the centre's standard deviation is at most 0.25 m. The
+// whole, cut, corner, occluder, one-hidden-corner, merged-side and one-image cases are these
+// states, not separate constructions.
 #pragma once
 
 #include <Eigen/Core>
@@ -74,12 +75,8 @@
 
 namespace vsl::recognition::detail {
 
-// A typical door seen whole up to the border or an occluder measures its height plus the noise
-// of its ends: up to this fraction of the typical height (also one_side_door.cpp).
-inline constexpr double kMaxVisibleOfTypical = 1.05;
 // The least cosine of the angle between the door's normal and the view (about 78 deg): at more
-// grazing angles no door of the evaluations was recognized whole either (also
-// one_side_door.cpp).
+// grazing angles no door of the evaluations was recognized whole either (PartlySeenLimits).
 inline constexpr double kMinCosViewing = 0.2;
 
 enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden, kMerged, kAbsent };
@@ -111,7 +108,9 @@ struct PartlySeenLimits {
   // The hidden corners are an occluder's: one hidden in both images must be away from the door's
   // own corner (else nothing hides it). Otherwise the image border hides them.
   bool hidden_by_occluder = false;
-  // The least cosine of the angle between the door's normal and the view.
+  // The least cosine of the angle between the door's normal and the view (0: any), and whether a
+  // measured width must reach the class's min_width_m (a door from one image swept on both
+  // sides is placed at any: one_image_door.hpp).
   double min_cos_viewing = kMinCosViewing;
   bool min_width = true;
 };

@@ -87,9 +87,9 @@ class SideCorrelator {
   // around `initial_distance_m` and within [min_distance_m, max_distance_m]. nullopt when the
   // side is shorter than 8 px, its window has no contrast, or the window leaves the right image
   // (or falls behind the right camera) over the whole search.
-  // The same call twice returns the first result without sweeping again: single-view doors
-  // (single_view.hpp), doors from one side and their swapped form (one_side_door.hpp) sweep the
-  // same sides of one outline over the whole depth range.
+  // The same call twice returns the first result without sweeping again: a door from one image
+  // swept on both sides, from one side and with the sides' roles swapped (one_image_door.hpp)
+  // sweeps the same sides of one outline over the whole depth range.
   std::optional<SideDepth> correlate(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                      double initial_distance_m, double search_px,
                                      double min_distance_m, double max_distance_m) const;

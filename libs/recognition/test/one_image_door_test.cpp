@@ -1,7 +1,7 @@
-// Doors placed from one vertical side and the level planes of their edges
-// (StereoMatchOptions::BorderCutDoor::from_one_side, one_side_door.hpp), the other side beyond
-// the other image's border or found there where the planes put it, on rendered images where the
-// sweep has real edges to find.
+// Doors placed from one image with one vertical side swept and the other placed by the fit from
+// the outline's level edges (StereoMatchOptions::BorderCutDoor::from_one_side,
+// one_image_door.hpp), the other side beyond the other image's border or found there where the
+// fit puts it, on rendered images where the sweep has real edges to find.
 #include <gtest/gtest.h>
 
 #include <array>

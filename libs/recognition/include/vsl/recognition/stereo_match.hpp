@@ -168,22 +168,19 @@ struct StereoMatchOptions {
     // of equal doors repeats every edge), else it keeps the outlines'. 0: any best peak.
     double min_peak_margin = 0.0;
     // With min_single_view_correlation: a door outline that neither a pair nor a single view
-    // placed (whole, or cut by its own image's top or bottom border) is placed from one vertical
-    // side and the level planes of its top and bottom edges (one_side_door.hpp): the side the
-    // other image shows even near its border (the right side of a left-image outline) is swept
-    // as for single views (min_single_view_correlation; a second peak within
-    // single_view_min_peak_margin is tried too, and exactly one must pass), and the other side's
-    // corners are where the own rays meet the planes of the swept side's ends. Kept when those
-    // corners project beyond the other image's left or right border, or the other image shows
-    // that side where they put it; the edges are min_width_m .. max_width_m long and seen from
-    // within about 78 deg of head-on; a whole outline's other side is vertical and the swept one a
-    // door's height (height_range_m; the other's corners are at its ends' heights), a cut one's
-    // visible height as for pairs above; at most single_view_max_bars_inside handles inside, no
-    // percept of its type within single_view_min_separation_m. The covariance is a single view's,
-    // plus (height_sigma_m / 2)^2 along the up direction for a cut door.
+    // placed (whole, or cut by its own image's top or bottom border) is placed by the door's fit
+    // with one vertical side swept (one_image_door.hpp): the side the other image shows even near
+    // its border (the right side of a left-image outline), as for single views
+    // (min_single_view_correlation; a second peak within single_view_min_peak_margin is tried
+    // too, and exactly one must pass); the other side is placed by the outline's level edges. Kept
+    // when the own image measures the width, the placed side projects beyond the other image's
+    // left or right border or the other image shows it there, and the fit's gates pass (a cut
+    // one's height the class's, as for pairs above); at most single_view_max_bars_inside handles
+    // inside, no percept of its type within single_view_min_separation_m. The covariance is the
+    // fit's.
     bool from_one_side = false;
     // With from_one_side: a whole door outline that it did not place is tried once more
-    // with the roles swapped: its outer side swept, its inner side placed on the level planes,
+    // with the roles swapped: its outer side swept, its inner side placed by the level edges,
     // and kept when the other image shows the inner side there or shows no edge at all there
     // (its window's contrast under 0.3 of the own image's: the reveal between the door and a
     // neighbour of its colour, unseen in the other image, where segmentation merged the two).
