@@ -141,11 +141,7 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
     const Detection& d = k == 0 ? v.left[l] : v.right[r];
     const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
     for (std::size_t j = 0; j < 4; ++j) {
-      const Eigen::Vector2d& px = d.corners_px[j];
-      const bool beyond = px.x() < -0.5 - 1e-6 || px.y() < -0.5 - 1e-6 ||
-                          px.x() > camera.width_px - 0.5 + 1e-6 ||
-                          px.y() > camera.height_px - 0.5 + 1e-6;
-      if (beyond && views[k].states[j] == CornerState::kSeen) {
+      if (beyond_image(d.corners_px[j], camera) && views[k].states[j] == CornerState::kSeen) {
         views[k].states[j] = CornerState::kHidden;
       }
     }

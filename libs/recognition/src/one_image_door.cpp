@@ -48,7 +48,7 @@ struct OwnView {
   int image;
   std::array<Eigen::Vector2d, 4> corners;  // ideal pixels, the fit's order
   const SideCorrelator& sweep;
-  const head::CameraIntrinsics& own;
+  const RigCamera& own_camera;  // the fit's pinhole of the own image
   const head::CameraIntrinsics& other;
   Eigen::Isometry3d left_T_own;   // own camera points into the left camera frame
   Eigen::Vector3d up_in_own;      // unit
@@ -56,20 +56,21 @@ struct OwnView {
   const RigCamera& other_camera;  // the fit's pinhole of the other image
 };
 
-// A whole outline's corners in the fit's order: its two sides nearer the image vertical
-// (Triangulator::vertical_sides) as the left (0 top, 3 bottom) and right (1 top, 2 bottom) sides.
-// The outline's own numbering starts at the corner of least u + v (quadrilateral.hpp), which for
-// a narrow outline seen at a grazing angle is a bottom or top corner of a side.
-std::array<Eigen::Vector2d, 4> in_fit_order(const std::array<Eigen::Vector2d, 4>& c) {
-  std::array<std::array<Eigen::Vector2d, 2>, 2> sides;  // (top, bottom) each
+// Which outline corner is each of the fit's (clockwise from the top left) for a whole outline:
+// its two sides nearer the image vertical (Triangulator::vertical_sides) as the left (0 top, 3
+// bottom) and right (1 top, 2 bottom) sides. The outline's own numbering starts at the corner of
+// least u + v (quadrilateral.hpp), which for a narrow outline seen at a grazing angle is a bottom
+// or top corner of a side.
+std::array<std::size_t, 4> fit_order(const std::array<Eigen::Vector2d, 4>& c) {
+  std::array<std::array<std::size_t, 2>, 2> sides;  // (top, bottom) each
   const auto vertical = Triangulator::vertical_sides(c);
   for (std::size_t s = 0; s < 2; ++s) {
-    const Eigen::Vector2d& a = c[static_cast<std::size_t>(vertical[s][0])];
-    const Eigen::Vector2d& b = c[static_cast<std::size_t>(vertical[s][1])];
-    sides[s] = a.y() <= b.y() ? std::array<Eigen::Vector2d, 2>{a, b}
-                              : std::array<Eigen::Vector2d, 2>{b, a};
+    const auto a = static_cast<std::size_t>(vertical[s][0]);
+    const auto b = static_cast<std::size_t>(vertical[s][1]);
+    sides[s] =
+        c[a].y() <= c[b].y() ? std::array<std::size_t, 2>{a, b} : std::array<std::size_t, 2>{b, a};
   }
-  if (sides[0][0].x() + sides[0][1].x() > sides[1][0].x() + sides[1][1].x()) {
+  if (c[sides[0][0]].x() + c[sides[0][1]].x() > c[sides[1][0]].x() + c[sides[1][1]].x()) {
     std::swap(sides[0], sides[1]);
   }
   return {sides[0][0], sides[1][0], sides[1][1], sides[0][1]};
@@ -79,9 +80,7 @@ std::array<Eigen::Vector2d, 4> in_fit_order(const std::array<Eigen::Vector2d, 4>
 // span a plane that holds `up`, |n . u| / |n| the sine of the side's tilt from vertical.
 bool sides_vertical(const OwnView& o, double max_tilt_rad) {
   if (!(max_tilt_rad > 0.0)) return true;
-  Eigen::Matrix3d k;
-  k << o.own.fx_px, 0.0, o.own.cx_px, 0.0, o.own.fy_px, o.own.cy_px, 0.0, 0.0, 1.0;
-  const Eigen::Matrix3d k_inverse = k.inverse();
+  const Eigen::Matrix3d k_inverse = o.own_camera.K.inverse();
   for (const auto& [top, bottom] : kSides) {
     const Eigen::Vector3d n = (k_inverse * o.corners[top].homogeneous())
                                   .cross(k_inverse * o.corners[bottom].homogeneous());
@@ -170,14 +169,16 @@ std::optional<std::array<DoorOutlineView, 2>> views_at(const OwnView& o, BorderC
   DoorOutlineView& other_view = views[static_cast<std::size_t>(1 - o.image)];
   own_view.corners_ideal_px = o.corners;
   own_view.states = corner_states_of(cut);
+  other_view.corners_ideal_px.fill(Eigen::Vector2d::Zero());
   other_view.states.fill(CornerState::kAbsent);
   for (std::size_t s = 0; s < 2; ++s) {
     if (!swept[s]) continue;
     for (const std::size_t j : kSides[s]) {
       const auto point_own = o.sweep.point_at(o.corners[j], distance_m[s]);
       if (!point_own) return std::nullopt;
-      other_view.corners_ideal_px[j] =
-          o.other_camera.project(Eigen::Vector3d(o.left_T_own * *point_own));
+      const Eigen::Vector3d point_left = o.left_T_own * *point_own;
+      if (!(o.other_camera.in_frame(point_left).z() > 0.0)) return std::nullopt;
+      other_view.corners_ideal_px[j] = o.other_camera.project(point_left);
       other_view.states[j] = CornerState::kOnSide;
       other_view.tolerance_px[j] = kSweptSideSigmas * options.pixel_sigma_px;
     }
@@ -225,11 +226,11 @@ struct Placed {
   double score = 0.0;
 };
 std::optional<Placed> place_among_peaks(const StereoViews& v, const OwnView& o, int index,
+                                        const Detection& detection,
+                                        const StereoMatchOptions::BorderCutDoor& door,
                                         SweptSides sides, const std::array<bool, 2>& swept,
                                         const std::array<SidePeaks, 2>& peaks) {
   const StereoMatchOptions& options = v.options;
-  const Detection& detection = (o.image == 0 ? v.left : v.right)[static_cast<std::size_t>(index)];
-  const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, detection.type);
   const PartlySeenLimits limits = limits_of(sides, detection.height_px, options);
   const double offset_m = reference_depth_offset(options, detection.type);
   const SidePeaks neutral{{0.0, 1.0}};
@@ -276,16 +277,21 @@ std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int imag
   const std::array<RigCamera, 2> cameras = v.rig.cameras();
   const Eigen::Isometry3d left_T_own =
       image == 0 ? Eigen::Isometry3d::Identity() : v.rig.right_T_left.inverse();
-  const OwnView o{
-      image,
-      cut == BorderCut::kNone ? in_fit_order(corner_array(corners)) : corner_array(corners),
-      *sweep,
-      image == 0 ? v.left_intrinsics : v.right_intrinsics,
-      image == 0 ? v.right_intrinsics : v.left_intrinsics,
-      left_T_own,
-      left_T_own.linear().transpose() * v.rig.up,
-      v.rig.up,
-      cameras[static_cast<std::size_t>(1 - image)]};
+  // A cut outline is numbered with its cut side first (border_cut_of); a whole one is renumbered.
+  const std::array<Eigen::Vector2d, 4> outline = corner_array(corners);
+  const std::array<std::size_t, 4> order =
+      cut == BorderCut::kNone ? fit_order(outline) : std::array<std::size_t, 4>{0, 1, 2, 3};
+  std::array<Eigen::Vector2d, 4> in_order;
+  for (std::size_t j = 0; j < 4; ++j) in_order[j] = outline[order[j]];
+  const OwnView o{image,
+                  in_order,
+                  *sweep,
+                  cameras[static_cast<std::size_t>(image)],
+                  image == 0 ? v.right_intrinsics : v.left_intrinsics,
+                  left_T_own,
+                  left_T_own.linear().transpose() * v.rig.up,
+                  v.rig.up,
+                  cameras[static_cast<std::size_t>(1 - image)]};
   if (!sides_vertical(
           o, cut == BorderCut::kNone ? options.max_side_tilt_rad : door->max_side_tilt_rad)) {
     return std::nullopt;
@@ -303,17 +309,19 @@ std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int imag
     peaks[s] = side_peaks(o, s, options);
     if (peaks[s].empty()) return std::nullopt;
   }
-  const std::optional<Placed> placed = place_among_peaks(v, o, index, sides, swept, peaks);
+  const std::optional<Placed> placed =
+      place_among_peaks(v, o, index, detection, *door, sides, swept, peaks);
   if (!placed) return std::nullopt;
+  const Eigen::Vector3d& centre_m = placed->candidate.triangulation.left_camera_position_m;
+  if (!(o.other_camera.in_frame(centre_m).z() > 0.0)) return std::nullopt;
   // The percept: the fit's centre and covariance; the other image's pixel the centre's
   // projection; one image's evidence, the detection's confidence scaled by its sides' agreement
   // with the other image.
   StereoPercept percept;
   (image == 0 ? percept.left_detection : percept.right_detection) = index;
-  percept.left_camera_position_m = placed->candidate.triangulation.left_camera_position_m;
+  percept.left_camera_position_m = centre_m;
   percept.left_camera_covariance_m2 = placed->candidate.triangulation.left_camera_covariance_m2;
-  const Eigen::Vector2d other_px =
-      distort(o.other_camera.project(Eigen::Vector3d(percept.left_camera_position_m)), o.other);
+  const Eigen::Vector2d other_px = distort(o.other_camera.project(centre_m), o.other);
   percept.left_px = image == 0 ? detection.reference_px : other_px;
   percept.right_px = image == 1 ? detection.reference_px : other_px;
   percept.confidence =

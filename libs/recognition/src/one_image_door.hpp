@@ -40,6 +40,6 @@ enum class SweptSides { kBoth, kInner, kOuter };
 // placed, its type has a door class (StereoMatchOptions::border_cut), the up direction is known
 // and the images could be correlated.
 std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int image, int index,
-                                                  SweptSides swept);
+                                                  SweptSides sides);
 
 }  // namespace vsl::recognition::detail

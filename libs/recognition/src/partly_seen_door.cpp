@@ -154,6 +154,16 @@ Measured measured_sides(const std::array<DoorOutlineView, 2>& views) {
   return measured;
 }
 
+// Where camera k's ray through ideal pixel m starts and runs (left camera frame; unnormalized).
+struct Ray {
+  Eigen::Vector3d origin, direction;
+};
+Ray ray_of(const RigCamera& camera, const Eigen::Vector2d& m_px) {
+  const Eigen::Isometry3d left_T_camera = camera.camera_T_left.inverse();
+  return {left_T_camera.translation(),
+          left_T_camera.linear() * (camera.K.inverse() * m_px.homogeneous())};
+}
+
 // The door's plane through the start's corners (left camera frame): a point on it (the corners'
 // mean) and its level direction a (unit, from corner 0 towards corner 1).
 struct Face {
@@ -180,7 +190,6 @@ std::optional<Face> start_face(const std::array<DoorOutlineView, 2>& views,
     }
   }
   for (std::size_t k = 0; k < 2; ++k) {
-    const Eigen::Isometry3d left_T_camera = cameras[k].camera_T_left.inverse();
     for (std::size_t j = 0; j < 4; ++j) {
       const std::size_t partner = kAlongEdge[j];
       const CornerState state = views[k].states[j];
@@ -188,16 +197,13 @@ std::optional<Face> start_face(const std::array<DoorOutlineView, 2>& views,
           (state != CornerState::kSeen && state != CornerState::kOnEdge)) {
         continue;
       }
-      // X = o + s r on the level plane through the partner: (X - P) . up = 0 (as
-      // Triangulator::left_ray_on_level_plane, whose elevation bound this keeps).
-      const Eigen::Vector3d ray =
-          (left_T_camera.linear() *
-           (cameras[k].K.inverse() * views[k].corners_ideal_px[j].homogeneous()))
-              .normalized();
-      const Eigen::Vector3d origin = left_T_camera.translation();
-      if (std::abs(ray.dot(up)) < kMinRayElevationSin) continue;
-      const double s = (*points[partner] - origin).dot(up) / ray.dot(up);
-      if (s > 0.0) points[j] = origin + s * ray;
+      // X = o + s r on the level plane through the partner P: (X - P) . up = 0, for a ray at
+      // least kMinRayElevationSin from that plane.
+      const Ray ray = ray_of(cameras[k], views[k].corners_ideal_px[j]);
+      const Eigen::Vector3d r = ray.direction.normalized();
+      if (std::abs(r.dot(up)) < kMinRayElevationSin) continue;
+      const double s = (*points[partner] - ray.origin).dot(up) / r.dot(up);
+      if (s > 0.0) points[j] = ray.origin + s * r;
     }
   }
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -272,19 +278,15 @@ std::optional<Start> start_of(const std::array<DoorOutlineView, 2>& views,
   OnFace on_face;
   std::array<double, 4> side_sum{}, side_count{};
   for (std::size_t k = 0; k < 2; ++k) {
-    const Eigen::Isometry3d left_T_camera = cameras[k].camera_T_left.inverse();
-    const Eigen::Vector3d origin = left_T_camera.translation();
     for (std::size_t j = 0; j < 4; ++j) {
       const Use use = use_of(views, k, j);
       if (use == Use::kNone) continue;
-      const Eigen::Vector3d ray =
-          left_T_camera.linear() *
-          (cameras[k].K.inverse() * views[k].corners_ideal_px[j].homogeneous());
-      const double denominator = normal.dot(ray);
-      if (std::abs(denominator) < 1e-9 * ray.norm()) return std::nullopt;
-      const double s = normal.dot(face->point_m - origin) / denominator;
+      const Ray ray = ray_of(cameras[k], views[k].corners_ideal_px[j]);
+      const double denominator = normal.dot(ray.direction);
+      if (std::abs(denominator) < 1e-9 * ray.direction.norm()) return std::nullopt;
+      const double s = normal.dot(face->point_m - ray.origin) / denominator;
       if (!(s > 0.0)) return std::nullopt;
-      const Eigen::Vector3d x = origin + s * ray;
+      const Eigen::Vector3d x = ray.origin + s * ray.direction;
       const Eigen::Vector2d xy(face->a.dot(x - face->point_m), basis.up.dot(x - face->point_m));
       on_face[k][j] = xy;
       for_measured_sides(use, j, [&](Side side, int axis) {
@@ -550,6 +552,11 @@ double variance_factor(const std::vector<CornerResidual>& residuals, const Theta
 }
 
 }  // namespace
+
+bool beyond_image(const Eigen::Vector2d& raw_px, const head::CameraIntrinsics& camera) {
+  return raw_px.x() < -0.5 - 1e-6 || raw_px.y() < -0.5 - 1e-6 ||
+         raw_px.x() > camera.width_px - 0.5 + 1e-6 || raw_px.y() > camera.height_px - 0.5 + 1e-6;
+}
 
 std::array<CornerState, 4> corner_states_of(BorderCut cut) {
   const auto any = [cut](auto... cuts) { return ((cut == cuts) || ...); };

@@ -47,7 +47,6 @@ double elongation(const Detection& d) {
 }
 
 using detail::border_cut_door;
-using detail::class_max_width_m;
 using detail::corner_array;
 using detail::cut_bar_of;
 using detail::Explanation;
@@ -447,8 +446,9 @@ std::optional<StereoPercept> place_from_one_image(const StereoViews& v, int imag
   if (pass == 0) return detail::place_one_image_door(v, image, index, detail::SweptSides::kBoth);
   std::optional<StereoPercept> percept =
       detail::place_one_image_door(v, image, index, detail::SweptSides::kInner);
-  const Detection& detection = (image == 0 ? v.left : v.right)[d];
-  if (!percept && border_cut_door(v.options, detection.type)->merged_side) {
+  const StereoMatchOptions::BorderCutDoor* door =
+      border_cut_door(v.options, (image == 0 ? v.left : v.right)[d].type);
+  if (!percept && door && door->merged_side) {
     percept = detail::place_one_image_door(v, image, index, detail::SweptSides::kOuter);
   }
   return percept;

@@ -63,11 +63,6 @@ const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOption
 }
 
 // The class's greatest width, metres (its border_cut entry's max_width_m); 0 when not configured.
-double class_max_width_m(const StereoMatchOptions& options, const std::string& type) {
-  const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, type);
-  return door ? door->max_width_m : 0.0;
-}
-
 const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
                                              const std::string& type) {
   return entry_of(options.cut_bars, type);

@@ -23,9 +23,9 @@ using test::project;
 
 // The simulated head's ideal 640x480 pinholes, parallel, 90 mm apart: at 2 m a point is 25 px
 // further left in the right image.
-class OneSideDoorTest : public ::testing::Test {
+class OneImageDoorTest : public ::testing::Test {
  protected:
-  OneSideDoorTest() {
+  OneImageDoorTest() {
     options_.max_side_tilt_rad = 0.03;
     options_.height_range_m = {{"door", 0.5, 2.5}};
     options_.min_side_correlation = 0.7;
@@ -121,7 +121,7 @@ class OneSideDoorTest : public ::testing::Test {
 // from the left image's border and so about 12 px beyond the right image's (22 px of disparity).
 const Eigen::Vector3d kNearLeftBorder(-1.01, 0.55, 2.3);
 
-TEST_F(OneSideDoorTest, AWholeDoorPlacedFromItsInnerSideAndTheLevelEdges) {
+TEST_F(OneImageDoorTest, AWholeDoorPlacedFromItsInnerSideAndTheLevelEdges) {
   const auto corners = door_corners(kNearLeftBorder, 0.2);
   render(corners);
   ASSERT_LT(pixels(corners, 1)[0].x(), 0.0);  // the left side beyond the right image
@@ -132,8 +132,8 @@ TEST_F(OneSideDoorTest, AWholeDoorPlacedFromItsInnerSideAndTheLevelEdges) {
   EXPECT_LT((percepts[0].left_camera_position_m - kNearLeftBorder).norm(), 0.02);
   EXPECT_EQ(percepts[0].left_detection, 0);
   EXPECT_EQ(percepts[0].right_detection, -1);
-  // A whole door: the pixel noise's covariance alone (its depth's share along up at 0.24 rad
-  // below the axis: 2.5 cm), not the class's spread of heights (6 cm and more, below).
+  // A whole door: its height measured, the fit's covariance without the class's spread of
+  // heights (6 cm and more, below).
   EXPECT_LT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.04 * 0.04);
   // Off: the single-view sweep of both sides cannot place it (its left side has nothing to
   // correlate with).
@@ -141,7 +141,7 @@ TEST_F(OneSideDoorTest, AWholeDoorPlacedFromItsInnerSideAndTheLevelEdges) {
   EXPECT_TRUE(match({door}, {}).empty());
 }
 
-TEST_F(OneSideDoorTest, ACutDoorTakesTheTypicalHeight) {
+TEST_F(OneImageDoorTest, ACutDoorTakesTheTypicalHeight) {
   // Its bottom below both images, its left side beyond the right image's border: cut by the
   // bottom border in the left image, by the bottom and left ones in the right.
   const Eigen::Vector3d centre(-1.01, 0.7, 2.3);
@@ -155,7 +155,7 @@ TEST_F(OneSideDoorTest, ACutDoorTakesTheTypicalHeight) {
   EXPECT_GT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.06 * 0.06);
 }
 
-TEST_F(OneSideDoorTest, FromTheRightImageNearItsRightBorder) {
+TEST_F(OneImageDoorTest, FromTheRightImageNearItsRightBorder) {
   // The mirror case: the right side beyond the left image's right border.
   const Eigen::Vector3d centre(1.10, 0.55, 2.3);
   const auto corners = door_corners(centre, -0.2);
@@ -170,11 +170,11 @@ TEST_F(OneSideDoorTest, FromTheRightImageNearItsRightBorder) {
   EXPECT_TRUE(match({}, {outline(corners, 1)}).empty());
 }
 
-TEST_F(OneSideDoorTest, AnOuterSideTheOtherImageShowsMustBeFoundThere) {
+TEST_F(OneImageDoorTest, AnOuterSideTheOtherImageShowsMustBeFoundThere) {
   // A door cut by the bottom border of both images, 80 px right of kNearLeftBorder's: the right
   // image shows both its sides, and only the left image's outline was detected. Single-view
-  // doors do not sweep cut outlines; the level planes put its left side where the right image
-  // shows it.
+  // doors do not sweep cut outlines; the fit puts its left side, from the outline's level edges,
+  // where the right image shows it.
   const Eigen::Vector3d centre(-0.68, 0.7, 2.3);
   const auto corners = door_corners(centre, 0.2);
   render(corners);
@@ -190,7 +190,7 @@ TEST_F(OneSideDoorTest, AnOuterSideTheOtherImageShowsMustBeFoundThere) {
   EXPECT_TRUE(match({door}, {}).empty());
 }
 
-TEST_F(OneSideDoorTest, TheEdgesMustBeADoorsWidth) {
+TEST_F(OneImageDoorTest, TheEdgesMustBeADoorsWidth) {
   const auto corners = door_corners(kNearLeftBorder, 0.2);
   render(corners);
   options_.border_cut[0].max_width_m = 0.45;  // the door is 0.5 m wide
@@ -199,10 +199,10 @@ TEST_F(OneSideDoorTest, TheEdgesMustBeADoorsWidth) {
   EXPECT_EQ(match({outline(corners, 0)}, {}).size(), 1u);
 }
 
-TEST_F(OneSideDoorTest, ACutByTheTopBorderTakesTheTypicalHeightDownwards) {
+TEST_F(OneImageDoorTest, ACutByTheTopBorderTakesTheTypicalHeightDownwards) {
   // A wall cupboard's door above the eyes, its top above both images and its left side beyond
-  // the right image's left border: placed from its right side and the level plane of its bottom
-  // edge, its centre half a typical height above that edge.
+  // the right image's left border: placed from its right side and its bottom edge, its centre
+  // half a typical height above that edge.
   const Eigen::Vector3d centre(-1.01, -0.75, 2.3);
   const auto corners = door_corners(centre, 0.2);
   render(corners);
@@ -218,7 +218,7 @@ TEST_F(OneSideDoorTest, ACutByTheTopBorderTakesTheTypicalHeightDownwards) {
   EXPECT_TRUE(match({door}, {}).empty());
 }
 
-TEST_F(OneSideDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOnce) {
+TEST_F(OneImageDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOnce) {
   // The right image shows a second edge like the door's right side 13 px further right (a
   // neighbour's dark stripe): the inner side's sweep peaks there (5 m from the camera,
   // horizontally) before the door's own edge (2.5 m, within the margin of 0.2). At 5 m the level
@@ -232,8 +232,9 @@ TEST_F(OneSideDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOn
   const std::vector<StereoPercept> percepts = match({door}, {});
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_LT((percepts[0].left_camera_position_m - kNearLeftBorder).norm(), 0.02);
-  // Doors up to 1.5 m wide: the door fits the outline at 5 m too, but its left side would then be
-  // inside the right image, where no such edge is; it is still placed at 2.5 m, once.
+  // Doors up to 1.5 m wide: the door fits the outline at 5 m too, but resting on one side there
+  // its centre is not placed to 0.25 m (as a door resting on a hidden corner); it is still placed
+  // at 2.5 m, once.
   options_.border_cut[0].max_width_m = 1.5;
   const std::vector<StereoPercept> wider = match({door}, {});
   ASSERT_EQ(wider.size(), 1u);
@@ -243,12 +244,11 @@ TEST_F(OneSideDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOn
   EXPECT_EQ(match({door}, {}).size(), 1u);
 }
 
-TEST_F(OneSideDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
+TEST_F(OneImageDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
   // A door in the middle of both images; in the right image a neighbour of the door's colour
   // continues past its right side, with no reveal between them (segmentation merged the two
-  // there). The single-view and the one-side placements sweep the right side and find nothing;
-  // swept from its left side, with its right side on the level planes where the right image
-  // shows no edge, it is placed.
+  // there). Swept on both sides, or on its right side alone, it is not placed; swept from its
+  // left side, with its right side placed by the fit where the right image shows no edge, it is.
   const Eigen::Vector3d centre(-0.3, 0.55, 2.3);
   const auto corners = door_corners(centre, 0.2);
   options_.border_cut[0].merged_side = true;

@@ -487,8 +487,8 @@ TEST_F(SideCorrelationTest, AOneImageDoorIsPlacedWhateverCornerItsOutlineStartsA
 }
 
 // One side matches twice in the other image (a copy of its edge 30 px nearer: the repeated edge
-// of a run of doors); the door's shape picks the peak: at the copy's depth the top and bottom
-// edges would slope.
+// of a run of doors); the door's shape picks the peak: at the copy's depth no door fits the
+// outline with that side where the sweep puts it.
 TEST_F(SideCorrelationTest, ASideThatMatchesTwiceIsPlacedByTheDoorsShape) {
   const std::array<Eigen::Vector3d, 4> c = door_.corners();
   const Detection left = left_door(c);

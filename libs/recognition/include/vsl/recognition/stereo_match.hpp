@@ -155,8 +155,10 @@ struct StereoMatchOptions {
     std::vector<double> typical_heights_m;
     double height_sigma_m = 0.0;  // the spread of the class's heights about them, metres
     // A door's width, metres: a fitted door narrower than min_width_m is a strip of a door that
-    // segmentation split off, one wider than max_width_m two doors (also the single views' bound:
-    // a side's correlation peak on another door's edge can move it a metre).
+    // segmentation split off (not tested for a door from one image swept on both sides: at the
+    // grazing angles where the other image's blob is off the class model, one outline measures a
+    // door short), one wider than max_width_m two doors (also the single views' bound: a side's
+    // correlation peak on another door's edge can move it a metre).
     double min_width_m = 0.0;
     double max_width_m = 0.0;
     // With from_one_side: the greatest tilt from vertical (radians) of a cut outline's sides, as
