@@ -244,6 +244,28 @@ TEST_F(OneImageDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsO
   EXPECT_EQ(match({door}, {}).size(), 1u);
 }
 
+TEST_F(OneImageDoorTest, TwoPeaksThatBothMakeADoorPlaceNone) {
+  // A door 1.6 m ahead near the left border, its left side beyond the right image's border at
+  // 1.6 m and at twice that; the right image shows a second edge like its right side 15 px
+  // further right, where the side's sweep peaks at about 3 m. There the door would be 1.8 times
+  // as large, about 0.9 m wide and 1.3 m tall, its centre placed to under 0.25 m: for doors up
+  // to 0.8 m wide only 1.6 m fits; for doors up to 1.5 m both peaks make a door, the outline does
+  // not say which, and none is placed.
+  const Eigen::Vector3d centre(-0.62, 0.3, 1.6);
+  const auto corners = door_corners(centre, 0.2);
+  render(corners);
+  ASSERT_LT(pixels(corners, 1)[0].x(), 0.0);
+  const double edge_px = pixels(corners, 1)[1].x();
+  right_(cv::Rect(static_cast<int>(edge_px) + 9, 0, 6, 480)).setTo(70);
+  const Detection door = outline(corners, 0);
+  options_.border_cut[0].max_width_m = 0.8;
+  const std::vector<StereoPercept> percepts = match({door}, {});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
+  options_.border_cut[0].max_width_m = 1.5;
+  EXPECT_TRUE(match({door}, {}).empty());
+}
+
 TEST_F(OneImageDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
   // A door in the middle of both images; in the right image a neighbour of the door's colour
   // continues past its right side, with no reveal between them (segmentation merged the two
