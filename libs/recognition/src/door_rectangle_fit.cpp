@@ -1,14 +1,13 @@
 #include "door_rectangle_fit.hpp"
 
-#include <ceres/ceres.h>
-
 #include <opencv2/core.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
 #include <string>
+
+#include "small_fit.hpp"
 
 namespace vsl::recognition::detail {
 namespace {
@@ -53,6 +52,30 @@ struct EdgeResidual {
     const Eigen::Matrix<T, 2, 1> p = project(*camera, x);
     residual[0] =
         T(normal.x()) * (p.x() - T(edge_px.x())) + T(normal.y()) * (p.y() - T(edge_px.y()));
+    return true;
+  }
+};
+
+// All edge residuals of one round, each through the Huber transform (door_rectangle_fit.hpp):
+// r' = r within delta, sign(r) sqrt(2 delta |r| - delta^2) beyond.
+struct HuberEdgeCost {
+  const std::vector<EdgeResidual>* edges;
+  double delta_px;
+
+  int NumResiduals() const { return static_cast<int>(edges->size()); }
+  template <class T>
+  bool operator()(const T* theta, T* residuals) const {
+    using std::abs;
+    using std::sqrt;
+    for (std::size_t i = 0; i < edges->size(); ++i) {
+      T r;
+      if (!(*edges)[i](theta, &r)) return false;
+      const T magnitude = abs(r);
+      residuals[i] = magnitude <= T(delta_px)
+                         ? r
+                         : (r < T(0) ? T(-1) : T(1)) *
+                               sqrt(T(2.0 * delta_px) * magnitude - T(delta_px * delta_px));
+    }
     return true;
   }
 };
@@ -248,29 +271,6 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontal_basis(const Eigen::Vector
   return {e1, up.cross(e1)};
 }
 
-// (J^T J)^-1 of the solved problem at its parameters (loss applied), or nullopt when singular.
-std::optional<Eigen::Matrix<double, 6, 6>> inverse_information(ceres::Problem& problem) {
-  ceres::CRSMatrix jacobian;
-  ceres::Problem::EvaluateOptions evaluate;
-  evaluate.apply_loss_function = true;
-  if (!problem.Evaluate(evaluate, nullptr, nullptr, nullptr, &jacobian)) return std::nullopt;
-  Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
-  for (int row = 0; row < jacobian.num_rows; ++row) {
-    Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
-    for (int i = jacobian.rows[static_cast<std::size_t>(row)];
-         i < jacobian.rows[static_cast<std::size_t>(row) + 1]; ++i) {
-      g(jacobian.cols[static_cast<std::size_t>(i)]) = jacobian.values[static_cast<std::size_t>(i)];
-    }
-    information += g * g.transpose();
-  }
-  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(information);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      ldlt.vectorD().minCoeff() <= 1e-9 * ldlt.vectorD().maxCoeff()) {
-    return std::nullopt;
-  }
-  return ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
-}
-
 DoorRectangle rectangle_from_ends(const std::array<Eigen::Vector3d, 4>& ends,
                                   const Eigen::Vector3d& up_in_left) {
   const Eigen::Vector3d up = up_in_left.normalized();
@@ -303,52 +303,38 @@ std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
   const auto [e1, e2] = horizontal_basis(up);
   double theta[6] = {initial.centre_m.x(), initial.centre_m.y(), initial.centre_m.z(),
                      initial.yaw_rad,      initial.width_m,      initial.height_m};
-  ceres::Solver::Options solver;
-  solver.linear_solver_type = ceres::DENSE_QR;  // 6 parameters, a few dozen residuals
-  solver.num_threads = 1;
-  solver.max_num_iterations = 20;
-  solver.logging_type = ceres::SILENT;
-  ceres::HuberLoss huber(options.huber_px);
-  ceres::Problem::Options problem_options;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-
   SearchResult search;
-  std::unique_ptr<ceres::Problem> problem;
+  std::vector<EdgeResidual> edges;
+  std::optional<SmallFit> solved;
   for (const double radius : options.search_radii_px) {
     search = search_edges(theta, e1, e2, up, cameras, radius, options);
     if (search.measurements.size() < 6) return std::nullopt;
-    problem = std::make_unique<ceres::Problem>(problem_options);
+    edges.clear();
     for (const Measurement& m : search.measurements) {
-      problem->AddResidualBlock(
-          new ceres::AutoDiffCostFunction<EdgeResidual, 1, 6>(
-              new EdgeResidual{&cameras[static_cast<std::size_t>(m.camera)], e1, e2, up,
-                               m.alpha_beta, m.normal, m.edge_px}),
-          &huber, theta);
+      edges.push_back({&cameras[static_cast<std::size_t>(m.camera)], e1, e2, up, m.alpha_beta,
+                       m.normal, m.edge_px});
     }
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver, problem.get(), &summary);
-    if (!summary.IsSolutionUsable() || theta[4] <= 0.0 || theta[5] <= 0.0) return std::nullopt;
+    const HuberEdgeCost cost{&edges, options.huber_px};
+    const Eigen::Matrix<double, 6, 1> start = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(theta);
+    solved = solve_small(cost, start, 20);
+    if (!solved) return std::nullopt;
+    std::copy(solved->x.data(), solved->x.data() + 6, theta);
+    if (theta[4] <= 0.0 || theta[5] <= 0.0) return std::nullopt;
   }
+  if (!solved) return std::nullopt;  // no search radius
   DoorFit fit;
   fit.rectangle = {Eigen::Vector3d(theta[0], theta[1], theta[2]), theta[3], theta[4], theta[5]};
   fit.seen_fraction = search.seen;
   fit.cut_fraction = search.cut;
   double sum_squares = 0.0;
-  for (const Measurement& m : search.measurements) {
-    const EdgeResidual residual{&cameras[static_cast<std::size_t>(m.camera)],
-                                e1,
-                                e2,
-                                up,
-                                m.alpha_beta,
-                                m.normal,
-                                m.edge_px};
+  for (const EdgeResidual& edge : edges) {
     double r = 0.0;
-    if (!residual(theta, &r)) return std::nullopt;
+    if (!edge(theta, &r)) return std::nullopt;
     sum_squares += r * r;
   }
   fit.rms_px = std::sqrt(sum_squares / static_cast<double>(search.measurements.size()));
   // Singular when a side is not seen at all: the rectangle is not determined along it.
-  const auto inverse = inverse_information(*problem);
+  const std::optional<Eigen::Matrix<double, 6, 6>>& inverse = solved->inverse_information;
   if (inverse) {
     const double s = std::max(options.pixel_sigma_px, fit.rms_px);
     fit.centre_covariance_m2 = s * s * options.samples_per_side * inverse->topLeftCorner<3, 3>();

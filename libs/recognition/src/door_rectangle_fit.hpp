@@ -16,14 +16,17 @@
 // the residual is the normal distance
 //   r = n . (pi_k(X(theta)) - m)                                              (pixels),
 // and the fit minimizes sum rho(r^2) over both images with a Huber rho (an inner panel's edge or a
-// neighbour's found instead is down-weighted, not followed). Search and solve alternate with a
+// neighbour's found instead is down-weighted, not followed): rho(s) = s for |r| <= delta, else
+// 2 delta |r| - delta^2, which is the plain least squares of r' = r, resp.
+// sign(r) sqrt(2 delta |r| - delta^2) (continuous with its derivative at |r| = delta), solved as
+// the other fits of six parameters are (small_fit.hpp). Search and solve alternate with a
 // shrinking radius. A sample is, per image, seen (an edge found), cut (projected outside the
 // image) or hidden (inside, no edge: an occluder, or a face the same shade as its background).
 // The cut, corner, occluded and one-sided cases are these states, not separate code paths: a
 // side none of whose images sees it enough leaves the rectangle unknown along it, and the fit is
 // refused.
 //
-// Uncertainty. At the solution, Sigma_theta = s^2 (J^T J)^-1 with J the residuals' Jacobian and
+// Uncertainty. At the solution, Sigma_theta = s^2 (J^T J)^-1 with J the Jacobian of the r' and
 // s the residuals' RMS (at least pixel_sigma_px). The samples along one side share its edge's
 // systematic error (a shading gradient, the stile's bevel), so they are not independent
 // measurements: the covariance is multiplied by the samples per side, as if each side in each
@@ -45,9 +48,6 @@
 
 namespace cv {
 class Mat;
-}
-namespace ceres {
-class Problem;
 }
 
 namespace vsl::recognition::detail {
@@ -123,10 +123,6 @@ Eigen::Matrix<T, 3, 1> model_point(const T* theta, const Eigen::Vector3d& e1,
   return c + a * (T(0.5 * alpha_beta.x()) * theta[4]) +
          up.cast<T>() * (T(0.5 * alpha_beta.y()) * theta[5]);
 }
-
-// (J^T J)^-1 of a solved problem over the six parameters theta (loss applied), or nullopt when
-// singular (a direction of theta no residual measures). Also partly_seen_door.cpp.
-std::optional<Eigen::Matrix<double, 6, 6>> inverse_information(ceres::Problem& problem);
 
 // Fits the rectangle from `initial`; nullopt when the problem is degenerate (the rectangle behind
 // a camera, no edge found). `up_in_left`: the world's vertical in the left camera frame.

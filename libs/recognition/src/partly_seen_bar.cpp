@@ -223,10 +223,10 @@ std::optional<Solution> solve(const Theta& start, const std::vector<EndResidual>
   }
   const std::optional<SmallFit> fit =
       solve_small(cost, Eigen::Map<const Eigen::Matrix<double, 6, 1>>(start.data()), 20);
-  if (!fit) return std::nullopt;
+  if (!fit || !fit->inverse_information) return std::nullopt;
   Solution out;
   std::copy(fit->x.data(), fit->x.data() + 6, out.theta.begin());
-  out.inverse = fit->inverse_information;
+  out.inverse = *fit->inverse_information;
   out.cost = 0.5 * fit->residuals.squaredNorm();
   double chi2 = 0.0;
   int count = 2 + (length_prior ? 1 : 0);  // the priors' independent residuals, about zero there

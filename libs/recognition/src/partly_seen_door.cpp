@@ -413,7 +413,9 @@ std::optional<Matrix6d> solve(Theta& theta, const std::vector<CornerResidual>& r
   }
   const std::optional<SmallFit> fit =
       solve_small(cost, Eigen::Map<const Eigen::Matrix<double, 6, 1>>(theta.data()), 30);
-  if (!fit || !(fit->x[4] > 0.0) || !(fit->x[5] > 0.0)) return std::nullopt;
+  if (!fit || !fit->inverse_information || !(fit->x[4] > 0.0) || !(fit->x[5] > 0.0)) {
+    return std::nullopt;
+  }
   std::copy(fit->x.data(), fit->x.data() + 6, theta.begin());
   return fit->inverse_information;
 }

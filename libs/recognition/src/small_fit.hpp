@@ -1,5 +1,6 @@
 // A least-squares fit of six parameters to a few dozen residuals, as the fits of partly seen
-// objects solve it (partly_seen_door.cpp, partly_seen_bar.cpp): Ceres' TinySolver (dense
+// objects and the learned recognizer's door fit solve it (partly_seen_door.cpp,
+// partly_seen_bar.cpp, door_rectangle_fit.cpp): Ceres' TinySolver (dense
 // Levenberg-Marquardt on one functor of all residuals, without the general solver's set-up per
 // problem), and the inverse information matrix (J^T J)^-1 at the solution for the covariance.
 // Internal to vsl_recognition.
@@ -18,12 +19,13 @@ namespace vsl::recognition::detail {
 struct SmallFit {
   Eigen::Matrix<double, 6, 1> x;
   Eigen::VectorXd residuals;
-  Eigen::Matrix<double, 6, 6> inverse_information;  // (J^T J)^-1 at x
+  // (J^T J)^-1 at x; nullopt where J^T J is singular (a direction of x no residual measures).
+  std::optional<Eigen::Matrix<double, 6, 6>> inverse_information;
 };
 
 // Minimizes the squared residuals of `cost` from `start`: Cost has NumResiduals() and a templated
-// bool operator()(const T* x, T* residuals). nullopt when the functor fails at the solution or
-// J^T J is singular there (a direction of x that no residual measures).
+// bool operator()(const T* x, T* residuals). nullopt when the solution is not finite or the functor
+// fails there.
 template <class Cost>
 std::optional<SmallFit> solve_small(const Cost& cost, const Eigen::Matrix<double, 6, 1>& start,
                                     int max_iterations) {
@@ -41,11 +43,10 @@ std::optional<SmallFit> solve_small(const Cost& cost, const Eigen::Matrix<double
   }
   const Eigen::Matrix<double, 6, 6> information = jacobian.transpose() * jacobian;
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(information);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      ldlt.vectorD().minCoeff() <= 1e-9 * ldlt.vectorD().maxCoeff()) {
-    return std::nullopt;
+  if (ldlt.info() == Eigen::Success && ldlt.isPositive() &&
+      ldlt.vectorD().minCoeff() > 1e-9 * ldlt.vectorD().maxCoeff()) {
+    fit.inverse_information = ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
   }
-  fit.inverse_information = ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
   return fit;
 }
 
