@@ -291,5 +291,26 @@ TEST_F(OneImageDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
   EXPECT_TRUE(match({door}, {}).empty());
 }
 
+TEST_F(OneImageDoorTest, FromTheRightImageMergedWithItsNeighbourInTheLeftImage) {
+  // The same, the other way round: the outline is the right image's, and in the left image the
+  // neighbour continues past the door's left side (a right outline's inner side). Swept from its
+  // right side, with its left side placed by the fit where the left image shows no edge, it is
+  // placed; without merged_side it is not.
+  const Eigen::Vector3d centre(-0.3, 0.55, 2.3);
+  const auto corners = door_corners(centre, 0.2);
+  options_.border_cut[0].merged_side = true;
+  render(corners);
+  const auto left_px = pixels(corners, 0);
+  const int side_u = static_cast<int>(std::lround(0.5 * (left_px[0].x() + left_px[3].x())));
+  left_(cv::Rect(side_u - 58, 0, 60, 480)).setTo(70);
+  const Detection door = outline(corners, 1);
+  const std::vector<StereoPercept> percepts = match({}, {door});
+  ASSERT_EQ(percepts.size(), 1u);
+  EXPECT_EQ(percepts[0].right_detection, 0);
+  EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
+  options_.border_cut[0].merged_side = false;
+  EXPECT_TRUE(match({}, {door}).empty());
+}
+
 }  // namespace
 }  // namespace vsl::recognition
