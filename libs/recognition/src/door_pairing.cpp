@@ -9,6 +9,13 @@
 namespace vsl::recognition::detail {
 namespace {
 
+// Whether an outline corner's raw pixel lies outside the image (an extrapolation of its sides:
+// hidden rather than seen).
+bool beyond_image(const Eigen::Vector2d& raw_px, const head::CameraIntrinsics& camera) {
+  return raw_px.x() < -0.5 - 1e-6 || raw_px.y() < -0.5 - 1e-6 ||
+         raw_px.x() > camera.width_px - 0.5 + 1e-6 || raw_px.y() > camera.height_px - 0.5 + 1e-6;
+}
+
 // The cut an image shows of a door that the other image shows cut by `cut`, less its left
 // (`left_border`) or right border: the right camera sees less beyond its left border, the left
 // camera less beyond its right one.

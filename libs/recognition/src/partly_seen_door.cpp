@@ -555,11 +555,6 @@ double variance_factor(const std::vector<CornerResidual>& residuals, const Theta
 
 }  // namespace
 
-bool beyond_image(const Eigen::Vector2d& raw_px, const head::CameraIntrinsics& camera) {
-  return raw_px.x() < -0.5 - 1e-6 || raw_px.y() < -0.5 - 1e-6 ||
-         raw_px.x() > camera.width_px - 0.5 + 1e-6 || raw_px.y() > camera.height_px - 0.5 + 1e-6;
-}
-
 std::array<CornerState, 4> corner_states_of(BorderCut cut) {
   const auto any = [cut](auto... cuts) { return ((cut == cuts) || ...); };
   const bool top = any(BorderCut::kTop, BorderCut::kTopLeft, BorderCut::kTopRight);

@@ -70,7 +70,6 @@
 #include "rig_camera.hpp"
 #include "stereo_assignment.hpp"
 #include "triangulation.hpp"
-#include "vsl/head/camera_intrinsics.hpp"
 #include "vsl/recognition/detection.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -99,10 +98,6 @@ struct DoorOutlineView {
 // column the left or right border cuts where its edge does (on edge), one both cut the image's
 // own corner (hidden).
 std::array<CornerState, 4> corner_states_of(BorderCut cut);
-
-// Whether an outline corner's raw pixel lies outside the image (an extrapolation of its sides:
-// hidden rather than seen).
-bool beyond_image(const Eigen::Vector2d& raw_px, const head::CameraIntrinsics& camera);
 
 // What a fit must meet beyond the class: every corner within `tolerance_px` of the model (ideal
 // pixels), and an outline whose lower edge is level on the face at least `min_visible_if_level_m`
