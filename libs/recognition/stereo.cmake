@@ -7,7 +7,6 @@ list(APPEND VSL_RECOGNITION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/one_image_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/partly_seen_door.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/bars_on_outline.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/twin_handle_split.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/partly_seen_bar.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pair.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/door_pairing.cpp
@@ -27,7 +26,6 @@ list(APPEND VSL_RECOGNITION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/border_cut_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/occluder_cut_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_cut_door_test.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/test/twin_handle_split_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/one_image_door_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/side_correlation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/frame_recognizer_test.cpp)

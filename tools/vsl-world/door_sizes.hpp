@@ -1,5 +1,5 @@
 // The sizes of a world's objects of one type (doors) as the recognizer's class entry wants them
-// (StereoMatchOptions::BorderCutDoor, config/recognition.yaml border_cut): the prior of the door
+// (StereoMatchOptions::DoorClass, config/recognition.yaml door_classes): the prior of the door
 // fit for what neither image shows (docs/recognition.md).
 #pragma once
 
@@ -31,7 +31,7 @@ struct ClassSizes {
 // The sizes of `type`'s objects that have one; `objects` 0 when none has.
 ClassSizes class_sizes(const world::WorldModel& world, const std::string& type);
 
-// A comment line with the counts and the border_cut entry's size keys, YAML.
+// A comment line with the counts and the door_classes entry's size keys, YAML.
 void print_class_sizes(const ClassSizes& sizes, const std::string& world_name, std::ostream& out);
 
 }  // namespace vsl::world_tool

@@ -14,8 +14,7 @@
 // corners (partly_seen_door.hpp, a hidden corner). BM_OccluderCutDoor: a pair of door outlines
 // whose lower part the table's top hides in both images, placed with their lower corners on the
 // sides (partly_seen_door.hpp). BM_SideCutDoor: a pair of door outlines cut by the left border,
-// placed from their whole side and the typical width (partly_seen_door.hpp). BM_TwinHandleSplit: 20
-// door outlines each split between a double door's two handles (twin_handle_split.hpp).
+// placed from their whole side and the typical width (partly_seen_door.hpp).
 // BM_WholeDoorPair: a pair of whole door outlines placed by the door's fit, both sides correlated.
 // BM_BarPair: a handle placed by the fit of a 3D segment (partly_seen_bar.hpp), whole (arg 0) or
 // cut by the top border in both images, its length the class's (arg 1). No main
@@ -35,7 +34,6 @@
 #include <opencv2/core.hpp>
 
 #include "../src/side_correlation.hpp"
-#include "../src/twin_handle_split.hpp"
 #include "support/cut_door.hpp"
 #include "vsl/head/stereo_calibration.hpp"
 #include "vsl/recognition/stereo_match.hpp"
@@ -150,7 +148,7 @@ void BM_SingleViewDoor(benchmark::State& state) {
   options.min_side_correlation = 0.7;
   options.min_single_view_correlation = 0.7;
   options.max_side_tilt_rad = 0.03;
-  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1)};
+  options.door_classes = {test::cut_door_options({0.716, 1.246})};
   Detection outline = test::top_cut_door_outline(160.0);
   outline.border_cut = BorderCut::kNone;
   outline.corners_px = {{159.5, 139.5}, {299.5, 139.5}, {299.5, 339.5}, {159.5, 339.5}};
@@ -166,7 +164,7 @@ void BM_WholeDoorPair(benchmark::State& state) {
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.max_side_tilt_rad = 0.03;
-  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1)};
+  options.door_classes = {test::cut_door_options({0.716, 1.246})};
   const auto outline = [](double u) {
     Detection d = test::top_cut_door_outline(u);
     d.border_cut = BorderCut::kNone;
@@ -182,7 +180,7 @@ void BM_BorderCutPair(benchmark::State& state) {
   const DarkDoorScene scene(0);
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
-  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1)};
+  options.door_classes = {test::cut_door_options({0.716, 1.246})};
   scene.run(state, {test::top_cut_door_outline(160.0)}, {test::top_cut_door_outline(135.0)},
             options);
 }
@@ -193,8 +191,8 @@ void BM_OneSideDoor(benchmark::State& state) {
   StereoMatchOptions options;
   options.min_side_correlation = 0.7;
   options.min_single_view_correlation = 0.7;
-  options.single_view_min_peak_margin = 0.2;
-  options.border_cut = {test::cut_door_options({0.716, 1.246}, 0.1, true)};
+  options.min_peak_margin = 0.2;
+  options.door_classes = {test::cut_door_options({0.716, 1.246})};
   scene.run(state, {test::top_cut_door_outline(160.0)}, {}, options);
 }
 BENCHMARK(BM_OneSideDoor)->Unit(benchmark::kMicrosecond);
@@ -251,11 +249,10 @@ void BM_OccludedCornerDoor(benchmark::State& state) {
   StereoMatchOptions options;
   options.max_side_tilt_rad = 0.03;
   options.height_range_m = {{"door", 0.5, 2.5}};
-  StereoMatchOptions::BorderCutDoor door{.type = "door", .typical_heights_m = {0.716, 1.246}};
+  StereoMatchOptions::DoorClass door{.type = "door", .typical_heights_m = {0.716, 1.246}};
   door.min_width_m = 0.3;
   door.max_width_m = 1.0;
-  door.occluded_corner = true;
-  options.border_cut = {door};
+  options.door_classes = {door};
   match_one_pair(state, left, right, calibration, options, -down, "the occluded door");
 }
 BENCHMARK(BM_OccludedCornerDoor)->Unit(benchmark::kMicrosecond);
@@ -295,10 +292,9 @@ void BM_OccluderCutDoor(benchmark::State& state) {
   options.bar_types = {"handle"};
   options.max_side_tilt_rad = 0.03;
   options.height_range_m = {{"door", 0.5, 2.5}};
-  StereoMatchOptions::BorderCutDoor door = test::cut_door_options({0.716}, 0.0);
-  door.occluder_cut = true;
+  StereoMatchOptions::DoorClass door = test::cut_door_options({0.716});
   door.occluder_cut_min_level_visible_m = 0.4;
-  options.border_cut = {door};
+  options.door_classes = {door};
   match_one_pair(state, left, right, calibration, options, -down, "the occluded door");
 }
 BENCHMARK(BM_OccluderCutDoor)->Unit(benchmark::kMicrosecond);
@@ -339,44 +335,13 @@ void BM_SideCutDoor(benchmark::State& state) {
   StereoMatchOptions options;
   options.max_side_tilt_rad = 0.03;
   options.height_range_m = {{"door", 0.5, 2.5}};
-  StereoMatchOptions::BorderCutDoor door = test::cut_door_options({0.716}, 0.0);
+  StereoMatchOptions::DoorClass door = test::cut_door_options({0.716});
   door.typical_width_m = 0.5;
   door.width_sigma_m = 0.1;
-  options.border_cut = {door};
+  options.door_classes = {door};
   match_one_pair(state, left, right, calibration, options, -down, "the side-cut door");
 }
 BENCHMARK(BM_SideCutDoor)->Unit(benchmark::kMicrosecond);
-
-void BM_TwinHandleSplit(benchmark::State& state) {
-  // 20 door outlines (a busy view), each with a double door's two handles, among 40 handles.
-  std::vector<Detection> detections;
-  for (int k = 0; k < 20; ++k) {
-    const double u = 30.0 * k;
-    Detection door;
-    door.type = "door";
-    door.corners_px = {{u, 50.0}, {u + 28.0, 55.0}, {u + 28.0, 245.0}, {u, 250.0}};
-    door.area_px = 5000.0;
-    detections.push_back(door);
-    for (const double du : {12.0, 16.0}) {
-      Detection handle;
-      handle.type = "handle";
-      handle.reference_px = {u + du, 120.0};
-      detections.push_back(handle);
-    }
-  }
-  StereoMatchOptions options;
-  options.bar_types = {"handle"};
-  options.max_twin_handle_gap = 0.15;
-  std::size_t after = 0;
-  for (auto _ : state) {
-    std::vector<Detection> split = detections;
-    detail::split_at_twin_handles(split, options);
-    after = split.size();
-    benchmark::DoNotOptimize(after);
-  }
-  if (after != detections.size() + 20) state.SkipWithError("the outlines were not split");
-}
-BENCHMARK(BM_TwinHandleSplit)->Unit(benchmark::kMicrosecond);
 
 void BM_BarPair(benchmark::State& state) {
   const bool cut_at_top = state.range(0) == 1;

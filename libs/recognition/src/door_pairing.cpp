@@ -48,8 +48,8 @@ bool may_be_occluder_cut(const StereoPairTrace& refusal) {
 // around the outlines' depth (side_correlation.hpp): one image's outline often lacks a stile that
 // the other keeps. The right view's corners on that side become where the right camera sees the
 // side so placed. A side that does not correlate, or not unambiguously (a run of equal doors
-// repeats every edge: BorderCutDoor::min_peak_margin), keeps the right outline's.
-void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDoor& door,
+// repeats every edge: StereoMatchOptions::min_peak_margin), keeps the right outline's.
+void correlate_sides(const StereoViews& v, const StereoMatchOptions::DoorClass& door,
                      std::array<DoorOutlineView, 2>& views) {
   const auto on_side = [](CornerState s) {
     return s == CornerState::kSeen || s == CornerState::kOnSide;
@@ -75,7 +75,7 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::BorderCutDo
     const auto depth = v.correlator->correlate(left[top], left[bottom], initial_m, search_px,
                                                v.options.min_depth_m, v.options.max_depth_m);
     if (!depth || depth->correlation < v.options.min_side_correlation ||
-        depth->second_correlation > depth->correlation - door.min_peak_margin) {
+        depth->second_correlation > depth->correlation - v.options.min_peak_margin) {
       continue;
     }
     const auto top_at = v.correlator->point_at(left[top], depth->horizontal_distance_m);
@@ -141,7 +141,7 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
                                     const std::array<CornerState, 4>& right, StereoPairTrace& trace,
                                     Explanation explanation) {
   const StereoMatchOptions& options = v.options;
-  const StereoMatchOptions::BorderCutDoor& door = *border_cut_door(options, v.left[l].type);
+  const StereoMatchOptions::DoorClass& door = *door_class_of(options, v.left[l].type);
   std::array<DoorOutlineView, 2> views{DoorOutlineView{corner_array(v.left_corners[l]), left},
                                        DoorOutlineView{corner_array(v.right_corners[r]), right}};
   for (std::size_t k = 0; k < 2; ++k) {
@@ -190,12 +190,11 @@ namespace {
 // one the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
 // unless the pair is so placed.
 std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
-                                             const StereoMatchOptions::BorderCutDoor& door,
                                              StereoPairTrace& trace) {
   StereoPairTrace retry = trace;
   retry.refused_by = StereoGate::kNone;
   retry.value = retry.limit = 0.0;
-  if (door.occluder_cut && may_be_occluder_cut(trace)) {
+  if (may_be_occluder_cut(trace)) {
     constexpr std::array<CornerState, 4> kLowerOnSides{CornerState::kSeen, CornerState::kSeen,
                                                        CornerState::kOnSide, CornerState::kOnSide};
     StereoPairTrace t = retry;
@@ -208,7 +207,7 @@ std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
   const bool position_or_side = trace.refused_by == StereoGate::kEpipolar ||
                                 trace.refused_by == StereoGate::kSideTilt ||
                                 trace.refused_by == StereoGate::kRectangleFit;
-  if (!door.occluded_corner || !position_or_side ||
+  if (!position_or_side ||
       v.judge_bars(v.left[l], v.right[r], v.options.single_view_max_bars_inside).gate !=
           StereoGate::kNone) {
     return std::nullopt;
@@ -257,7 +256,7 @@ std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
 bool door_pair_is_judged(const StereoViews& v, int l, int r) {
   const BorderCut cl = v.left[l].border_cut, cr = v.right[r].border_cut;
   if (cl == BorderCut::kNone && cr == BorderCut::kNone) return true;
-  return cuts_of_one_door(cl, cr) && border_cut_door(v.options, v.left[l].type) != nullptr &&
+  return cuts_of_one_door(cl, cr) && door_class_of(v.options, v.left[l].type) != nullptr &&
          v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
 }
 
@@ -276,9 +275,7 @@ void explain_unpaired_by_occluder(const StereoViews& v, std::vector<StereoPairTr
         right_taken[static_cast<std::size_t>(t.right_detection)]) {
       continue;
     }
-    const StereoMatchOptions::BorderCutDoor& door =
-        *border_cut_door(v.options, v.left[t.left_detection].type);
-    if (auto c = explain_by_occluder(v, t.left_detection, t.right_detection, door, t)) {
+    if (auto c = explain_by_occluder(v, t.left_detection, t.right_detection, t)) {
       explained.push_back(std::move(*c));
       explained_traces.push_back(t);
     }

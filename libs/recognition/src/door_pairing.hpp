@@ -29,7 +29,7 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
                                     Explanation explanation = Explanation::kBorder);
 
 // Whether a pair of door views is judged at all: whole views always; cut ones when their class
-// has a size prior (border_cut), both have four corners, the up direction is known, and the cuts
+// has a size prior (door_classes), both have four corners, the up direction is known, and the cuts
 // can be of one door (cuts_of_one_door).
 bool door_pair_is_judged(const StereoViews& v, int l, int r);
 

@@ -12,7 +12,6 @@
 #include <utility>
 
 #include "frame_capture.hpp"
-#include "twin_handle_split.hpp"
 
 namespace vsl::recognition {
 using detail::Clock;
@@ -47,9 +46,6 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
     recognizer->recognize(left_bgr, result.left_blobs, result.left_detections);
     recognizer->recognize(right_bgr, result.right_blobs, result.right_detections);
   }
-  // Double doors merged into one outline, split between their handles (twin_handle_split.hpp).
-  detail::split_at_twin_handles(result.left_detections, options_.stereo);
-  detail::split_at_twin_handles(result.right_detections, options_.stereo);
   const Clock::time_point classified = Clock::now();
 
   // Grey images only for the gates that look at them (door sides correlated, single-view

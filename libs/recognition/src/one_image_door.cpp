@@ -92,7 +92,7 @@ bool sides_vertical(const OwnView& o, double max_tilt_rad) {
 }
 
 // A side's peaks over the whole depth range: the best, and when the second-best is within
-// single_view_min_peak_margin (a run of equal doors repeats every edge), that one too, refined a
+// min_peak_margin (a run of equal doors repeats every edge), that one too, refined a
 // pixel either way. Empty when the best scores under min_single_view_correlation.
 SidePeaks side_peaks(const OwnView& o, std::size_t side, const StereoMatchOptions& options) {
   const auto [top, bottom] = kSides[side];
@@ -103,7 +103,7 @@ SidePeaks side_peaks(const OwnView& o, std::size_t side, const StereoMatchOption
   SidePeaks peaks{{depth->horizontal_distance_m, depth->correlation}};
   // (second_correlation is -1 when there is no second peak, whatever the margin.)
   if (depth->second_correlation > -1.0 &&
-      depth->correlation - depth->second_correlation < options.single_view_min_peak_margin) {
+      depth->correlation - depth->second_correlation < options.min_peak_margin) {
     const auto second =
         o.sweep.correlate(o.corners[top], o.corners[bottom], depth->second_distance_m, 1.0,
                           options.min_depth_m, options.max_depth_m);
@@ -227,8 +227,8 @@ struct Placed {
 };
 std::optional<Placed> place_among_peaks(const StereoViews& v, const OwnView& o, int index,
                                         const Detection& detection,
-                                        const StereoMatchOptions::BorderCutDoor& door,
-                                        SweptSides sides, const std::array<bool, 2>& swept,
+                                        const StereoMatchOptions::DoorClass& door, SweptSides sides,
+                                        const std::array<bool, 2>& swept,
                                         const std::array<SidePeaks, 2>& peaks) {
   const StereoMatchOptions& options = v.options;
   const PartlySeenLimits limits = limits_of(sides, detection.height_px, options);
@@ -265,7 +265,7 @@ std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int imag
   const Detection& detection = (image == 0 ? v.left : v.right)[static_cast<std::size_t>(index)];
   const auto& corners =
       (image == 0 ? v.left_corners : v.right_corners)[static_cast<std::size_t>(index)];
-  const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, detection.type);
+  const StereoMatchOptions::DoorClass* door = door_class_of(options, detection.type);
   const std::optional<SideCorrelator>& sweep = image == 0 ? v.correlator : v.reverse_correlator;
   const BorderCut cut = detection.border_cut;
   const bool cut_allowed =
@@ -292,10 +292,7 @@ std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int imag
                   left_T_own.linear().transpose() * v.rig.up,
                   v.rig.up,
                   cameras[static_cast<std::size_t>(1 - image)]};
-  if (!sides_vertical(
-          o, cut == BorderCut::kNone ? options.max_side_tilt_rad : door->max_side_tilt_rad)) {
-    return std::nullopt;
-  }
+  if (!sides_vertical(o, options.max_side_tilt_rad)) return std::nullopt;
   // The inner side is the right one of a left outline, the left one of a right outline.
   const std::size_t inner = image == 0 ? kRightSide : kLeftSide;
   std::array<bool, 2> swept{true, true};

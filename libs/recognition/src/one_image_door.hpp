@@ -19,9 +19,9 @@
 //   kInner   the side the other image shows even near its border (the right side of a left
 //            outline, the left side of a right one): whole outlines or outlines cut by the top or
 //            bottom border whose other side the other image cannot show, or shows at one of two
-//            peaks of a repeated edge (BorderCutDoor::from_one_side);
-//   kOuter   the other side of a whole outline, the inner one placed (BorderCutDoor::merged_side).
-// A side whose sweep peaks twice within single_view_min_peak_margin gives both peaks (the second
+//            peaks of a repeated edge;
+//   kOuter   the other side of a whole outline, the inner one placed.
+// A side whose sweep peaks twice within min_peak_margin gives both peaks (the second
 // refined a pixel either way); exactly one combination of the sides' peaks must make a door, each
 // of its peaks scoring min_single_view_correlation. Internal to vsl_recognition.
 #pragma once
@@ -39,7 +39,7 @@ enum class SweptSides { kBoth, kInner, kOuter };
 // the fit's centre (left camera frame, `reference_depth_offset_m` of its type behind the face
 // along the ray) and covariance, the other image's pixel the centre's projection, and the
 // confidence the detection's times the lowest swept side's score. nullopt unless the door is
-// placed, its type has a door class (StereoMatchOptions::border_cut), the up direction is known
+// placed, its type has a door class (StereoMatchOptions::door_classes), the up direction is known
 // and the images could be correlated.
 std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int image, int index,
                                                   SweptSides sides);

@@ -271,7 +271,7 @@ struct Start {
 std::optional<Start> start_of(const std::array<DoorOutlineView, 2>& views,
                               const std::array<RigCamera, 2>& cameras, const Basis& basis,
                               const Triangulator& triangulator, const Measured& measured,
-                              const StereoMatchOptions::BorderCutDoor& door) {
+                              const StereoMatchOptions::DoorClass& door) {
   const std::optional<Face> face = start_face(views, cameras, triangulator, basis.up);
   if (!face) return std::nullopt;
   const Eigen::Vector3d normal = face->a.cross(basis.up);
@@ -355,8 +355,7 @@ struct SizePriors {
 
 // What the class says of a size the views do not give: at least half of it in view, and no more
 // than the class's greatest.
-std::optional<Refusal> prior_refusal(const Start& start,
-                                     const StereoMatchOptions::BorderCutDoor& door,
+std::optional<Refusal> prior_refusal(const Start& start, const StereoMatchOptions::DoorClass& door,
                                      const SizePriors& priors) {
   using enum StereoGate;
   const std::vector<double>& heights = door.typical_heights_m;
@@ -401,7 +400,7 @@ std::vector<CornerResidual> corner_residuals(const std::array<DoorOutlineView, 2
 // the visible one does not exceed by more than kMaxVisibleOfTypical, else the greatest.
 std::optional<Matrix6d> solve(Theta& theta, const std::vector<CornerResidual>& residuals,
                               const SizePriors& priors, const Start& start,
-                              const StereoMatchOptions::BorderCutDoor& door) {
+                              const StereoMatchOptions::DoorClass& door) {
   DoorCost cost{&residuals, std::nullopt, std::nullopt};
   if (priors.width) {
     cost.width =
@@ -489,7 +488,7 @@ std::optional<Refusal> fit_refusal(const std::array<DoorOutlineView, 2>& views,
                                    const Theta& theta, const SizePriors& priors,
                                    const Matrix6d& inverse, const Residual& worst,
                                    const StereoMatchOptions& options,
-                                   const StereoMatchOptions::BorderCutDoor& door,
+                                   const StereoMatchOptions::DoorClass& door,
                                    const PartlySeenLimits& limits) {
   using enum StereoGate;
   if (!(worst.px <= worst.tolerance_px)) {
@@ -576,7 +575,7 @@ std::array<CornerState, 4> corner_states_of(BorderCut cut) {
 std::optional<Candidate> judge_partly_seen_door(
     int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,
-    const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
+    const StereoMatchOptions::DoorClass& door, double reference_offset_m,
     const PartlySeenLimits& limits, StereoPairTrace& trace, FittedDoor* fitted) {
   using enum StereoGate;
   const auto refuse_by = [&](const Refusal& refusal) {

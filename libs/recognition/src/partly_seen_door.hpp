@@ -32,7 +32,7 @@
 // A side of the rectangle is measured when, in either image, a corner on it is seen (a vertical
 // side's in the right image too) or lies on it (on side for the vertical sides, on edge for the
 // top and bottom edges). Each dimension needs one of its two sides measured; an unmeasured one is
-// the class's (StereoMatchOptions::BorderCutDoor):
+// the class's (StereoMatchOptions::DoorClass):
 //   height   r = (h - h_k) / sigma_h,   h_k the least typical height that the visible height
 //            does not exceed by more than kMaxVisibleOfTypical (at least half the least in view);
 //   width    r = (w - max(w_t, w_v)) / sigma_w,   w_t the typical width, w_v the visible one (at
@@ -130,7 +130,7 @@ struct FittedDoor {
 std::optional<Candidate> judge_partly_seen_door(
     int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,
-    const StereoMatchOptions::BorderCutDoor& door, double reference_offset_m,
+    const StereoMatchOptions::DoorClass& door, double reference_offset_m,
     const PartlySeenLimits& limits, StereoPairTrace& trace, FittedDoor* fitted = nullptr);
 
 }  // namespace vsl::recognition::detail

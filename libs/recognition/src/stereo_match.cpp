@@ -46,9 +46,9 @@ double elongation(const Detection& d) {
                                  : std::numeric_limits<double>::infinity();
 }
 
-using detail::border_cut_door;
 using detail::corner_array;
 using detail::cut_bar_of;
+using detail::door_class_of;
 using detail::Explanation;
 using detail::extent_range;
 using detail::height_range;
@@ -105,8 +105,7 @@ class PairJudge {
   bool gate_position() {
     // A stack of drawer fronts merged into one door-shaped blob carries a handle per front, one
     // above another; judged on each image's outline, also when the other image's blob has none.
-    if (const detail::BarVerdict bars =
-            v_.judge_bars(dl_, dr_, o_.pair_max_bars_inside > 0 ? o_.pair_max_bars_inside : -1);
+    if (const detail::BarVerdict bars = v_.judge_bars(dl_, dr_, -1);
         bars.gate != StereoGate::kNone) {
       detail::refuse(trace_, bars.gate, bars.value, bars.limit);
       return false;
@@ -219,7 +218,7 @@ class PairJudge {
     // The gates below measure the visible surface, before the reference point's offset.
     point_ = triangulation_->left_camera_position_m -
              offset_m_ * triangulation_->left_camera_position_m.normalized();
-    if (rectangles_ && border_cut_door(o_, dl_.type) && v_.up.norm() > 0.0 &&
+    if (rectangles_ && door_class_of(o_, dl_.type) && v_.up.norm() > 0.0 &&
         detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
       return fit_door();
     }
@@ -332,21 +331,15 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
   const bool cut = dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone;
   if (!cut) {
     std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, false).judge();
-    const StereoMatchOptions::BorderCutDoor* door = border_cut_door(options, dl.type);
-    if (!c && door && (door->occluder_cut || door->occluded_corner) &&
-        v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0) {
+    const StereoMatchOptions::DoorClass* door = door_class_of(options, dl.type);
+    if (!c && door && v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 &&
+        v.up.norm() > 0.0) {
       occluded.push_back(trace);
     }
     return c;
   }
-  if (const detail::BarVerdict bars = v.judge_bars(
-          dl, dr, options.pair_max_bars_inside > 0 ? options.pair_max_bars_inside : -1);
-      bars.gate != StereoGate::kNone) {
-    // Several handles inside, or one above another: drawer fronts or doors merged into one
-    // blob. A cut pair is two views, as a whole pair is: a double door's second handle, a few
-    // centimetres past the reveal, may lie inside the outline, and the bound is the pairs' (the
-    // single views' 1 lost 16 true door percepts of the tuning set's cut doors and kept no false
-    // one out).
+  if (const detail::BarVerdict bars = v.judge_bars(dl, dr, -1); bars.gate != StereoGate::kNone) {
+    // Handles one above another: drawer fronts merged into one blob (max_bar_height_spread).
     return detail::refuse(trace, bars.gate, bars.value, bars.limit);
   }
   return judge_door(v, l, r, detail::corner_states_of(dl.border_cut),
@@ -446,9 +439,9 @@ std::optional<StereoPercept> place_from_one_image(const StereoViews& v, int imag
   if (pass == 0) return detail::place_one_image_door(v, image, index, detail::SweptSides::kBoth);
   std::optional<StereoPercept> percept =
       detail::place_one_image_door(v, image, index, detail::SweptSides::kInner);
-  const StereoMatchOptions::BorderCutDoor* door =
-      border_cut_door(v.options, (image == 0 ? v.left : v.right)[d].type);
-  if (!percept && door && door->merged_side) {
+  const StereoMatchOptions::DoorClass* door =
+      door_class_of(v.options, (image == 0 ? v.left : v.right)[d].type);
+  if (!percept && door) {
     percept = detail::place_one_image_door(v, image, index, detail::SweptSides::kOuter);
   }
   return percept;
@@ -475,9 +468,8 @@ void place_single_views(const StereoViews& v, const std::vector<detail::Candidat
       const auto& corners = image == 0 ? v.left_corners : v.right_corners;
       for (std::size_t d = 0; d < detections.size(); ++d) {
         const Detection& detection = detections[d];
-        const StereoMatchOptions::BorderCutDoor* cut_door =
-            border_cut_door(options, detection.type);
-        const bool from_one_side = cut_door && cut_door->from_one_side;
+        const StereoMatchOptions::DoorClass* cut_door = door_class_of(options, detection.type);
+        const bool from_one_side = cut_door != nullptr;
         const bool cut = detection.border_cut != BorderCut::kNone;
         if (paired[static_cast<std::size_t>(image)][d] || detection.needs_partner ||
             corners[d].size() != 4) {

@@ -16,18 +16,14 @@ namespace vsl::recognition {
 
 namespace {
 
-// One class of border_cut: the door sizes and the constructions it enables, each checked
-// against what it needs of `out` (the section's other keys, read first).
-StereoMatchOptions::BorderCutDoor border_cut_door_from(const config::Node& classes,
-                                                       const std::string& type,
-                                                       const StereoMatchOptions& out) {
+// One entry of door_classes: a door class's sizes.
+StereoMatchOptions::DoorClass door_class_from(const config::Node& classes,
+                                              const std::string& type) {
   const config::Node door = classes.at(type);
   door.expect_map();
   door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
-                    "max_side_tilt_rad", "min_peak_margin", "from_one_side", "merged_side",
-                    "occluded_corner", "occluder_cut", "occluder_cut_min_level_visible_m",
-                    "typical_width_m", "width_sigma_m"});
-  StereoMatchOptions::BorderCutDoor parsed;
+                    "occluder_cut_min_level_visible_m", "typical_width_m", "width_sigma_m"});
+  StereoMatchOptions::DoorClass parsed;
   parsed.type = type;
   const config::Node heights = door.at("typical_heights_m");
   parsed.typical_heights_m = heights.as_doubles();
@@ -42,31 +38,6 @@ StereoMatchOptions::BorderCutDoor border_cut_door_from(const config::Node& class
   parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
   if (!(parsed.max_width_m > parsed.min_width_m)) {
     door.at("max_width_m").fail("must exceed min_width_m");
-  }
-  if (const auto v = door.find("max_side_tilt_rad")) {
-    parsed.max_side_tilt_rad = v->as_double_in(0.0, 1.5);  // below pi/2, as max_side_tilt_rad
-  }
-  if (const auto v = door.find("min_peak_margin")) {
-    parsed.min_peak_margin = v->as_double_in(0.0, 2.0);  // correlations differ by at most 2
-  }
-  if (const auto v = door.find("from_one_side")) {
-    parsed.from_one_side = v->as_bool();
-    // It sweeps as single-view doors do, with their thresholds.
-    if (parsed.from_one_side && !(out.min_single_view_correlation > 0.0)) {
-      v->fail("needs min_single_view_correlation > 0 (its sweep and thresholds)");
-    }
-  }
-  if (const auto v = door.find("merged_side")) {
-    parsed.merged_side = v->as_bool();
-    if (parsed.merged_side && !parsed.from_one_side) {
-      v->fail("needs from_one_side (a merged side is placed as from one side, roles swapped)");
-    }
-  }
-  if (const auto v = door.find("occluded_corner")) {
-    parsed.occluded_corner = v->as_bool();
-  }
-  if (const auto v = door.find("occluder_cut")) {
-    parsed.occluder_cut = v->as_bool();
   }
   if (const auto v = door.find("occluder_cut_min_level_visible_m")) {
     parsed.occluder_cut_min_level_visible_m = v->as_double_in(0.0, 100.0);
@@ -146,7 +117,8 @@ constexpr NumberKey kNumberKeys[] = {
      1000.0},
     {"min_side_correlation", &StereoMatchOptions::min_side_correlation, 0.0, 1.0},
     {"min_single_view_correlation", &StereoMatchOptions::min_single_view_correlation, 0.0, 1.0},
-    {"single_view_min_peak_margin", &StereoMatchOptions::single_view_min_peak_margin, 0.0, 2.0},
+    // Correlations differ by at most 2.
+    {"min_peak_margin", &StereoMatchOptions::min_peak_margin, 0.0, 2.0},
     {"single_view_min_separation_m", &StereoMatchOptions::single_view_min_separation_m, 0.0, 10.0},
     // Below a half: the two sides' bands do not meet.
     {"neighbour_handle_side_band", &StereoMatchOptions::neighbour_handle_side_band, 0.0, 0.49},
@@ -154,15 +126,7 @@ constexpr NumberKey kNumberKeys[] = {
     // Below pi/2: sin() still grows.
     {"max_side_tilt_rad", &StereoMatchOptions::max_side_tilt_rad, 0.0, 1.5},
     {"pixel_sigma_px", &StereoMatchOptions::pixel_sigma_px, 1e-3, 100.0},
-    {"max_twin_handle_gap", &StereoMatchOptions::max_twin_handle_gap, 0.0, 1.0},
 };
-
-// A count of handles inside an outline, [0, 100].
-int bars_inside(const config::Node& v) {
-  const std::int64_t bars = v.as_int();
-  if (bars < 0 || bars > 100) v.fail("must be an integer in [0, 100]");
-  return static_cast<int>(bars);
-}
 
 }  // namespace
 
@@ -183,14 +147,12 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
                        "bar_types",
                        "min_side_correlation",
                        "min_single_view_correlation",
-                       "single_view_min_peak_margin",
+                       "min_peak_margin",
                        "single_view_min_separation_m",
                        "single_view_max_bars_inside",
                        "neighbour_handle_side_band",
-                       "pair_max_bars_inside",
                        "max_bar_height_spread",
-                       "max_twin_handle_gap",
-                       "border_cut",
+                       "door_classes",
                        "cut_bars"});
   for (const NumberKey& number : kNumberKeys) {
     if (const auto v = section.find(number.key)) {
@@ -209,10 +171,10 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
         .fail("needs min_side_correlation > 0 (the side correlation it sweeps with)");
   }
   if (const auto v = section.find("single_view_max_bars_inside")) {
-    out.single_view_max_bars_inside = bars_inside(*v);
+    const std::int64_t bars = v->as_int();
+    if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
+    out.single_view_max_bars_inside = static_cast<int>(bars);
   }
-  if (const auto v = section.find("pair_max_bars_inside"))
-    out.pair_max_bars_inside = bars_inside(*v);
   if (const auto offsets = section.find("reference_depth_offset_m")) {
     offsets->expect_map();
     for (const std::string& type : offsets->keys()) {
@@ -226,15 +188,11 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       out.bar_types.push_back((*types)[i].as_string());
     }
   }
-  if (section.has("max_twin_handle_gap") && out.max_twin_handle_gap > 0.0 &&
-      out.bar_types.empty()) {
-    section.at("max_twin_handle_gap").fail("needs bar_types (the handles it looks for)");
-  }
   read_ranges(section, out);
-  if (const auto classes = section.find("border_cut")) {
+  if (const auto classes = section.find("door_classes")) {
     classes->expect_map();
     for (const std::string& type : classes->keys()) {
-      out.border_cut.push_back(border_cut_door_from(*classes, type, out));
+      out.door_classes.push_back(door_class_from(*classes, type));
     }
   }
   read_cut_bars(section, out);

@@ -57,12 +57,12 @@ const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& op
   return entry_of(options.height_range_m, type);
 }
 
-const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOptions& options,
-                                                         const std::string& type) {
-  return entry_of(options.border_cut, type);
+const StereoMatchOptions::DoorClass* door_class_of(const StereoMatchOptions& options,
+                                                   const std::string& type) {
+  return entry_of(options.door_classes, type);
 }
 
-// The class's greatest width, metres (its border_cut entry's max_width_m); 0 when not configured.
+// The class's greatest width, metres (its door class's max_width_m); 0 when not configured.
 const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
                                              const std::string& type) {
   return entry_of(options.cut_bars, type);

@@ -32,15 +32,15 @@ std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d);
 std::array<Eigen::Vector2d, 4> corner_array(const std::vector<IdealPixel>& corners);
 
 // The options' entries for a type: its reference point's depth offset (0 without one), its
-// extent and height ranges, its door class (border_cut), its cut-bar class; nullptr where the
+// extent and height ranges, its door class (door_classes), its cut-bar class; nullptr where the
 // options have none.
 double reference_depth_offset(const StereoMatchOptions& options, const std::string& type);
 const StereoMatchOptions::ExtentRange* extent_range(const StereoMatchOptions& options,
                                                     const std::string& type);
 const StereoMatchOptions::ExtentRange* height_range(const StereoMatchOptions& options,
                                                     const std::string& type);
-const StereoMatchOptions::BorderCutDoor* border_cut_door(const StereoMatchOptions& options,
-                                                         const std::string& type);
+const StereoMatchOptions::DoorClass* door_class_of(const StereoMatchOptions& options,
+                                                   const std::string& type);
 const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
                                              const std::string& type);
 

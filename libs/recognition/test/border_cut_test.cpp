@@ -1,4 +1,4 @@
-// Doors cut along a whole side by the top or bottom image border (StereoMatchOptions::border_cut,
+// Doors cut along a whole side by the top or bottom image border (StereoMatchOptions::door_classes,
 // partly_seen_door.hpp): the centre from the whole edge and the typical height, and the gates.
 #include <gtest/gtest.h>
 
@@ -24,7 +24,8 @@ class BorderCutTest : public ::testing::Test {
  protected:
   BorderCutTest() {
     options_.bar_types = {"handle"};
-    options_.border_cut = {test::cut_door_options({kHeightM}, 0.0)};
+    options_.door_classes = {test::cut_door_options({kHeightM})};
+    options_.min_peak_margin = 0.0;
   }
 
   // A door 0.5 m wide and kHeightM tall, turned `turn_rad` about the vertical, its centre at
@@ -110,7 +111,7 @@ TEST_F(BorderCutTest, CentreFromTheWholeEdgeAndTheTypicalHeight) {
 }
 
 TEST_F(BorderCutTest, ATypicalHeightOffTheDoorsMovesTheCentreByHalfTheDifference) {
-  options_.border_cut[0].typical_heights_m = {0.8};
+  options_.door_classes[0].typical_heights_m = {0.8};
   const Pair p = cut_door(kAbove, BorderCut::kTop);
   const std::vector<StereoPercept> percepts = match({p.left}, {p.right});
   ASSERT_EQ(percepts.size(), 1u);
@@ -123,20 +124,20 @@ TEST_F(BorderCutTest, VisibleHeightBetweenHalfAndAlmostAllOfTheTypical) {
   const Pair p = cut_door(kAbove, BorderCut::kTop);
   std::vector<StereoPairTrace> trace;
   // 0.47 m in view: under half of a 1 m door (a drawer front is shorter than half a door) ...
-  options_.border_cut[0].typical_heights_m = {1.0};
+  options_.door_classes[0].typical_heights_m = {1.0};
   EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
   EXPECT_NEAR(trace[0].value, 0.47, 0.01);
   EXPECT_DOUBLE_EQ(trace[0].limit, 0.5);
   // ... and more than a 0.4 m door: a door of another height, which nothing in view gives.
-  options_.border_cut[0].typical_heights_m = {0.4};
+  options_.door_classes[0].typical_heights_m = {0.4};
   EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
   EXPECT_DOUBLE_EQ(trace[0].limit, 0.42);
   // With a second, taller typical height of 1 m (a tall unit's door): the door is
   // placed as one of those, its centre 0.5 m above the bottom edge.
-  options_.border_cut[0].typical_heights_m = {0.4, 1.0};
+  options_.door_classes[0].typical_heights_m = {0.4, 1.0};
   const std::vector<StereoPercept> tall = match({p.left}, {p.right});
   ASSERT_EQ(tall.size(), 1u);
   EXPECT_LT((tall[0].left_camera_position_m - (kAbove + 0.5 * (1.0 - kHeightM) * up_)).norm(),
@@ -146,11 +147,11 @@ TEST_F(BorderCutTest, VisibleHeightBetweenHalfAndAlmostAllOfTheTypical) {
 TEST_F(BorderCutTest, WidthLeaningSideAndEpipolarGates) {
   const Pair p = cut_door(kAbove, BorderCut::kTop);
   std::vector<StereoPairTrace> trace;
-  options_.border_cut[0].min_width_m = 0.6;  // the door is 0.5 m wide
+  options_.door_classes[0].min_width_m = 0.6;  // the door is 0.5 m wide
   EXPECT_TRUE(match({p.left}, {p.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
   EXPECT_NEAR(trace[0].value, 0.5, 0.01);
-  options_.border_cut[0].min_width_m = 0.3;
+  options_.door_classes[0].min_width_m = 0.3;
   // The left outline's right side leans 20 px over its length: no door edge, no vertical
   // rectangle fits both images to the position gate's tolerance.
   Pair tilted = p;
@@ -205,56 +206,41 @@ TEST_F(BorderCutTest, ASideIsCorrelatedOnlyWhenItsPeakIsClear) {
   const double outline_depth_m = calibration_.left.fx_px * 0.09 / 25.0;
   // The band's edge scores higher than the door's own: with no width to speak of (5 m), the left
   // side is moved to it, 0.8 m ahead, and the door is no longer one (refused or misplaced).
-  const double max_width_m = options_.border_cut[0].max_width_m;
-  options_.border_cut[0].max_width_m = 5.0;
-  options_.border_cut[0].min_peak_margin = 0.0;
+  const double max_width_m = options_.door_classes[0].max_width_m;
+  options_.door_classes[0].max_width_m = 5.0;
+  options_.min_peak_margin = 0.0;
   for (const double z : depths()) EXPECT_GT(std::abs(z - outline_depth_m), 0.1);
   // With the class's greatest width, sides so placed are no door: the outlines' depth.
-  options_.border_cut[0].max_width_m = max_width_m;
+  options_.door_classes[0].max_width_m = max_width_m;
   const std::vector<double> wide = depths();
   ASSERT_EQ(wide.size(), 1u);
   EXPECT_NEAR(wide[0], outline_depth_m, 0.02);
   // With a margin, the two peaks are too close to choose: the side keeps the outlines' depth.
-  options_.border_cut[0].min_peak_margin = 0.1;
+  options_.min_peak_margin = 0.1;
   const std::vector<double> kept = depths();
   ASSERT_EQ(kept.size(), 1u);
   EXPECT_NEAR(kept[0], outline_depth_m, 0.02);
 }
 
-TEST_F(BorderCutTest, TwoHandlesInsideAreDrawersOrDoorsMerged) {
+TEST_F(BorderCutTest, HandlesOneAboveAnotherAreDrawerFrontsMerged) {
   const Pair p = cut_door(kAbove, BorderCut::kTop);
-  Detection handle;
-  handle.type = "handle";
-  handle.reference_px = p.left.reference_px - Eigen::Vector2d(0.0, 30.0);
-  Detection second = handle;
-  second.reference_px.x() += 12.0;
-  Detection third = second;
-  third.reference_px.x() += 12.0;
+  // Points of the left outline's vertical middle line, `t` of the way down.
+  const Eigen::Vector2d top = 0.5 * (p.left.corners_px[0] + p.left.corners_px[1]);
+  const Eigen::Vector2d bottom = 0.5 * (p.left.corners_px[3] + p.left.corners_px[2]);
+  const auto handle_at = [&](double t, double du_px) {
+    Detection handle;
+    handle.type = "handle";
+    handle.reference_px = top + t * (bottom - top) + Eigen::Vector2d(du_px, 0.0);
+    return handle;
+  };
+  options_.max_bar_height_spread = 0.3;
+  // Two at one height (a double door's): a door. One half the outline's height lower: a stack
+  // of fronts, refused as a cut pair is as a whole one.
+  EXPECT_EQ(match({p.left, handle_at(0.3, 0.0), handle_at(0.3, 12.0)}, {p.right}).size(), 1u);
   std::vector<StereoPairTrace> trace;
-  // A cut pair is held to the pairs' bound, as a whole pair is: a door carries one handle, and a
-  // double door's second one may stand inside the outline's slack. With a bound of 1, two are
-  // refused.
-  options_.pair_max_bars_inside = 1;
-  EXPECT_EQ(match({p.left, handle}, {p.right}).size(), 1u);
-  EXPECT_TRUE(match({p.left, handle, second}, {p.right}, &trace).empty());
+  EXPECT_TRUE(match({p.left, handle_at(0.3, 0.0), handle_at(0.8, 0.0)}, {p.right}, &trace).empty());
   ASSERT_FALSE(trace.empty());
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kBarsInside);
-  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "bars_inside");
-  // A handle within 2 px of the outline's side (the neighbour's, of a double door, just beyond
-  // the shared edge, which the outline's fit may place a pixel out) does not count.
-  Detection at_side = handle;
-  at_side.reference_px.x() = p.left.corners_px[2].x() - 1.0;
-  EXPECT_EQ(match({p.left, handle, at_side}, {p.right}).size(), 1u);
-  at_side.reference_px.x() = p.left.corners_px[2].x() - 3.0;
-  EXPECT_TRUE(match({p.left, handle, at_side}, {p.right}).empty());
-  // The shipped bound, 2: two handles kept, three refused; the single views' bound (1) does not
-  // apply to pairs.
-  options_.pair_max_bars_inside = 2;
-  options_.single_view_max_bars_inside = 1;
-  EXPECT_EQ(match({p.left, handle, second}, {p.right}).size(), 1u);
-  EXPECT_TRUE(match({p.left, handle, second, third}, {p.right}, &trace).empty());
-  ASSERT_FALSE(trace.empty());
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kBarsInside);
+  EXPECT_EQ(trace[0].refused_by, StereoGate::kStackedBars);
 }
 
 TEST_F(BorderCutTest, PairsOnlyWithADetectionCutAlongTheSameBorderOfAConfiguredClass) {
@@ -270,7 +256,7 @@ TEST_F(BorderCutTest, PairsOnlyWithADetectionCutAlongTheSameBorderOfAConfiguredC
   EXPECT_TRUE(trace.empty());
   // Without the class's typical height, or without the up direction: not paired.
   StereoMatchOptions off = options_;
-  off.border_cut.clear();
+  off.door_classes.clear();
   EXPECT_TRUE(match_and_triangulate({top.left}, {top.right}, calibration_.left, calibration_.right,
                                     left_T_right_, off, up_)
                   .empty());

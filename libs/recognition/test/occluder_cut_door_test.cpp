@@ -1,6 +1,6 @@
-// Doors whose lower part an occluder hides in both images (BorderCutDoor::occluder_cut,
-// partly_seen_door.hpp): a whole pair too short for a door, its top edge level, placed with
-// its lower corners on the sides and the typical height; and what keeps drawer fronts out.
+// Doors whose lower part an occluder hides in both images (partly_seen_door.hpp): a whole pair too
+// short for a door, its top edge level, placed with its lower corners on the sides and the typical
+// height; and what keeps drawer fronts out.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -23,10 +23,9 @@ class OccluderCutDoorTest : public ::testing::Test {
     options_.bar_types = {"handle"};
     options_.max_side_tilt_rad = 0.03;
     options_.height_range_m = {{"door", 0.5, 2.5}};
-    StereoMatchOptions::BorderCutDoor door = test::cut_door_options({kHeightM}, 0.0);
-    door.occluder_cut = true;
+    StereoMatchOptions::DoorClass door = test::cut_door_options({kHeightM});
     door.occluder_cut_min_level_visible_m = 0.4;
-    options_.border_cut = {door};
+    options_.door_classes = {door};
   }
 
   struct Pair {
@@ -93,13 +92,14 @@ TEST_F(OccluderCutDoorTest, AShortPairWithALevelTopIsADoorCutAtTheBottom) {
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
   EXPECT_TRUE(trace[0].assigned);
-  // Without the option the height gate refuses it.
-  options_.border_cut[0].occluder_cut = false;
+  // Without the door class (no fit) the height gate refuses it.
+  const StereoMatchOptions::DoorClass door = options_.door_classes[0];
+  options_.door_classes.clear();
   EXPECT_TRUE(match(p, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
   // The whole door is a pair as before.
-  options_.border_cut[0].occluder_cut = true;
+  options_.door_classes = {door};
   const std::vector<StereoPercept> whole = match(occluded_door(kHeightM, kHeightM));
   ASSERT_EQ(whole.size(), 1u);
   EXPECT_LT((whole[0].left_camera_position_m - kCentre).norm(), 2e-3);
@@ -121,19 +121,10 @@ TEST_F(OccluderCutDoorTest, ALevelCutMustShowMoreThanADrawerFront) {
 
 TEST_F(OccluderCutDoorTest, SidesOfUnequalHeightAreNoWholeDoor) {
   // The contour crosses the right side 0.3 m above its bottom corner: the outline's bottom right
-  // corner is no door's corner, and the door's fit to all four leaves it tens of pixels off.
-  // (Less, and without the images to correlate the sides, the fit can turn the door until its
-  // bottom edge in the image slopes as the contour does: the right outline's sides are known to
-  // the position gate's 3 px.)
+  // corner is no door's corner, and the door's fit to all four leaves it tens of pixels off. It is
+  // placed from its level top edge as a door whose lower part is hidden.
   const Pair p = occluded_door(kHeightM, kHeightM - 0.3);
   std::vector<StereoPairTrace> trace;
-  options_.border_cut[0].occluder_cut = false;
-  EXPECT_TRUE(match(p, &trace).empty());
-  ASSERT_EQ(trace.size(), 1u);
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
-  EXPECT_GT(trace[0].value, trace[0].limit);
-  // Placed from its level top edge as a door whose lower part is hidden.
-  options_.border_cut[0].occluder_cut = true;
   const std::vector<StereoPercept> placed = match(p, &trace);
   ASSERT_EQ(placed.size(), 1u);
   EXPECT_LT((placed[0].left_camera_position_m - kCentre).norm(), 2e-3);

@@ -1,7 +1,6 @@
 // Doors placed from one image with one vertical side swept and the other placed by the fit from
-// the outline's level edges (StereoMatchOptions::BorderCutDoor::from_one_side,
-// one_image_door.hpp), the other side beyond the other image's border or found there where the
-// fit puts it, on rendered images where the sweep has real edges to find.
+// the outline's level edges (one_image_door.hpp), the other side beyond the other image's border or
+// found there where the fit puts it, on rendered images where the sweep has real edges to find.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -30,8 +29,8 @@ class OneImageDoorTest : public ::testing::Test {
     options_.height_range_m = {{"door", 0.5, 2.5}};
     options_.min_side_correlation = 0.7;
     options_.min_single_view_correlation = 0.7;
-    options_.single_view_min_peak_margin = 0.2;
-    options_.border_cut = {test::cut_door_options({kHeightM}, 0.1, true)};
+    options_.min_peak_margin = 0.2;
+    options_.door_classes = {test::cut_door_options({kHeightM})};
   }
 
   // A door 0.5 m wide and kHeightM tall turned `turn_rad` about the vertical, its centre at
@@ -135,10 +134,6 @@ TEST_F(OneImageDoorTest, AWholeDoorPlacedFromItsInnerSideAndTheLevelEdges) {
   // A whole door: its height measured, the fit's covariance without the class's spread of
   // heights (6 cm and more, below).
   EXPECT_LT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.04 * 0.04);
-  // Off: the single-view sweep of both sides cannot place it (its left side has nothing to
-  // correlate with).
-  options_.border_cut[0].from_one_side = false;
-  EXPECT_TRUE(match({door}, {}).empty());
 }
 
 TEST_F(OneImageDoorTest, ACutDoorTakesTheTypicalHeight) {
@@ -166,8 +161,6 @@ TEST_F(OneImageDoorTest, FromTheRightImageNearItsRightBorder) {
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
   EXPECT_EQ(percepts[0].right_detection, 0);
-  options_.border_cut[0].from_one_side = false;
-  EXPECT_TRUE(match({}, {outline(corners, 1)}).empty());
 }
 
 TEST_F(OneImageDoorTest, AnOuterSideTheOtherImageShowsMustBeFoundThere) {
@@ -193,9 +186,9 @@ TEST_F(OneImageDoorTest, AnOuterSideTheOtherImageShowsMustBeFoundThere) {
 TEST_F(OneImageDoorTest, TheEdgesMustBeADoorsWidth) {
   const auto corners = door_corners(kNearLeftBorder, 0.2);
   render(corners);
-  options_.border_cut[0].max_width_m = 0.45;  // the door is 0.5 m wide
+  options_.door_classes[0].max_width_m = 0.45;  // the door is 0.5 m wide
   EXPECT_TRUE(match({outline(corners, 0)}, {}).empty());
-  options_.border_cut[0].max_width_m = 0.55;
+  options_.door_classes[0].max_width_m = 0.55;
   EXPECT_EQ(match({outline(corners, 0)}, {}).size(), 1u);
 }
 
@@ -214,8 +207,6 @@ TEST_F(OneImageDoorTest, ACutByTheTopBorderTakesTheTypicalHeightDownwards) {
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
   EXPECT_GT(up_.dot(percepts[0].left_camera_covariance_m2 * up_), 0.06 * 0.06);
-  options_.border_cut[0].from_one_side = false;
-  EXPECT_TRUE(match({door}, {}).empty());
 }
 
 TEST_F(OneImageDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsOnce) {
@@ -223,7 +214,7 @@ TEST_F(OneImageDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsO
   // neighbour's dark stripe): the inner side's sweep peaks there (5 m from the camera,
   // horizontally) before the door's own edge (2.5 m, within the margin of 0.2). At 5 m the level
   // planes make a door about 1 m wide: for doors up to 0.9 m only 2.5 m fits.
-  options_.border_cut[0].max_width_m = 0.9;
+  options_.door_classes[0].max_width_m = 0.9;
   const auto corners = door_corners(kNearLeftBorder, 0.2);
   render(corners);
   const double edge_px = pixels(corners, 1)[1].x();
@@ -235,7 +226,7 @@ TEST_F(OneImageDoorTest, AnInnerSideThatPeaksTwiceIsPlacedOnlyWhereTheShapeFitsO
   // Doors up to 1.5 m wide: the door fits the outline at 5 m too, but resting on one side there
   // its centre is not placed to 0.25 m (as a door resting on a hidden corner); it is still placed
   // at 2.5 m, once.
-  options_.border_cut[0].max_width_m = 1.5;
+  options_.door_classes[0].max_width_m = 1.5;
   const std::vector<StereoPercept> wider = match({door}, {});
   ASSERT_EQ(wider.size(), 1u);
   EXPECT_LT((wider[0].left_camera_position_m - kNearLeftBorder).norm(), 0.02);
@@ -258,11 +249,11 @@ TEST_F(OneImageDoorTest, TwoPeaksThatBothMakeADoorPlaceNone) {
   const double edge_px = pixels(corners, 1)[1].x();
   right_(cv::Rect(static_cast<int>(edge_px) + 9, 0, 6, 480)).setTo(70);
   const Detection door = outline(corners, 0);
-  options_.border_cut[0].max_width_m = 0.8;
+  options_.door_classes[0].max_width_m = 0.8;
   const std::vector<StereoPercept> percepts = match({door}, {});
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
-  options_.border_cut[0].max_width_m = 1.5;
+  options_.door_classes[0].max_width_m = 1.5;
   EXPECT_TRUE(match({door}, {}).empty());
 }
 
@@ -273,7 +264,6 @@ TEST_F(OneImageDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
   // left side, with its right side placed by the fit where the right image shows no edge, it is.
   const Eigen::Vector3d centre(-0.3, 0.55, 2.3);
   const auto corners = door_corners(centre, 0.2);
-  options_.border_cut[0].merged_side = true;
   render(corners);
   const auto right_px = pixels(corners, 1);
   const int side_u = static_cast<int>(std::lround(0.5 * (right_px[1].x() + right_px[2].x())));
@@ -282,9 +272,6 @@ TEST_F(OneImageDoorTest, AWholeDoorMergedWithItsNeighbourInTheOtherImage) {
   const std::vector<StereoPercept> percepts = match({door}, {});
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
-  options_.border_cut[0].merged_side = false;
-  EXPECT_TRUE(match({door}, {}).empty());
-  options_.border_cut[0].merged_side = true;
   // The right image shows an edge there, but not the door's (bright inside, dark beyond): no
   // merge, another surface; the door is not placed.
   right_(cv::Rect(side_u - 8, 0, 8, 480)).setTo(200);
@@ -295,10 +282,9 @@ TEST_F(OneImageDoorTest, FromTheRightImageMergedWithItsNeighbourInTheLeftImage) 
   // The same, the other way round: the outline is the right image's, and in the left image the
   // neighbour continues past the door's left side (a right outline's inner side). Swept from its
   // right side, with its left side placed by the fit where the left image shows no edge, it is
-  // placed; without merged_side it is not.
+  // placed.
   const Eigen::Vector3d centre(-0.3, 0.55, 2.3);
   const auto corners = door_corners(centre, 0.2);
-  options_.border_cut[0].merged_side = true;
   render(corners);
   const auto left_px = pixels(corners, 0);
   const int side_u = static_cast<int>(std::lround(0.5 * (left_px[0].x() + left_px[3].x())));
@@ -308,8 +294,6 @@ TEST_F(OneImageDoorTest, FromTheRightImageMergedWithItsNeighbourInTheLeftImage) 
   ASSERT_EQ(percepts.size(), 1u);
   EXPECT_EQ(percepts[0].right_detection, 0);
   EXPECT_LT((percepts[0].left_camera_position_m - centre).norm(), 0.02);
-  options_.border_cut[0].merged_side = false;
-  EXPECT_TRUE(match({}, {door}).empty());
 }
 
 }  // namespace

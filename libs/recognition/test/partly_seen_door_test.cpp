@@ -30,7 +30,7 @@ class PartlySeenDoorTest : public ::testing::Test {
     rig_ = {k, k, left_T_right_.inverse(), Eigen::Vector3d(0.0, -1.0, 0.0)};
     options_.pixel_sigma_px = 0.7;
     options_.max_epipolar_distance_px = 3.0;
-    door_ = test::cut_door_options({0.716, 1.246}, 0.0);
+    door_ = test::cut_door_options({0.716, 1.246});
     door_.typical_width_m = 0.4;
     door_.width_sigma_m = 0.1;
   }
@@ -74,7 +74,7 @@ class PartlySeenDoorTest : public ::testing::Test {
   Triangulator triangulator_;
   PinholeRig rig_;
   StereoMatchOptions options_;
-  StereoMatchOptions::BorderCutDoor door_;
+  StereoMatchOptions::DoorClass door_;
 };
 
 TEST(CornerStates, FollowTheBorderCuts) {

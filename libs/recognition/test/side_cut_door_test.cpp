@@ -1,5 +1,5 @@
 // Doors cut along a whole vertical side by the left or right image border
-// (StereoMatchOptions::BorderCutDoor::typical_width_m, partly_seen_door.hpp): the centre from the
+// (StereoMatchOptions::DoorClass::typical_width_m, partly_seen_door.hpp): the centre from the
 // whole side, the level planes of the edges and the typical width, and the gates; and doors cut
 // at an image corner in one image (the same model).
 #include <gtest/gtest.h>
@@ -26,10 +26,10 @@ class SideCutDoorTest : public ::testing::Test {
     options_.bar_types = {"handle"};
     options_.max_side_tilt_rad = 0.03;
     options_.height_range_m = {{"door", 0.5, 2.5}};
-    StereoMatchOptions::BorderCutDoor door = test::cut_door_options({kHeightM}, 0.0);
+    StereoMatchOptions::DoorClass door = test::cut_door_options({kHeightM});
     door.typical_width_m = kWidthM;
     door.width_sigma_m = 0.1;
-    options_.border_cut = {door};
+    options_.door_classes = {door};
   }
 
   struct Pair {
@@ -174,7 +174,7 @@ TEST_F(SideCutDoorTest, CentreFromTheWholeSideAndTheTypicalWidth) {
 TEST_F(SideCutDoorTest, ADoorWholeInTheOtherImageIsAsWideAsThatImageShowsIt) {
   // 9 px inside the left image's left border, beyond the right image's: the right camera sees
   // less beyond its left border. The typical width (here 0.3 m, the door is 0.5) plays no part.
-  options_.border_cut[0].typical_width_m = 0.3;
+  options_.door_classes[0].typical_width_m = 0.3;
   const Eigen::Vector3d centre(-0.901, 0.1, 2.111);
   const Pair p = side_cut_door(centre, kAcrossLeft, BorderCut::kLeft, true);
   ASSERT_EQ(p.left.border_cut, BorderCut::kNone);
@@ -214,7 +214,7 @@ TEST_F(SideCutDoorTest, ADoorCutAtACornerInOneImageIsPlacedFromTheOther) {
   EXPECT_TRUE(match(same, &trace).empty());
   EXPECT_TRUE(trace.empty());
   // The edge too short for a door (min_width_m above the door's 0.5 m).
-  options_.border_cut[0].min_width_m = 0.55;
+  options_.door_classes[0].min_width_m = 0.55;
   EXPECT_TRUE(match(p, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
@@ -223,8 +223,8 @@ TEST_F(SideCutDoorTest, ADoorCutAtACornerInOneImageIsPlacedFromTheOther) {
 TEST_F(SideCutDoorTest, ADoorWiderThanTypicalInViewIsAsWideAsSeen) {
   // The class's typical width is 0.2 m, less than the 0.3 m the left image shows: the door is
   // placed 0.3 m wide, its centre 0.1 m short of the true one along the face.
-  options_.border_cut[0].min_width_m = 0.1;
-  options_.border_cut[0].typical_width_m = 0.2;
+  options_.door_classes[0].min_width_m = 0.1;
+  options_.door_classes[0].typical_width_m = 0.2;
   const Pair p = side_cut_door(kAtLeft, kAcrossLeft, BorderCut::kLeft);
   const std::vector<StereoPercept> percepts = match(p);
   ASSERT_EQ(percepts.size(), 1u);
@@ -244,13 +244,13 @@ TEST_F(SideCutDoorTest, GatesRefuse) {
   EXPECT_EQ(trace[0].refused_by, StereoGate::kHeight);
   options_.height_range_m = {{"door", 0.5, 2.5}};
   // Less than half the typical width in view: 0.3 m of a typical 0.7.
-  options_.border_cut[0].typical_width_m = 0.7;
+  options_.door_classes[0].typical_width_m = 0.7;
   EXPECT_TRUE(match(p, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kExtent);
   // Off.
-  options_.border_cut[0].typical_width_m = 0.0;
+  options_.door_classes[0].typical_width_m = 0.0;
   EXPECT_TRUE(match(p, &trace).empty());
-  options_.border_cut[0].typical_width_m = kWidthM;
+  options_.door_classes[0].typical_width_m = kWidthM;
   // The whole side tilted in the right image (an occluder's contour): its bottom corner 12 px
   // to the left.
   Pair tilted = p;

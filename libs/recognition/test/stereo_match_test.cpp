@@ -61,10 +61,10 @@ class StereoMatchTest : public ::testing::Test {
                                  options_, up, trace);
   }
 
-  // The door class's sizes (StereoMatchOptions::BorderCutDoor): door pairs are placed by the
+  // The door class's sizes (StereoMatchOptions::DoorClass): door pairs are placed by the
   // door's fit (partly_seen_door.hpp).
   void add_door_class() {
-    StereoMatchOptions::BorderCutDoor door;
+    StereoMatchOptions::DoorClass door;
     door.type = "door";
     door.typical_heights_m = {0.7};
     door.height_sigma_m = 0.12;
@@ -72,7 +72,7 @@ class StereoMatchTest : public ::testing::Test {
     door.max_width_m = 1.0;
     door.typical_width_m = 0.5;
     door.width_sigma_m = 0.1;
-    options_.border_cut.push_back(door);
+    options_.door_classes.push_back(door);
   }
 
   head::StereoCalibration calibration_ = sim_calibration();
@@ -229,21 +229,23 @@ TEST_F(StereoMatchTest, DoorSidesMustBeVerticalIn3D) {
   // Without the class's sizes there is no fit, and nothing to place the door by: refused.
   {
     StereoMatchOptions without = options_;
-    without.border_cut.clear();
+    without.door_classes.clear();
     const auto none = match_and_triangulate({cut.left}, {cut.right}, calibration_.left,
                                             calibration_.right, left_T_right_, without, up, &trace);
     EXPECT_TRUE(none.empty());
     ASSERT_EQ(trace.size(), 1u);
     EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
   }
-  // The right image's left side is cut too (the occluder in both views): refused, as is an
-  // outline with both sides tilted in one image.
+  // The right image's left side is cut too (the occluder in both views): the side gate refuses
+  // the pair, and the fit places it with that corner hidden in both images.
   Pair both = cut;
   both.right.corners_px[3].x() += 8.0;
-  EXPECT_TRUE(match({both.left}, {both.right}, up, &trace).empty());
+  const auto hidden = match({both.left}, {both.right}, up, &trace);
+  ASSERT_EQ(hidden.size(), 1u);
+  EXPECT_LT((hidden[0].left_camera_position_m - centre).norm(), 0.02);
   ASSERT_EQ(trace.size(), 1u);
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kSideTilt);
-  EXPECT_GT(trace[0].value, 0.03);
+  EXPECT_TRUE(trace[0].occluded_corner);
+  // An outline with both sides tilted in one image: refused.
   Pair two = cut;
   two.left.corners_px[2].x() -= 8.0;
   EXPECT_TRUE(match({two.left}, {two.right}, up).empty());
@@ -265,13 +267,12 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   const Pair p = door_pair(centre, calibration_, left_T_right_, down);
   options_.max_side_tilt_rad = 0.03;
   options_.height_range_m.push_back({"door", 0.5, 2.5});
-  StereoMatchOptions::BorderCutDoor door;
+  StereoMatchOptions::DoorClass door;
   door.type = "door";
   door.typical_heights_m = {0.7};
   door.min_width_m = 0.3;
   door.max_width_m = 1.0;
-  door.occluded_corner = true;
-  options_.border_cut.push_back(door);
+  options_.door_classes.push_back(door);
   const Eigen::Vector3d turned(std::cos(0.7), 0.0, std::sin(0.7));
   const Eigen::Vector3d across = (turned - turned.dot(down) * down).normalized();
   const Eigen::Vector3d bottom_left = centre - 0.25 * across + 0.35 * down;
@@ -312,13 +313,11 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   ASSERT_EQ(placed_elsewhere.size(), 1u);
   EXPECT_LT((placed_elsewhere[0].left_camera_position_m - centre).norm(), 1e-3);
   EXPECT_TRUE(trace.at(0).occluded_corner);
-  options_.border_cut[0].occluded_corner = false;
+  // Without the door class (no fit): the position gate, and the tilted side, refuse the pairs.
+  options_.door_classes.clear();
   EXPECT_EQ(refused_by(elsewhere), StereoGate::kEpipolar);
-  options_.border_cut[0].occluded_corner = true;
-  // Off: the tilted side refuses the pair, as before.
-  options_.border_cut[0].occluded_corner = false;
   EXPECT_NE(refused_by(hidden), StereoGate::kNone);
-  options_.border_cut[0].occluded_corner = true;
+  options_.door_classes.push_back(door);
   // The contour's point outside the door (below it): an object added to the outline, no door
   // corner hidden.
   EXPECT_NE(refused_by(hide_bottom_left(bottom_left + 0.1 * down, 0.6)), StereoGate::kNone);
@@ -330,45 +329,8 @@ TEST_F(StereoMatchTest, DoorWithOneCornerHiddenByAnOccluderFromTheOtherThree) {
   both.right.corners_px[2] = project(0.6 * face, calibration_.right, left_T_right_);
   EXPECT_NE(refused_by(both), StereoGate::kNone);
   // Too narrow for a door (the width bound of the class): refused.
-  options_.border_cut[0].min_width_m = 0.6;
+  options_.door_classes[0].min_width_m = 0.6;
   EXPECT_NE(refused_by(hidden), StereoGate::kNone);
-}
-
-TEST_F(StereoMatchTest, ADoorPairWithAHandlePerDrawerFrontInsideIsRefused) {
-  // Three handles inside both outlines: a stack of drawer fronts merged into one door-shaped blob.
-  const Eigen::Vector3d centre(0.1, 0.3, 2.5);
-  const Pair door = door_pair(centre, calibration_, left_T_right_);
-  options_.bar_types = {"handle"};
-  std::vector<Detection> left{door.left}, right{door.right};
-  const auto add_handle = [&](double dy_m) {
-    const Pair h = pair_of(centre + Eigen::Vector3d(0.0, dy_m, 0.0));
-    left.push_back(h.left);
-    right.push_back(h.right);
-  };
-  const auto door_placed = [&] {
-    for (const StereoPercept& p : match(left, right)) {
-      if (p.left_detection == 0 && p.right_detection == 0) return true;
-    }
-    return false;
-  };
-  add_handle(-0.2);
-  add_handle(0.0);
-  options_.pair_max_bars_inside = 2;
-  EXPECT_TRUE(door_placed());  // two: a door's own handle and its neighbour's
-  add_handle(0.2);
-  EXPECT_FALSE(door_placed());
-  std::vector<StereoPairTrace> trace;
-  match_and_triangulate(left, right, calibration_.left, calibration_.right, left_T_right_, options_,
-                        Eigen::Vector3d::Zero(), &trace);
-  bool refused = false;
-  for (const StereoPairTrace& t : trace) {
-    if (t.left_detection == 0 && t.right_detection == 0) {
-      refused = t.refused_by == StereoGate::kBarsInside && t.value == 3.0;
-    }
-  }
-  EXPECT_TRUE(refused);
-  options_.pair_max_bars_inside = 0;  // off
-  EXPECT_TRUE(door_placed());
 }
 
 TEST_F(StereoMatchTest, ADoorOutlineWithHandlesOneAboveAnotherIsRefused) {
@@ -414,18 +376,17 @@ TEST_F(StereoMatchTest, ADoorOutlineWithHandlesOneAboveAnotherIsRefused) {
   right.resize(1);
   add_handle(centre - 0.25 * across - 0.25 * down);
   add_handle(centre - 0.25 * across + 0.25 * down);
-  options_.pair_max_bars_inside = 1;
   EXPECT_EQ(door_trace().refused_by, StereoGate::kStackedBars);
 }
 
-TEST_F(StereoMatchTest, HandlesInsideAreCountedWhenOnlyOneImageHasAnOutline) {
-  // The right image's blob of the door has no outline (its corners not found): the handles
-  // inside the left outline still refuse the pair.
+TEST_F(StereoMatchTest, HandlesAreJudgedWhenOnlyOneImageHasAnOutline) {
+  // The right image's blob of the door has no outline (its corners not found): the handles one
+  // above another on the left outline still refuse the pair.
   const Eigen::Vector3d centre(0.1, 0.3, 2.5);
   Pair door = door_pair(centre, calibration_, left_T_right_);
   door.right.corners_px.clear();
   options_.bar_types = {"handle"};
-  options_.pair_max_bars_inside = 2;
+  options_.max_bar_height_spread = 0.3;
   std::vector<Detection> left{door.left}, right{door.right};
   for (const double dy_m : {-0.2, 0.0, 0.2}) {
     const Pair h = pair_of(centre + Eigen::Vector3d(0.0, dy_m, 0.0));
@@ -437,7 +398,7 @@ TEST_F(StereoMatchTest, HandlesInsideAreCountedWhenOnlyOneImageHasAnOutline) {
   bool refused = false;
   for (const StereoPairTrace& t : trace) {
     if (t.left_detection == 0 && t.right_detection == 0) {
-      refused = t.refused_by == StereoGate::kBarsInside && t.value == 3.0;
+      refused = t.refused_by == StereoGate::kStackedBars;
     }
   }
   EXPECT_TRUE(refused);
@@ -453,17 +414,18 @@ TEST_F(StereoMatchTest, OutlinesThatNoDoorFitsAreRefused) {
   EXPECT_EQ(match({p.left}, {p.right}, up, &trace).size(), 1u);
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kNone);
-  // An occluder's contour crosses the door's right side 30 px above its bottom corner in the
-  // left image: a door's two sides are equally tall, and no door fits that corner.
+  // The bottom right corner 30 px up the door's right side in the left image, and 30 px up and
+  // out of the door in the right: a door's two sides are equally tall, so no door fits that
+  // corner, and an occluder that hid it would not add to the door in the right image.
   Pair occluded = p;
   occluded.left.corners_px[2].y() -= 30.0;
+  occluded.right.corners_px[2].y() -= 30.0;
+  occluded.right.corners_px[2].x() += 30.0;
   EXPECT_TRUE(match({occluded.left}, {occluded.right}, up, &trace).empty());
   ASSERT_EQ(trace.size(), 1u);
   EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
   EXPECT_GT(trace[0].value, trace[0].limit);
   EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "rectangle_fit");
-  // Without the up direction there is no fit: the pair is placed by its reference points.
-  EXPECT_EQ(match({occluded.left}, {occluded.right}).size(), 1u);
 }
 
 TEST_F(StereoMatchTest, UntriangulablePairIsRefusedBeforeTheAssignment) {
@@ -706,18 +668,15 @@ stereo:
   bar_types: [handle]
   min_side_correlation: 0.7
   min_single_view_correlation: 0.75
-  single_view_min_peak_margin: 0.15
+  min_peak_margin: 0.15
   single_view_min_separation_m: 0.25
   single_view_max_bars_inside: 2
   neighbour_handle_side_band: 0.3
-  pair_max_bars_inside: 3
   max_bar_height_spread: 0.35
-  max_twin_handle_gap: 0.12
-  border_cut:
+  door_classes:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
-           max_side_tilt_rad: 0.09, min_peak_margin: 0.15, from_one_side: true,
-           merged_side: true, occluded_corner: true, occluder_cut: true,
-           occluder_cut_min_level_visible_m: 0.38, typical_width_m: 0.45, width_sigma_m: 0.08}
+           occluder_cut_min_level_visible_m: 0.38,
+           typical_width_m: 0.45, width_sigma_m: 0.08}
   cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}
 )",
                                               "stereo.yaml");
@@ -744,32 +703,24 @@ stereo:
   EXPECT_EQ(o.bar_types, std::vector<std::string>{"handle"});
   EXPECT_EQ(o.min_side_correlation, 0.7);
   EXPECT_EQ(o.min_single_view_correlation, 0.75);
-  EXPECT_EQ(o.single_view_min_peak_margin, 0.15);
+  EXPECT_EQ(o.min_peak_margin, 0.15);
   EXPECT_EQ(o.single_view_min_separation_m, 0.25);
   EXPECT_EQ(o.single_view_max_bars_inside, 2);
   EXPECT_EQ(o.neighbour_handle_side_band, 0.3);
-  EXPECT_EQ(o.pair_max_bars_inside, 3);
   EXPECT_EQ(o.max_bar_height_spread, 0.35);
-  EXPECT_EQ(o.max_twin_handle_gap, 0.12);
-  ASSERT_EQ(o.border_cut.size(), 1u);
-  EXPECT_EQ(o.border_cut[0].type, "door");
-  EXPECT_EQ(o.border_cut[0].typical_heights_m, (std::vector<double>{0.7, 1.2}));
-  EXPECT_EQ(o.border_cut[0].height_sigma_m, 0.1);
-  EXPECT_EQ(o.border_cut[0].min_width_m, 0.3);
-  EXPECT_EQ(o.border_cut[0].max_width_m, 1.0);
-  EXPECT_EQ(o.border_cut[0].max_side_tilt_rad, 0.09);
-  EXPECT_EQ(o.border_cut[0].min_peak_margin, 0.15);
-  EXPECT_TRUE(o.border_cut[0].from_one_side);
-  EXPECT_TRUE(o.border_cut[0].occluded_corner);
-  EXPECT_TRUE(o.border_cut[0].merged_side);
-  EXPECT_TRUE(o.border_cut[0].occluder_cut);
-  EXPECT_EQ(o.border_cut[0].occluder_cut_min_level_visible_m, 0.38);
-  EXPECT_EQ(o.border_cut[0].typical_width_m, 0.45);
+  ASSERT_EQ(o.door_classes.size(), 1u);
+  EXPECT_EQ(o.door_classes[0].type, "door");
+  EXPECT_EQ(o.door_classes[0].typical_heights_m, (std::vector<double>{0.7, 1.2}));
+  EXPECT_EQ(o.door_classes[0].height_sigma_m, 0.1);
+  EXPECT_EQ(o.door_classes[0].min_width_m, 0.3);
+  EXPECT_EQ(o.door_classes[0].max_width_m, 1.0);
+  EXPECT_EQ(o.door_classes[0].occluder_cut_min_level_visible_m, 0.38);
+  EXPECT_EQ(o.door_classes[0].typical_width_m, 0.45);
   ASSERT_EQ(o.cut_bars.size(), 1u);
   EXPECT_EQ(o.cut_bars[0].type, "handle");
   EXPECT_EQ(o.cut_bars[0].typical_length_m, 0.16);
   EXPECT_EQ(o.cut_bars[0].length_sigma_m, 0.03);
-  EXPECT_EQ(o.border_cut[0].width_sigma_m, 0.08);
+  EXPECT_EQ(o.door_classes[0].width_sigma_m, 0.08);
 }
 
 std::string stereo_error(const std::string& body) {
@@ -828,25 +779,21 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       stereo_error("  max_bar_height_spread: 1.5\n").find("s.yaml:2: stereo.max_bar_height_spread"),
       std::string::npos)
       << stereo_error("  max_bar_height_spread: 1.5\n");
-  EXPECT_NE(stereo_error("  max_twin_handle_gap: 0.1\n")
-                .find("s.yaml:2: stereo.max_twin_handle_gap: needs bar_types"),
-            std::string::npos);
-  EXPECT_NE(stereo_error("  bar_types: [handle]\n  max_twin_handle_gap: 2\n")
-                .find("s.yaml:3: stereo.max_twin_handle_gap"),
+  EXPECT_NE(stereo_error("  min_peak_margin: 2.5\n").find("s.yaml:2: stereo.min_peak_margin"),
             std::string::npos);
   EXPECT_NE(stereo_error("  min_single_view_correlation: 0.7\n").find("needs min_side_correlation"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+  EXPECT_NE(stereo_error("  door_classes: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
                          "min_width_m: 0.5, max_width_m: 0.4}}\n")
-                .find("s.yaml:2: stereo.border_cut.door.max_width_m: must exceed min_width_m"),
+                .find("s.yaml:2: stereo.door_classes.door.max_width_m: must exceed min_width_m"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+  EXPECT_NE(stereo_error("  door_classes: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
                          "min_width_m: 0.3}}\n")
                 .find("max_width_m"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.9, "
+  EXPECT_NE(stereo_error("  door_classes: {door: {typical_heights_m: [0.7], height_sigma_m: 0.9, "
                          "min_width_m: 0.3, max_width_m: 1}}\n")
-                .find("stereo.border_cut.door.height_sigma_m"),
+                .find("stereo.door_classes.door.height_sigma_m"),
             std::string::npos);
   // Cut bars: only of a bar type, a spread below the length.
   EXPECT_NE(stereo_error("  cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}\n")
@@ -859,51 +806,41 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   EXPECT_EQ(stereo_error("  bar_types: [handle]\n  cut_bars: {handle: {typical_length_m: 0.16, "
                          "length_sigma_m: 0.03}}\n"),
             "");
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_height: 0.7}}\n").find("unknown key"),
+  EXPECT_NE(stereo_error("  door_classes: {door: {typical_height: 0.7}}\n").find("unknown key"),
             std::string::npos);
-  EXPECT_NE(stereo_error("  border_cut: {door: {typical_heights_m: [1.2, 0.7], height_sigma_m: "
+  EXPECT_NE(stereo_error("  door_classes: {door: {typical_heights_m: [1.2, 0.7], height_sigma_m: "
                          "0.1, min_width_m: 0.3, max_width_m: 1}}\n")
-                .find("s.yaml:2: stereo.border_cut.door.typical_heights_m: expected a list of "
+                .find("s.yaml:2: stereo.door_classes.door.typical_heights_m: expected a list of "
                       "heights in metres, ascending"),
             std::string::npos);
   // A door entry with its required keys and `extra` ("key: value"), after `before`.
   const auto cut_door_error = [](const std::string& extra, const std::string& before = "") {
     return stereo_error(before +
-                        "  border_cut: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
+                        "  door_classes: {door: {typical_heights_m: [0.7], height_sigma_m: 0.1, "
                         "min_width_m: 0.3, max_width_m: 1, " +
                         extra + "}}\n");
   };
-  // The side beyond the border is swept as a single-view door's sides are.
-  EXPECT_NE(cut_door_error("from_one_side: true")
-                .find("s.yaml:2: stereo.border_cut.door.from_one_side: needs "
-                      "min_single_view_correlation > 0"),
-            std::string::npos)
+  // The door's constructions are states of its one fit, not switches.
+  EXPECT_NE(cut_door_error("from_one_side: true").find("unknown key"), std::string::npos)
       << cut_door_error("from_one_side: true");
-  EXPECT_NE(cut_door_error("from_one_side: 2").find("stereo.border_cut.door.from_one_side"),
-            std::string::npos);
-  // A merged side is the one-side placement (from_one_side) with the sides' roles swapped.
-  EXPECT_NE(cut_door_error("merged_side: true")
-                .find("s.yaml:2: stereo.border_cut.door.merged_side: needs from_one_side"),
-            std::string::npos);
-  // Occluded corners and occluder cuts are states of the one fit: switches without other needs.
-  EXPECT_EQ(cut_door_error("occluded_corner: true"), "");
-  EXPECT_EQ(cut_door_error("occluder_cut: true"), "");
   EXPECT_NE(cut_door_error("occluder_cut_min_level_visible_m: -1")
-                .find("stereo.border_cut.door.occluder_cut_min_level_visible_m"),
+                .find("stereo.door_classes.door.occluder_cut_min_level_visible_m"),
             std::string::npos);
   // Doors whose left or right side neither image shows: a door's width, with a spread.
-  EXPECT_NE(cut_door_error("typical_width_m: 0.2, width_sigma_m: 0.1")
-                .find("s.yaml:2: stereo.border_cut.door.typical_width_m: must be 0 (off) or within "
-                      "min_width_m .. max_width_m"),
-            std::string::npos)
+  EXPECT_NE(
+      cut_door_error("typical_width_m: 0.2, width_sigma_m: 0.1")
+          .find("s.yaml:2: stereo.door_classes.door.typical_width_m: must be 0 (off) or within "
+                "min_width_m .. max_width_m"),
+      std::string::npos)
       << cut_door_error("typical_width_m: 0.2, width_sigma_m: 0.1");
-  EXPECT_NE(cut_door_error("typical_width_m: 0.4")
-                .find("s.yaml:2: stereo.border_cut.door.typical_width_m: needs width_sigma_m > 0"),
-            std::string::npos)
+  EXPECT_NE(
+      cut_door_error("typical_width_m: 0.4")
+          .find("s.yaml:2: stereo.door_classes.door.typical_width_m: needs width_sigma_m > 0"),
+      std::string::npos)
       << cut_door_error("typical_width_m: 0.4");
   EXPECT_EQ(cut_door_error("typical_width_m: 0", ""), "");
   EXPECT_EQ(cut_door_error("typical_width_m: 0.4, width_sigma_m: 0.1"), "");
-  EXPECT_NE(cut_door_error("width_sigma_m: -1").find("stereo.border_cut.door.width_sigma_m"),
+  EXPECT_NE(cut_door_error("width_sigma_m: -1").find("stereo.door_classes.door.width_sigma_m"),
             std::string::npos);
   for (const std::string& e : {stereo_error("  pixel_sigma_px: -1\n"),
                                stereo_error("  min_depth_m: 3\n  max_depth_m: 2\n")}) {

@@ -26,17 +26,12 @@ inline Detection top_cut_door_outline(double u) {
   return d;
 }
 
-inline StereoMatchOptions::BorderCutDoor cut_door_options(std::vector<double> typical_heights_m,
-                                                          double min_peak_margin,
-                                                          bool from_one_side = false) {
+inline StereoMatchOptions::DoorClass cut_door_options(std::vector<double> typical_heights_m) {
   return {.type = "door",
           .typical_heights_m = std::move(typical_heights_m),
           .height_sigma_m = 0.12,
           .min_width_m = 0.3,
-          .max_width_m = 1.0,
-          .max_side_tilt_rad = 0.09,
-          .min_peak_margin = min_peak_margin,
-          .from_one_side = from_one_side};
+          .max_width_m = 1.0};
 }
 
 }  // namespace vsl::recognition::test

@@ -57,12 +57,12 @@ struct Detection {
   // of the vertical sides, and its reference_px is the middle of the edge it shows whole (the
   // bottom edge for kTop). The stereo match pairs it only with a detection cut along the same
   // border and places its centre from that edge and the class's typical height
-  // (StereoMatchOptions::border_cut); its mahalanobis2 is its colour's alone.
+  // (StereoMatchOptions::door_classes); its mahalanobis2 is its colour's alone.
   // kLeft and kRight: the left or right border cuts it along a whole side; its
   // corners_px on the cut side are where the top and bottom edges leave the image, its height_px
   // is the length of the vertical side it shows whole and its reference_px that side's middle.
   // The stereo match places it from that side, the edges' level planes and the class's typical
-  // width (StereoMatchOptions::BorderCutDoor::typical_width_m).
+  // width (StereoMatchOptions::DoorClass::typical_width_m).
   // kTopLeft .. kBottomRight: two borders cut it, and the outline's corner at
   // that image corner is the image's; the two corners on the cut sides are where the door's
   // edge and side leave the image, the opposite corner (the one real corner) is its
