@@ -1,7 +1,6 @@
-// Two door outlines, one per image (rectangles seen as quadrilaterals, quadrilateral.hpp): the
-// door gates of the cross match before the door's fit (partly_seen_door.hpp): the position gate
-// and the side gate (stereo_match.hpp: StereoMatchOptions::max_side_tilt_rad). Internal to
-// vsl_recognition.
+// Two door outlines, one per image (rectangles seen as quadrilaterals, quadrilateral.hpp): the side
+// gate before the door's fit (partly_seen_door.hpp; StereoMatchOptions::max_side_tilt_rad).
+// Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,13 +15,6 @@
 #include "vsl/recognition/stereo_match.hpp"
 
 namespace vsl::recognition::detail {
-
-// How far two views of a rectangle's vertical sides fail to nest along the epipolar direction,
-// pixels (the position gate of two door outlines; stereo_match.hpp, match_and_triangulate).
-// `left`, `right`: the outlines' corners, clockwise from the top left.
-double rectangle_containment_excess_px(const std::vector<IdealPixel>& left,
-                                       const std::vector<IdealPixel>& right,
-                                       const EpipolarGeometry& epipolar);
 
 // The outlines' corners, ideal pixels, clockwise from the top left (corner k of one image is
 // corner k of the other).

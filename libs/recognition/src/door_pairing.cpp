@@ -98,24 +98,12 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::DoorClass& 
   }
 }
 
-// Before the sides' correlation (the costliest step), what the two outlines alone refuse: a
-// corner both images show off the other's epipolar line (two doors at different heights), and,
-// where both show the door's width (no corner on an edge or hidden), unlike widths: two views of
-// one door at about one depth are about as wide (max_area_ratio; an outline's width is the mean
-// of its top and bottom edges' lengths, pixels).
-bool outlines_refused(const StereoViews& v, const std::array<DoorOutlineView, 2>& views,
-                      double tolerance_px, StereoPairTrace& trace) {
-  for (std::size_t j = 0; j < 4; ++j) {
-    if (views[0].states[j] != CornerState::kSeen || views[1].states[j] != CornerState::kSeen) {
-      continue;
-    }
-    const double off_px =
-        v.epipolar.distance_px(views[0].corners_ideal_px[j], views[1].corners_ideal_px[j]);
-    if (off_px > tolerance_px) {
-      refuse(trace, StereoGate::kEpipolar, off_px, tolerance_px);
-      return true;
-    }
-  }
+// Before the sides' correlation (the costliest step), what the two outlines alone refuse: where
+// both show the door's width (no corner on an edge or hidden), unlike widths: two views of one
+// door at about one depth are about as wide (max_area_ratio; an outline's width is the mean of its
+// top and bottom edges' lengths, pixels). Their corners are the fit's to judge.
+bool widths_refused(const StereoViews& v, const std::array<DoorOutlineView, 2>& views,
+                    StereoPairTrace& trace) {
   const auto shows_width = [](const DoorOutlineView& o) {
     return std::all_of(o.states.begin(), o.states.end(), [](CornerState state) {
       return state == CornerState::kSeen || state == CornerState::kOnSide;
@@ -159,7 +147,7 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
   // with a whole door, and the explanation must fit where they do not.
   PartlySeenLimits limits;
   limits.tolerance_px = options.max_epipolar_distance_px;
-  if (explanation == Explanation::kBorder || explanation == Explanation::kWhole) {
+  if (explanation == Explanation::kOutlines) {
     limits.tolerance_px =
         std::max(limits.tolerance_px,
                  kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
@@ -167,10 +155,7 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
     limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
   }
   limits.hidden_by_occluder = explanation == Explanation::kCornerHidden;
-  if (explanation != Explanation::kWhole &&
-      outlines_refused(v, views, limits.tolerance_px, trace)) {
-    return std::nullopt;
-  }
+  if (widths_refused(v, views, trace)) return std::nullopt;
   // Uncorrelated, a right outline's side is where segmentation put it: within the position
   // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
   // measured to that noise: correlate_sides).
@@ -253,11 +238,10 @@ std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
 
 }  // namespace
 
-bool door_pair_is_judged(const StereoViews& v, int l, int r) {
-  const BorderCut cl = v.left[l].border_cut, cr = v.right[r].border_cut;
-  if (cl == BorderCut::kNone && cr == BorderCut::kNone) return true;
-  return cuts_of_one_door(cl, cr) && door_class_of(v.options, v.left[l].type) != nullptr &&
-         v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
+bool is_door_pair(const StereoViews& v, int l, int r) {
+  return cuts_of_one_door(v.left[l].border_cut, v.right[r].border_cut) &&
+         door_class_of(v.options, v.left[l].type) != nullptr && v.left_corners[l].size() == 4 &&
+         v.right_corners[r].size() == 4 && v.up.norm() > 0.0;
 }
 
 void explain_unpaired_by_occluder(const StereoViews& v, std::vector<StereoPairTrace> occluded,

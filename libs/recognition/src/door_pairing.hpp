@@ -14,24 +14,22 @@
 
 namespace vsl::recognition::detail {
 
-// What a fit of a door explains: a whole pair, the image border's cuts, an occluder hiding the
-// door's lower part, or one hiding a corner.
-enum class Explanation { kWhole, kBorder, kLowerPartHidden, kCornerHidden };
+// What a fit of a door explains: the outlines as they are (whole, or cut by the image border), an
+// occluder hiding the door's lower part, or one hiding a corner.
+enum class Explanation { kOutlines, kLowerPartHidden, kCornerHidden };
 
 // The pair (l, r) judged as one door (partly_seen_door.hpp), each view's corners in the states
 // given; an outline corner beyond the image is where the outline's sides would meet, not a corner
-// the image shows, so the door's own corner there is hidden. A whole pair passed the position
-// gate on its outlines already (rectangle_containment_excess_px, which allows a strip that
-// segmentation adds at the top or bottom in one image).
+// the image shows, so the door's own corner there is hidden.
 std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
                                     const std::array<CornerState, 4>& left,
                                     const std::array<CornerState, 4>& right, StereoPairTrace& trace,
-                                    Explanation explanation = Explanation::kBorder);
+                                    Explanation explanation = Explanation::kOutlines);
 
-// Whether a pair of door views is judged at all: whole views always; cut ones when their class
-// has a size prior (door_classes), both have four corners, the up direction is known, and the cuts
-// can be of one door (cuts_of_one_door).
-bool door_pair_is_judged(const StereoViews& v, int l, int r);
+// Whether a pair of views is a pair of door outlines, judged by the door's fit: their class has
+// sizes (door_classes), both have four corners, the up direction is known, and cut views can be
+// of one door (cuts_of_one_door).
+bool is_door_pair(const StereoViews& v, int l, int r);
 
 // The detections no pair took, paired by an occluder's explanation (explain_by_occluder) of
 // their pair's refusal in `occluded`, one to one; the pairs so placed are added to `assigned`

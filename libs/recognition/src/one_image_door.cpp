@@ -56,26 +56,6 @@ struct OwnView {
   const RigCamera& other_camera;  // the fit's pinhole of the other image
 };
 
-// Which outline corner is each of the fit's (clockwise from the top left) for a whole outline:
-// its two sides nearer the image vertical (Triangulator::vertical_sides) as the left (0 top, 3
-// bottom) and right (1 top, 2 bottom) sides. The outline's own numbering starts at the corner of
-// least u + v (quadrilateral.hpp), which for a narrow outline seen at a grazing angle is a bottom
-// or top corner of a side.
-std::array<std::size_t, 4> fit_order(const std::array<Eigen::Vector2d, 4>& c) {
-  std::array<std::array<std::size_t, 2>, 2> sides;  // (top, bottom) each
-  const auto vertical = Triangulator::vertical_sides(c);
-  for (std::size_t s = 0; s < 2; ++s) {
-    const auto a = static_cast<std::size_t>(vertical[s][0]);
-    const auto b = static_cast<std::size_t>(vertical[s][1]);
-    sides[s] =
-        c[a].y() <= c[b].y() ? std::array<std::size_t, 2>{a, b} : std::array<std::size_t, 2>{b, a};
-  }
-  if (c[sides[0][0]].x() + c[sides[0][1]].x() > c[sides[1][0]].x() + c[sides[1][1]].x()) {
-    std::swap(sides[0], sides[1]);
-  }
-  return {sides[0][0], sides[1][0], sides[1][1], sides[0][1]};
-}
-
 // Both sides vertical in 3D as the own image shows them: a vertical line and the camera centre
 // span a plane that holds `up`, |n . u| / |n| the sine of the side's tilt from vertical.
 bool sides_vertical(const OwnView& o, double max_tilt_rad) {
@@ -277,14 +257,8 @@ std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int imag
   const std::array<RigCamera, 2> cameras = v.rig.cameras();
   const Eigen::Isometry3d left_T_own =
       image == 0 ? Eigen::Isometry3d::Identity() : v.rig.right_T_left.inverse();
-  // A cut outline is numbered with its cut side first (border_cut_of); a whole one is renumbered.
-  const std::array<Eigen::Vector2d, 4> outline = corner_array(corners);
-  const std::array<std::size_t, 4> order =
-      cut == BorderCut::kNone ? fit_order(outline) : std::array<std::size_t, 4>{0, 1, 2, 3};
-  std::array<Eigen::Vector2d, 4> in_order;
-  for (std::size_t j = 0; j < 4; ++j) in_order[j] = outline[order[j]];
   const OwnView o{image,
-                  in_order,
+                  corner_array(corners),
                   *sweep,
                   cameras[static_cast<std::size_t>(image)],
                   image == 0 ? v.right_intrinsics : v.left_intrinsics,

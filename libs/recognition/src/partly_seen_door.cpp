@@ -656,7 +656,6 @@ std::optional<Candidate> judge_partly_seen_door(
       .left = l,
       .right = r,
       .cost = cost,
-      .rectangle = true,
       .triangulation = {centre_m + reference_offset_m * centre_m.normalized(), covariance}};
 }
 

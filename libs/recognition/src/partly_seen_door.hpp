@@ -75,6 +75,12 @@
 
 namespace vsl::recognition::detail {
 
+// The position gate of door outlines' corners: within this fraction of the outlines' image height
+// of the fitted door (a strip that segmentation adds along a side in one image moves its corners by
+// a few per cent of the height), when that is more than
+// StereoMatchOptions::max_epipolar_distance_px.
+inline constexpr double kRectangleEpipolarFraction = 0.05;
+
 // The least cosine of the angle between the door's normal and the view (about 78 deg): at more
 // grazing angles no door of the evaluations was recognized whole either (PartlySeenLimits).
 inline constexpr double kMinCosViewing = 0.2;

@@ -15,9 +15,6 @@ struct Candidate {
   int left = -1;
   int right = -1;
   double cost = 0.0;  // normalized: sum of (gate quantity / its limit)^2, each term <= 1
-  // True when the pair is two rectangle outlines placed by the door's fit (partly_seen_door.hpp);
-  // false when from the reference points.
-  bool rectangle = false;
   Triangulation triangulation;
 };
 

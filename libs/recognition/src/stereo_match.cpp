@@ -46,21 +46,19 @@ double elongation(const Detection& d) {
                                  : std::numeric_limits<double>::infinity();
 }
 
-using detail::corner_array;
 using detail::cut_bar_of;
 using detail::door_class_of;
-using detail::Explanation;
 using detail::extent_range;
 using detail::height_range;
 using detail::judge_door;
 using detail::reference_depth_offset;
 using detail::StereoViews;
 
-// Judges one pair of whole views against every gate, in order (paper §2.1: position on the
-// epipolar line, size, orientation, then the triangulated point's depth and extent); a pair that
-// passes all of them is a candidate with its triangulation. Triangulating here rather than after
-// the assignment means that a pair which cannot be triangulated is never assigned, and its
-// detections stay free for other pairs.
+// Judges one pair of views that are not a door's outlines against every gate, in order (paper
+// §2.1: position on the epipolar line, size, orientation, then the triangulated point's depth and
+// extent); a pair that passes all of them is a candidate with its triangulation. Triangulating
+// here rather than after the assignment means that a pair which cannot be triangulated is never
+// assigned, and its detections stay free for other pairs.
 class PairJudge {
  public:
   PairJudge(const StereoViews& views, int l, int r, StereoPairTrace& trace, bool cut_bar)
@@ -71,8 +69,7 @@ class PairJudge {
         dl_(views.left[l]),
         dr_(views.right[r]),
         trace_(trace),
-        cut_bar_(cut_bar),
-        rectangles_(!views.left_corners[l].empty() && !views.right_corners[r].empty()) {}
+        cut_bar_(cut_bar) {}
 
   std::optional<detail::Candidate> judge() {
     // Hysteresis: a blob the class model rates just beyond its threshold in one image counts
@@ -89,19 +86,15 @@ class PairJudge {
     c.right = r_;
     c.cost = epipolar_term * epipolar_term + area_term_ * area_term_ +
              orientation_term_ * orientation_term_;
-    c.rectangle = rectangle_;
     c.triangulation = *triangulation_;
     trace_.cost = c.cost;
     return c;
   }
 
  private:
-  // Position: the right reference point on (near) the left one's epipolar line. For two
-  // rectangle outlines, their vertical sides nest along the epipolar direction
-  // (rectangle_containment_excess_px), to kRectangleEpipolarFraction of the height; two views of
-  // a bar across the epipolar lines, the containment of the shorter segment in the longer, and a
-  // cut bar along them, its ends both images see on each other's epipolar lines. Then the side
-  // gate of two door outlines (door_pair.hpp).
+  // Position: the right reference point on (near) the left one's epipolar line; for two views of
+  // a bar across the epipolar lines, the containment of the shorter segment in the longer, and for
+  // a cut bar along them, its ends both images see on each other's epipolar lines.
   bool gate_position() {
     // A stack of drawer fronts merged into one door-shaped blob carries a handle per front, one
     // above another; judged on each image's outline, also when the other image's blob has none.
@@ -120,21 +113,10 @@ class PairJudge {
     epipolar_px_ =
         bar_ ? bar_->containment_excess_px
              : v_.epipolar.distance_px(v_.left_ideal[l_].ideal_px, v_.right_ideal[r_].ideal_px);
-    if (rectangles_) {
-      epipolar_px_ = detail::rectangle_containment_excess_px(v_.left_corners[l_],
-                                                             v_.right_corners[r_], v_.epipolar);
-    }
-    max_epipolar_px_ =
-        rectangles_ ? std::max(o_.max_epipolar_distance_px,
-                               kRectangleEpipolarFraction * 0.5 * (dl_.height_px + dr_.height_px))
-                    : o_.max_epipolar_distance_px;
+    max_epipolar_px_ = o_.max_epipolar_distance_px;
     if (!(epipolar_px_ <= max_epipolar_px_)) {
       detail::refuse(trace_, StereoGate::kEpipolar, epipolar_px_, max_epipolar_px_);
       return false;
-    }
-    if (rectangles_) {
-      sides_ = detail::judge_door_sides(v_.outlines(l_, r_), v_.triangulator, v_.up, o_, trace_);
-      if (!sides_) return false;
     }
     return true;
   }
@@ -202,8 +184,7 @@ class PairJudge {
   }
 
   // The 3D point: triangulated from the reference points, with the covariance the pixel noise
-  // gives it; two views of a bar by the bar's fit (partly_seen_bar.hpp), two door outlines' by
-  // the door's fit (fit_door), each with the fit's covariance.
+  // gives it; two views of a bar by the bar's fit (partly_seen_bar.hpp), with the fit's.
   bool place_point() {
     offset_m_ = reference_depth_offset(o_, dl_.type);
     // A bar's views need not show the same part of it, so their reference points are not one
@@ -218,39 +199,6 @@ class PairJudge {
     // The gates below measure the visible surface, before the reference point's offset.
     point_ = triangulation_->left_camera_position_m -
              offset_m_ * triangulation_->left_camera_position_m.normalized();
-    if (rectangles_ && door_class_of(o_, dl_.type) && v_.up.norm() > 0.0 &&
-        detail::Triangulator::vertical_sides(corner_array(v_.left_corners[l_]))[0][1] == 3) {
-      return fit_door();
-    }
-    // Without the fit, a side that is no door edge leaves nothing to place the door by.
-    if (rectangles_ && sides_->tilted_side >= 0) {
-      detail::refuse(trace_, StereoGate::kSideTilt, sides_->worst_tilt_rad, o_.max_side_tilt_rad);
-      return false;
-    }
-    return true;
-  }
-  // Two whole door outlines: the door fitted to all their corners (partly_seen_door.hpp), those
-  // of a side that is no door edge in one outline (the side gate) merged there; its centre and
-  // covariance the fit's.
-  bool fit_door() {
-    using detail::CornerState;
-    std::array<std::array<CornerState, 4>, 2> states;
-    states[0].fill(CornerState::kSeen);
-    states[1].fill(CornerState::kSeen);
-    if (sides_->tilted_side >= 0) {
-      std::array<CornerState, 4>& merged = states[sides_->tilted_in_left ? 0 : 1];
-      const std::array<std::size_t, 2> side = sides_->tilted_side == 0
-                                                  ? std::array<std::size_t, 2>{0, 3}
-                                                  : std::array<std::size_t, 2>{1, 2};
-      merged[side[0]] = merged[side[1]] = CornerState::kMerged;
-    }
-    const std::optional<detail::Candidate> fit =
-        judge_door(v_, l_, r_, states[0], states[1], trace_, Explanation::kWhole);
-    if (!fit) return false;
-    const Eigen::Vector3d& reference_m = fit->triangulation.left_camera_position_m;
-    set_point(reference_m - offset_m_ * reference_m.normalized());
-    triangulation_->left_camera_covariance_m2 = fit->triangulation.left_camera_covariance_m2;
-    rectangle_ = true;
     return true;
   }
   bool place_bar() {
@@ -306,44 +254,53 @@ class PairJudge {
   const Detection& dr_;
   StereoPairTrace& trace_;
   const bool cut_bar_;
-  const bool rectangles_;
   std::optional<detail::BarViewsAlong> bar_;
   std::optional<double> bar_length_m_;  // the fitted bar's, none when the class's
-  std::optional<detail::DoorSides> sides_;
   std::optional<detail::Triangulation> triangulation_;
   Eigen::Vector3d point_ = Eigen::Vector3d::Zero();  // the visible surface, left camera frame
   double offset_m_ = 0.0;
   double epipolar_px_ = 0.0, max_epipolar_px_ = 0.0;
   double area_term_ = 0.0, orientation_term_ = 0.0;
-  bool rectangle_ = false;
 };
 
-// A pair of door views: two whole ones through the cross match's gates (PairJudge); one or
-// both cut by the image border as one door seen in part (partly_seen_door.hpp), its corners'
-// states from the cuts. A whole pair refused that an occluder may explain is added to
+// A pair of door outlines of a class with sizes (is_door_pair): one door seen whole or in part,
+// placed by the door's fit (door_pairing.hpp), the corners' states from the border's cuts. Before
+// it, what the outlines hold: not two weak views (Detection::needs_partner: a blob the class model
+// rates just beyond its threshold counts when the other image shows it clearly), no handles one
+// above another (a stack of drawer fronts merged into one door-shaped blob carries a handle per
+// front), and for whole outlines the side gate (door_pair.hpp: a side that is no door edge in one
+// outline is merged there). A whole pair so refused that an occluder may explain is added to
 // `occluded` (explain_unpaired_by_occluder).
 std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, int r,
                                                  StereoPairTrace& trace,
                                                  std::vector<StereoPairTrace>& occluded) {
-  const StereoMatchOptions& options = v.options;
+  using detail::CornerState;
   const Detection& dl = v.left[l];
   const Detection& dr = v.right[r];
-  const bool cut = dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone;
-  if (!cut) {
-    std::optional<detail::Candidate> c = PairJudge(v, l, r, trace, false).judge();
-    const StereoMatchOptions::DoorClass* door = door_class_of(options, dl.type);
-    if (!c && door && v.left_corners[l].size() == 4 && v.right_corners[r].size() == 4 &&
-        v.up.norm() > 0.0) {
-      occluded.push_back(trace);
-    }
-    return c;
+  if (dl.needs_partner && dr.needs_partner) {
+    return detail::refuse(trace, StereoGate::kWeakPair, 0.0, 0.0);
   }
   if (const detail::BarVerdict bars = v.judge_bars(dl, dr, -1); bars.gate != StereoGate::kNone) {
-    // Handles one above another: drawer fronts merged into one blob (max_bar_height_spread).
     return detail::refuse(trace, bars.gate, bars.value, bars.limit);
   }
-  return judge_door(v, l, r, detail::corner_states_of(dl.border_cut),
-                    detail::corner_states_of(dr.border_cut), trace);
+  if (dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone) {
+    return judge_door(v, l, r, detail::corner_states_of(dl.border_cut),
+                      detail::corner_states_of(dr.border_cut), trace);
+  }
+  std::optional<detail::Candidate> c;
+  if (const auto sides =
+          detail::judge_door_sides(v.outlines(l, r), v.triangulator, v.up, v.options, trace)) {
+    std::array<std::array<CornerState, 4>, 2> states;
+    for (std::array<CornerState, 4>& image : states) image.fill(CornerState::kSeen);
+    if (sides->tilted_side >= 0) {  // side 0 is corners 0-3, side 1 corners 1-2
+      std::array<CornerState, 4>& merged = states[sides->tilted_in_left ? 0 : 1];
+      const std::size_t top = sides->tilted_side == 0 ? 0 : 1;
+      merged[top] = merged[3 - top] = CornerState::kMerged;
+    }
+    c = judge_door(v, l, r, states[0], states[1], trace);
+  }
+  if (!c) occluded.push_back(trace);
+  return c;
 }
 
 // The cross match (paper §2.1): every pair of same-type detections judged; the candidates, and
@@ -369,9 +326,12 @@ std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
         const bool both = dl.border_cut != BorderCut::kNone && dr.border_cut != BorderCut::kNone;
         if (!cut_bar_of(v.options, dl.type) || (both && dl.border_cut != dr.border_cut)) continue;
         c = PairJudge(v, l, r, trace, true).judge();
-      } else {
-        if (!detail::door_pair_is_judged(v, l, r)) continue;
+      } else if (detail::is_door_pair(v, l, r)) {
         c = judge_door_pair(v, l, r, trace, occluded);
+      } else if (!cut) {
+        c = PairJudge(v, l, r, trace, false).judge();
+      } else {
+        continue;
       }
       if (c) candidates.push_back(std::move(*c));
       if (traces) traces->push_back(trace);

@@ -6,11 +6,22 @@
 
 namespace vsl::recognition::detail {
 
-// Undistorted corners of a detection's outline (empty unless it has four).
 std::vector<IdealPixel> undistorted_corners(const Detection& d,
                                             const head::CameraIntrinsics& intrinsics) {
   if (d.corners_px.size() != 4) return {};
-  return undistort(d.corners_px, intrinsics);
+  std::vector<IdealPixel> corners = undistort(d.corners_px, intrinsics);
+  if (d.border_cut != BorderCut::kNone) return corners;
+  // The two sides nearer the image vertical as the left (0 top, 3 bottom) and right (1 top, 2
+  // bottom) ones.
+  const std::array<Eigen::Vector2d, 4> c = corner_array(corners);
+  std::array<std::array<int, 2>, 2> sides = Triangulator::vertical_sides(c);
+  for (auto& [top, bottom] : sides) {
+    if (c[top].y() > c[bottom].y()) std::swap(top, bottom);
+  }
+  if (c[sides[0][0]].x() + c[sides[0][1]].x() > c[sides[1][0]].x() + c[sides[1][1]].x()) {
+    std::swap(sides[0], sides[1]);
+  }
+  return {corners[sides[0][0]], corners[sides[1][0]], corners[sides[1][1]], corners[sides[0][1]]};
 }
 
 // The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the
@@ -62,7 +73,6 @@ const StereoMatchOptions::DoorClass* door_class_of(const StereoMatchOptions& opt
   return entry_of(options.door_classes, type);
 }
 
-// The class's greatest width, metres (its door class's max_width_m); 0 when not configured.
 const StereoMatchOptions::CutBar* cut_bar_of(const StereoMatchOptions& options,
                                              const std::string& type) {
   return entry_of(options.cut_bars, type);

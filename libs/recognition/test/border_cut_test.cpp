@@ -158,11 +158,11 @@ TEST_F(BorderCutTest, WidthLeaningSideAndEpipolarGates) {
   tilted.left.corners_px[1].x() += 20.0;
   EXPECT_TRUE(match({tilted.left}, {tilted.right}, &trace).empty());
   EXPECT_EQ(trace[0].refused_by, StereoGate::kRectangleFit);
-  // The right image's whole edge 8 px lower at one end: off the epipolar line.
+  // The right image's bottom edge 8 px lower at one end: where a side ends only the left image
+  // says (a strip that segmentation adds in one image moves nothing), and the door is placed.
   Pair off = p;
   off.right.corners_px[2].y() += 8.0;
-  EXPECT_TRUE(match({off.left}, {off.right}, &trace).empty());
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kEpipolar);
+  EXPECT_EQ(match({off.left}, {off.right}).size(), 1u);
   // Turned 83 deg, seen nearly edge-on (the normal about 80 deg from the ray): refused, as no
   // outline is trusted at such angles.
   EXPECT_EQ(match({cut_door(kAbove, BorderCut::kTop, 1.2).left},

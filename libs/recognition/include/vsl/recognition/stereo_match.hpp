@@ -124,11 +124,6 @@ struct StereoMatchOptions {
   std::vector<CutBar> cut_bars;
 };
 
-// The epipolar gate of two rectangle outlines (doors): their vertical sides nest along the
-// epipolar direction to this fraction of their image height (pixels), when that is more than
-// StereoMatchOptions::max_epipolar_distance_px.
-inline constexpr double kRectangleEpipolarFraction = 0.05;
-
 // The frame's grey images (CV_8UC1, raw pixels, the intrinsics' size), for the gates that look
 // at the images themselves (StereoMatchOptions::min_side_correlation,
 // min_single_view_correlation); without them those are off.
@@ -203,10 +198,10 @@ struct StereoPairTrace {
 // Matches detections of the same type one to one (each left detection to at most one right
 // detection and vice versa) and triangulates each pair. A pair is admissible when it passes every
 // gate (same type, epipolar distance, depth range, area ratio, orientation of elongated blobs,
-// the class's length range; for two rectangle outlines the epipolar gate is that their vertical
-// sides nest along the epipolar direction, one image's outline possibly a strip longer at the top
-// or the bottom, up to 15% of the side); its normalized cost is the sum of the squared epipolar
-// distance, log area ratio and orientation difference, each over its limit. Among the admissible
+// the class's length range); its normalized cost is the sum of the squared epipolar distance, log
+// area ratio and orientation difference, each over its limit. Two door outlines of a class with
+// sizes (StereoMatchOptions::door_classes) are instead judged by the door's fit, whose cost is its
+// worst corner residual over its tolerance, squared (docs/recognition.md). Among the admissible
 // pairs the assignment makes as many matches as possible and, among those, the ones of least total
 // cost (Hungarian method): with repeated identical objects (the two handles of a double door are 7
 // cm apart, a disparity of 20 px at 2 m), taking the cheapest pair first can pair one object's left
