@@ -192,11 +192,7 @@ std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
   const bool position_or_side = trace.refused_by == StereoGate::kEpipolar ||
                                 trace.refused_by == StereoGate::kSideTilt ||
                                 trace.refused_by == StereoGate::kRectangleFit;
-  if (!position_or_side ||
-      v.judge_bars(v.left[l], v.right[r], v.options.single_view_max_bars_inside).gate !=
-          StereoGate::kNone) {
-    return std::nullopt;
-  }
+  if (!position_or_side) return std::nullopt;
   // Two views of one door are about as large (the appearance gate), and the three corners an
   // occluder leaves lie on each other's epipolar lines: pairs of two doors are not fitted.
   const Detection& dl = v.left[l];

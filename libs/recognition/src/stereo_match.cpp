@@ -80,7 +80,7 @@ class PairJudge {
     if (!gate_position() || !gate_appearance() || !place_point() || !gate_size()) {
       return std::nullopt;
     }
-    const double epipolar_term = max_epipolar_px_ > 0.0 ? epipolar_px_ / max_epipolar_px_ : 0.0;
+    const double epipolar_term = epipolar_px_ / o_.max_epipolar_distance_px;
     detail::Candidate c;
     c.left = l_;
     c.right = r_;
@@ -98,8 +98,7 @@ class PairJudge {
   bool gate_position() {
     // A stack of drawer fronts merged into one door-shaped blob carries a handle per front, one
     // above another; judged on each image's outline, also when the other image's blob has none.
-    if (const detail::BarVerdict bars = v_.judge_bars(dl_, dr_, -1);
-        bars.gate != StereoGate::kNone) {
+    if (const detail::BarVerdict bars = v_.judge_bars(dl_, dr_); bars.gate != StereoGate::kNone) {
       detail::refuse(trace_, bars.gate, bars.value, bars.limit);
       return false;
     }
@@ -113,9 +112,8 @@ class PairJudge {
     epipolar_px_ =
         bar_ ? bar_->containment_excess_px
              : v_.epipolar.distance_px(v_.left_ideal[l_].ideal_px, v_.right_ideal[r_].ideal_px);
-    max_epipolar_px_ = o_.max_epipolar_distance_px;
-    if (!(epipolar_px_ <= max_epipolar_px_)) {
-      detail::refuse(trace_, StereoGate::kEpipolar, epipolar_px_, max_epipolar_px_);
+    if (!(epipolar_px_ <= o_.max_epipolar_distance_px)) {
+      detail::refuse(trace_, StereoGate::kEpipolar, epipolar_px_, o_.max_epipolar_distance_px);
       return false;
     }
     return true;
@@ -259,7 +257,7 @@ class PairJudge {
   std::optional<detail::Triangulation> triangulation_;
   Eigen::Vector3d point_ = Eigen::Vector3d::Zero();  // the visible surface, left camera frame
   double offset_m_ = 0.0;
-  double epipolar_px_ = 0.0, max_epipolar_px_ = 0.0;
+  double epipolar_px_ = 0.0;
   double area_term_ = 0.0, orientation_term_ = 0.0;
 };
 
@@ -280,7 +278,7 @@ std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, in
   if (dl.needs_partner && dr.needs_partner) {
     return detail::refuse(trace, StereoGate::kWeakPair, 0.0, 0.0);
   }
-  if (const detail::BarVerdict bars = v.judge_bars(dl, dr, -1); bars.gate != StereoGate::kNone) {
+  if (const detail::BarVerdict bars = v.judge_bars(dl, dr); bars.gate != StereoGate::kNone) {
     return detail::refuse(trace, bars.gate, bars.value, bars.limit);
   }
   if (dl.border_cut != BorderCut::kNone || dr.border_cut != BorderCut::kNone) {
@@ -438,9 +436,8 @@ void place_single_views(const StereoViews& v, const std::vector<detail::Candidat
         if (pass == 0 ? cut : !from_one_side || placed[static_cast<std::size_t>(image)][d]) {
           continue;
         }
-        if (detail::judge_bars_on_outline(detections, detection,
-                                          options.single_view_max_bars_inside, options)
-                .gate != StereoGate::kNone) {
+        if (detail::judge_bars_on_outline(detections, detection, options).gate !=
+            StereoGate::kNone) {
           continue;
         }
         const std::optional<StereoPercept> percept = place_from_one_image(v, image, d, pass);
@@ -514,8 +511,6 @@ const char* stereo_gate_name(StereoGate gate) {
       return "height";
     case StereoGate::kWeakPair:
       return "weak_pair";
-    case StereoGate::kBarsInside:
-      return "bars_inside";
     case StereoGate::kStackedBars:
       return "stacked_bars";
     case StereoGate::kRectangleFit:

@@ -121,7 +121,6 @@ constexpr NumberKey kNumberKeys[] = {
     {"min_peak_margin", &StereoMatchOptions::min_peak_margin, 0.0, 2.0},
     {"single_view_min_separation_m", &StereoMatchOptions::single_view_min_separation_m, 0.0, 10.0},
     // Below a half: the two sides' bands do not meet.
-    {"neighbour_handle_side_band", &StereoMatchOptions::neighbour_handle_side_band, 0.0, 0.49},
     {"max_bar_height_spread", &StereoMatchOptions::max_bar_height_spread, 0.0, 1.0},
     // Below pi/2: sin() still grows.
     {"max_side_tilt_rad", &StereoMatchOptions::max_side_tilt_rad, 0.0, 1.5},
@@ -133,27 +132,12 @@ constexpr NumberKey kNumberKeys[] = {
 StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   StereoMatchOptions out;
   section.expect_map();
-  section.expect_keys({"max_epipolar_distance_px",
-                       "min_depth_m",
-                       "max_depth_m",
-                       "max_area_ratio",
-                       "max_orientation_difference_rad",
-                       "min_elongation_for_orientation",
-                       "pixel_sigma_px",
-                       "reference_depth_offset_m",
-                       "major_extent_range_m",
-                       "height_range_m",
-                       "max_side_tilt_rad",
-                       "bar_types",
-                       "min_side_correlation",
-                       "min_single_view_correlation",
-                       "min_peak_margin",
-                       "single_view_min_separation_m",
-                       "single_view_max_bars_inside",
-                       "neighbour_handle_side_band",
-                       "max_bar_height_spread",
-                       "door_classes",
-                       "cut_bars"});
+  section.expect_keys(
+      {"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
+       "max_orientation_difference_rad", "min_elongation_for_orientation", "pixel_sigma_px",
+       "reference_depth_offset_m", "major_extent_range_m", "height_range_m", "max_side_tilt_rad",
+       "bar_types", "min_side_correlation", "min_single_view_correlation", "min_peak_margin",
+       "single_view_min_separation_m", "max_bar_height_spread", "door_classes", "cut_bars"});
   for (const NumberKey& number : kNumberKeys) {
     if (const auto v = section.find(number.key)) {
       out.*number.member = v->as_double_in(number.lo, number.hi);
@@ -169,11 +153,6 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
       !(out.min_side_correlation > 0.0)) {
     section.at("min_single_view_correlation")
         .fail("needs min_side_correlation > 0 (the side correlation it sweeps with)");
-  }
-  if (const auto v = section.find("single_view_max_bars_inside")) {
-    const std::int64_t bars = v->as_int();
-    if (bars < 0 || bars > 100) v->fail("must be an integer in [0, 100]");
-    out.single_view_max_bars_inside = static_cast<int>(bars);
   }
   if (const auto offsets = section.find("reference_depth_offset_m")) {
     offsets->expect_map();

@@ -103,11 +103,9 @@ struct StereoViews {
   }
 
   // The worse of the two outlines' verdicts on the handles they hold (bars_on_outline.hpp).
-  BarVerdict judge_bars(const Detection& dl, const Detection& dr, int max_bars_inside) const {
-    const BarVerdict on_left = judge_bars_on_outline(left, dl, max_bars_inside, options);
-    return on_left.gate != StereoGate::kNone
-               ? on_left
-               : judge_bars_on_outline(right, dr, max_bars_inside, options);
+  BarVerdict judge_bars(const Detection& dl, const Detection& dr) const {
+    const BarVerdict on_left = judge_bars_on_outline(left, dl, options);
+    return on_left.gate != StereoGate::kNone ? on_left : judge_bars_on_outline(right, dr, options);
   }
   DoorOutlines outlines(int l, int r) const {
     return {corner_array(left_corners[l]), corner_array(right_corners[r])};

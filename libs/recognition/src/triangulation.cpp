@@ -54,9 +54,8 @@ std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
     const Eigen::Vector3d& up) const {
   std::array<std::array<double, 2>, 2> tilts{};
-  const std::array<std::array<int, 2>, 2> sides = vertical_sides(left);
   for (int s = 0; s < 2; ++s) {
-    const auto [i, j] = sides[s];
+    const int i = s, j = 3 - s;  // corners 0-3, then 1-2
     const Eigen::Vector3d nl =
         (left_k_inverse_ * left[i].homogeneous()).cross(left_k_inverse_ * left[j].homogeneous());
     const Eigen::Vector3d nr = (right_k_inverse_in_left_ * right[i].homogeneous())

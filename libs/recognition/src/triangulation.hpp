@@ -59,15 +59,13 @@ class Triangulator {
   static std::array<std::array<int, 2>, 2> vertical_sides(
       const std::array<Eigen::Vector2d, 4>& corners_px);
 
-  // How far from vertical in 3D the rectangle's sides nearer the image vertical are, as seen by
-  // both cameras: a 3D line is vertical exactly when the plane its image spans through the camera
-  // centre (the plane of the rays through its two ends) holds the up direction. Returns the
-  // largest, over the two sides in each image, of |n . up| (n the plane's unit normal, `up` a
-  // unit vector in the left camera frame): the sine of the angle between `up` and the plane, 0
-  // for a vertical side in any view. A side of a door's outline that is not vertical is no door
-  // edge (an occluder's contour, a strip of the neighbour). 1 when a side is degenerate.
-  // The same per side and image: [side][0 left, 1 right], the sides in the order
-  // vertical_sides gives them.
+  // How far from vertical in 3D a rectangle's sides 0-3 and 1-2 are (undistorted_corners numbers
+  // a whole outline so that these are the sides nearer the image vertical), per side and image
+  // ([side][0 left, 1 right]): a 3D line is vertical exactly when the plane its image spans
+  // through the camera centre holds the up direction, so |n . up| (n the plane's unit normal,
+  // `up` a unit vector in the left camera frame) is the sine of the side's tilt; 1 when a side is
+  // degenerate. A side of a door's outline that is not vertical is no door edge (an occluder's
+  // contour, a strip of the neighbour).
   std::array<std::array<double, 2>, 2> side_tilts(
       const std::array<Eigen::Vector2d, 4>& left_corners_ideal_px,
       const std::array<Eigen::Vector2d, 4>& right_corners_ideal_px,

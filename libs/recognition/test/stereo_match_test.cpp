@@ -655,8 +655,6 @@ stereo:
   min_single_view_correlation: 0.75
   min_peak_margin: 0.15
   single_view_min_separation_m: 0.25
-  single_view_max_bars_inside: 2
-  neighbour_handle_side_band: 0.3
   max_bar_height_spread: 0.35
   door_classes:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
@@ -690,8 +688,6 @@ stereo:
   EXPECT_EQ(o.min_single_view_correlation, 0.75);
   EXPECT_EQ(o.min_peak_margin, 0.15);
   EXPECT_EQ(o.single_view_min_separation_m, 0.25);
-  EXPECT_EQ(o.single_view_max_bars_inside, 2);
-  EXPECT_EQ(o.neighbour_handle_side_band, 0.3);
   EXPECT_EQ(o.max_bar_height_spread, 0.35);
   ASSERT_EQ(o.door_classes.size(), 1u);
   EXPECT_EQ(o.door_classes[0].type, "door");
@@ -748,17 +744,6 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
       << stereo_error("  bar_types: [[handle]]\n");
   EXPECT_NE(stereo_error("  min_single_view_correlation: 1.5\n")
                 .find("s.yaml:2: stereo.min_single_view_correlation"),
-            std::string::npos);
-  EXPECT_NE(stereo_error("  single_view_max_bars_inside: 1.5\n")
-                .find("s.yaml:2: stereo.single_view_max_bars_inside"),
-            std::string::npos)
-      << stereo_error("  single_view_max_bars_inside: 1.5\n");
-  // The two sides' bands must not meet (each under half the outline's width).
-  EXPECT_NE(stereo_error("  neighbour_handle_side_band: 0.5\n")
-                .find("s.yaml:2: stereo.neighbour_handle_side_band"),
-            std::string::npos)
-      << stereo_error("  neighbour_handle_side_band: 0.5\n");
-  EXPECT_NE(stereo_error("  single_view_max_bars_inside: -1\n").find("[0, 100]"),
             std::string::npos);
   EXPECT_NE(
       stereo_error("  max_bar_height_spread: 1.5\n").find("s.yaml:2: stereo.max_bar_height_spread"),

@@ -73,12 +73,6 @@ struct StereoMatchOptions {
   // ... and no percept of the type may lie within this distance (a second outline of a door
   // already placed), metres.
   double single_view_min_separation_m = 0.2;
-  // Handles on a door outline (bars_on_outline.hpp): a door placed from one image, or with an
-  // occluded corner, holds at most this many bar detections inside its outline ...
-  int single_view_max_bars_inside = 1;
-  // ... or one more when both lie within this fraction of its width from one vertical side (its
-  // own handle by its closing edge and a double-door neighbour's beyond the reveal); 0: off.
-  double neighbour_handle_side_band = 0.0;
   // Any door outline is refused when the handles on it lie at heights differing by more than this
   // fraction of its height: one above another they are a stack of drawer fronts merged into one
   // door-shaped blob. Needs bar_types; 0 turns it off.
@@ -157,8 +151,8 @@ struct StereoPercept {
 
 // The gates of match_and_triangulate (kTriangulation: the pair's point cannot be triangulated,
 // e.g. it is not in front of both cameras). A pair meets them in this order: kWeakPair; with its
-// position kBarsInside, kStackedBars, kEpipolar and kSideTilt; kAreaRatio, kOrientation;
-// kTriangulation and kRectangleFit (a door's fit); kDepth, kExtent, kHeight.
+// position kStackedBars, kEpipolar and kSideTilt; kAreaRatio, kOrientation; kTriangulation and
+// kRectangleFit (a door's fit); kDepth, kExtent, kHeight.
 enum class StereoGate {
   kNone,
   kEpipolar,
@@ -170,9 +164,6 @@ enum class StereoGate {
   kExtent,
   kHeight,
   kWeakPair,  // both detections weak (Detection::needs_partner)
-  // more bar detections inside an outline than allowed (doors from one image, occluders'
-  // explanations: single_view_max_bars_inside)
-  kBarsInside,
   // bar detections on an outline one above another (max_bar_height_spread)
   kStackedBars,
   // a corner of a door's outline farther from the fitted rectangle than the outlines' tolerance
