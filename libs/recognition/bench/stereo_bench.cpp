@@ -293,7 +293,6 @@ void BM_OccluderCutDoor(benchmark::State& state) {
   options.max_side_tilt_rad = 0.03;
   options.height_range_m = {{"door", 0.5, 2.5}};
   StereoMatchOptions::DoorClass door = test::cut_door_options({0.716});
-  door.occluder_cut_min_level_visible_m = 0.4;
   options.door_classes = {door};
   match_one_pair(state, left, right, calibration, options, -down, "the occluded door");
 }

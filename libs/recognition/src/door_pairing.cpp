@@ -151,8 +151,6 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
     limits.tolerance_px =
         std::max(limits.tolerance_px,
                  kRectangleEpipolarFraction * 0.5 * (v.left[l].height_px + v.right[r].height_px));
-  } else if (explanation == Explanation::kLowerPartHidden) {
-    limits.min_visible_if_level_m = door.occluder_cut_min_level_visible_m;
   }
   limits.hidden_by_occluder = explanation == Explanation::kCornerHidden;
   if (widths_refused(v, views, trace)) return std::nullopt;

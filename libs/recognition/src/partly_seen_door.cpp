@@ -27,9 +27,6 @@ constexpr double kMaxVisibleOfTypical = 1.05;
 // At least this fraction of the typical width in view: less of a door is mostly a strip that
 // segmentation split off.
 constexpr double kMinVisibleOfTypicalWidth = 0.5;
-// An edge within this of level (radians) on the door's face: a drawer front's, or a table's
-// edge along the cupboards.
-constexpr double kLevelEdgeRad = 0.05;
 // The greatest standard deviation of the centre (metres) of a door placed with a corner hidden
 // in an image (an occluder's, or the image's own corner): three corners of a door 3-4 m away,
 // its width a few dozen pixels, leave its turn, and with it the centre, poorly known. Chosen on
@@ -259,8 +256,6 @@ struct Start {
   double visible_width_m = 0.0, visible_height_m = 0.0;
   // The least typical height the visible one does not exceed by more than kMaxVisibleOfTypical.
   std::optional<double> typical_height_m;
-  // The outline's lower edge's slope on the face (rise over run; infinite with a corner hidden).
-  double lower_edge_slope = kInf;
 };
 
 // The start: where each outline corner's ray meets the start's face (along a and up from its
@@ -301,10 +296,6 @@ std::optional<Start> start_of(const std::array<DoorOutlineView, 2>& views,
   Start start;
   start.visible_width_m = visible_extent_m(on_face, {{{0, 1}, {3, 2}}}, 0);
   start.visible_height_m = visible_extent_m(on_face, {{{3, 0}, {2, 1}}}, 1);
-  if (on_face[0][2] && on_face[0][3]) {
-    const Eigen::Vector2d lower = *on_face[0][2] - *on_face[0][3];
-    start.lower_edge_slope = std::abs(lower.y()) / std::max(std::abs(lower.x()), 1e-9);
-  }
   const std::vector<double>& heights = door.typical_heights_m;
   const auto typical = std::find_if(heights.begin(), heights.end(), [&](double t) {
     return start.visible_height_m <= kMaxVisibleOfTypical * t;
@@ -593,12 +584,6 @@ std::optional<Candidate> judge_partly_seen_door(
   if (!start) return refuse(trace, kTriangulation, 0.0, 0.0);
   SizePriors priors{!(measured[kLeft] && measured[kRight]), !(measured[kTop] && measured[kBottom])};
   if (const auto refusal = prior_refusal(*start, door, priors)) return refuse_by(*refusal);
-  // A drawer front of the door's colour is as short as a door whose lower part an occluder hides,
-  // but its lower edge is level: such an outline must show more than a drawer front is tall.
-  if (start->lower_edge_slope < std::tan(kLevelEdgeRad) &&
-      start->visible_height_m < limits.min_visible_if_level_m) {
-    return refuse(trace, kHeight, start->visible_height_m, limits.min_visible_if_level_m);
-  }
   const std::vector<CornerResidual> residuals =
       corner_residuals(views, cameras, basis, options.pixel_sigma_px, limits.tolerance_px);
   const DoorRectangle& s = start->rectangle;

@@ -54,10 +54,9 @@
 // corner); a measured height is within height_range_m, a measured width at least min_width_m
 // (unless the caller waives it), any width at most max_width_m; a size from the prior has at least
 // half of it in view; the door is seen from within about 78 deg of head-on (unless waived), within
-// the depth range; a level lower edge shows PartlySeenLimits::min_visible_if_level_m; and,
-// resting on a hidden or absent corner, the centre's standard deviation is at most 0.25 m. The
-// whole, cut, corner, occluder, one-hidden-corner, merged-side and one-image cases are these
-// states, not separate constructions.
+// the depth range; and, resting on a hidden or absent corner, the centre's standard deviation is at
+// most 0.25 m. The whole, cut, corner, occluder, one-hidden-corner, merged-side and one-image cases
+// are these states, not separate constructions.
 #pragma once
 
 #include <Eigen/Core>
@@ -106,11 +105,9 @@ struct DoorOutlineView {
 std::array<CornerState, 4> corner_states_of(BorderCut cut);
 
 // What a fit must meet beyond the class: every corner within `tolerance_px` of the model (ideal
-// pixels), and an outline whose lower edge is level on the face at least `min_visible_if_level_m`
-// of the door in view (a drawer front is as short; 0: any).
+// pixels).
 struct PartlySeenLimits {
   double tolerance_px = 0.0;
-  double min_visible_if_level_m = 0.0;
   // The hidden corners are an occluder's: one hidden in both images must be away from the door's
   // own corner (else nothing hides it). Otherwise the image border hides them.
   bool hidden_by_occluder = false;

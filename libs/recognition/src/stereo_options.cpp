@@ -22,7 +22,7 @@ StereoMatchOptions::DoorClass door_class_from(const config::Node& classes,
   const config::Node door = classes.at(type);
   door.expect_map();
   door.expect_keys({"typical_heights_m", "height_sigma_m", "min_width_m", "max_width_m",
-                    "occluder_cut_min_level_visible_m", "typical_width_m", "width_sigma_m"});
+                    "typical_width_m", "width_sigma_m"});
   StereoMatchOptions::DoorClass parsed;
   parsed.type = type;
   const config::Node heights = door.at("typical_heights_m");
@@ -38,9 +38,6 @@ StereoMatchOptions::DoorClass door_class_from(const config::Node& classes,
   parsed.max_width_m = door.at("max_width_m").as_double_in(0.0, 100.0);
   if (!(parsed.max_width_m > parsed.min_width_m)) {
     door.at("max_width_m").fail("must exceed min_width_m");
-  }
-  if (const auto v = door.find("occluder_cut_min_level_visible_m")) {
-    parsed.occluder_cut_min_level_visible_m = v->as_double_in(0.0, 100.0);
   }
   if (const auto v = door.find("typical_width_m")) {
     parsed.typical_width_m = v->as_double_in(0.0, 100.0);

@@ -59,10 +59,9 @@ class PartlySeenDoorTest : public ::testing::Test {
   }
 
   std::optional<Candidate> judge(const std::array<DoorOutlineView, 2>& v, StereoPairTrace& trace,
-                                 double min_visible_if_level_m = 0.0,
                                  bool hidden_by_occluder = false) {
     return judge_partly_seen_door(0, 0, v, rig_, triangulator_, options_, door_, 0.0,
-                                  {3.0, min_visible_if_level_m, hidden_by_occluder}, trace);
+                                  {3.0, hidden_by_occluder}, trace);
   }
 
   static constexpr double kWidthM = 0.45;
@@ -134,7 +133,7 @@ TEST_F(PartlySeenDoorTest, MergedCornersMayLieOutsideTheDoor) {
       v[0].corners_ideal_px[j] -= 0.15 * (v[0].corners_ideal_px[along] - v[0].corners_ideal_px[j]);
     }
     StereoPairTrace trace;
-    const auto c = judge(v, trace, 0.0, state == S::kHidden);
+    const auto c = judge(v, trace, state == S::kHidden);
     if (state == S::kMerged) {
       ASSERT_TRUE(c.has_value()) << stereo_gate_name(trace.refused_by) << " " << trace.value;
       EXPECT_LT((c->triangulation.left_camera_position_m - kCentre).norm(), 1e-3);
@@ -197,11 +196,6 @@ TEST_F(PartlySeenDoorTest, RefusesWhatTheViewsAndTheClassCannotPlace) {
   EXPECT_FALSE(judge(views(top, top), trace).has_value());
   EXPECT_EQ(trace.refused_by, StereoGate::kHeight);
   door_.typical_heights_m = {0.716, 1.246};
-  // Its lower edge level and less than a drawer front's height in view (0.8 m asked): a drawer
-  // front, not a door whose lower part an occluder hides.
-  const std::array<S, 4> lower{S::kSeen, S::kSeen, S::kOnSide, S::kOnSide};
-  EXPECT_FALSE(judge(views(lower, lower), trace, 0.8).has_value());
-  EXPECT_EQ(trace.refused_by, StereoGate::kHeight);
   // A corner 10 px off in the left image: no vertical rectangle fits.
   auto off = views(corner_states_of(BorderCut::kNone), corner_states_of(BorderCut::kNone));
   off[0].corners_ideal_px[1].x() += 10.0;
@@ -210,7 +204,7 @@ TEST_F(PartlySeenDoorTest, RefusesWhatTheViewsAndTheClassCannotPlace) {
   // A corner taken for hidden by an occluder where the door's own corner is seen: nothing hides
   // it. (The image border hides a corner where the door's may be.)
   const std::array<S, 4> hidden{S::kHidden, S::kSeen, S::kSeen, S::kSeen};
-  EXPECT_FALSE(judge(views(hidden, hidden), trace, 0.0, true).has_value());
+  EXPECT_FALSE(judge(views(hidden, hidden), trace, true).has_value());
   EXPECT_EQ(trace.refused_by, StereoGate::kEpipolar);
   EXPECT_TRUE(judge(views(hidden, hidden), trace).has_value());
 }
@@ -227,7 +221,7 @@ TEST_F(PartlySeenDoorTest, OneImagesOutlineAndTheOthersSidesPlaceTheDoor) {
     StereoPairTrace trace;
     FittedDoor fitted;
     const auto c = judge_partly_seen_door(0, -1, views(left, right), rig_, triangulator_, options_,
-                                          door_, 0.0, {3.0, 0.0, false}, trace, &fitted);
+                                          door_, 0.0, {3.0, false}, trace, &fitted);
     ASSERT_TRUE(c.has_value()) << stereo_gate_name(trace.refused_by) << " " << trace.value;
     EXPECT_LT((c->triangulation.left_camera_position_m - kCentre).norm(), 1e-3);
     EXPECT_NEAR(fitted.rectangle.width_m, kWidthM, 1e-3);

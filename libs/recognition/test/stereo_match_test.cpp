@@ -658,7 +658,6 @@ stereo:
   max_bar_height_spread: 0.35
   door_classes:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
-           occluder_cut_min_level_visible_m: 0.38,
            typical_width_m: 0.45, width_sigma_m: 0.08}
   cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}
 )",
@@ -695,7 +694,6 @@ stereo:
   EXPECT_EQ(o.door_classes[0].height_sigma_m, 0.1);
   EXPECT_EQ(o.door_classes[0].min_width_m, 0.3);
   EXPECT_EQ(o.door_classes[0].max_width_m, 1.0);
-  EXPECT_EQ(o.door_classes[0].occluder_cut_min_level_visible_m, 0.38);
   EXPECT_EQ(o.door_classes[0].typical_width_m, 0.45);
   ASSERT_EQ(o.cut_bars.size(), 1u);
   EXPECT_EQ(o.cut_bars[0].type, "handle");
@@ -793,9 +791,6 @@ TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
   // The door's constructions are states of its one fit, not switches.
   EXPECT_NE(cut_door_error("from_one_side: true").find("unknown key"), std::string::npos)
       << cut_door_error("from_one_side: true");
-  EXPECT_NE(cut_door_error("occluder_cut_min_level_visible_m: -1")
-                .find("stereo.door_classes.door.occluder_cut_min_level_visible_m"),
-            std::string::npos);
   // Doors whose left or right side neither image shows: a door's width, with a spread.
   EXPECT_NE(
       cut_door_error("typical_width_m: 0.2, width_sigma_m: 0.1")

@@ -94,10 +94,6 @@ struct StereoMatchOptions {
     // than max_width_m is two doors, or a correlation peak on another door's edge (metres).
     double min_width_m = 0.0;
     double max_width_m = 0.0;
-    // A door whose lower part an occluder hides, its lower edge level on the face (as a table's
-    // edge along the cupboards is), must show at least this much, metres: a drawer front of the
-    // door's colour, both edges level, is at most this tall.
-    double occluder_cut_min_level_visible_m = 0.0;
     // A door whose left or right side neither image shows is as wide as this or its visible
     // width, the greater, with the spread width_sigma_m; at least half of it must be in view.
     // Metres; 0 pairs no such detections.
