@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "convex_polygon.hpp"
+#include "triangulation.hpp"
 
 namespace vsl::recognition::detail {
 namespace {
@@ -24,10 +25,10 @@ bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
 
 double bar_height_spread(const std::vector<Detection>& detections, const Detection& outline,
                          const StereoMatchOptions& options) {
-  const std::vector<Eigen::Vector2d>& c = outline.corners_px;
+  const std::vector<Eigen::Vector2d> c = Triangulator::outline_in_fit_order(outline);
   if (c.size() != 4) return 0.0;
-  // Corners clockwise from the top left (quadrilateral.hpp): the outline's vertical axis runs
-  // from the middle of the top edge (0, 1) to the middle of the bottom edge (2, 3).
+  // The outline's vertical axis runs from the middle of the top edge (0, 1) to the middle of the
+  // bottom edge (2, 3).
   const Eigen::Vector2d top = 0.5 * (c[0] + c[1]);
   const Eigen::Vector2d axis = 0.5 * (c[2] + c[3]) - top;
   const double height_px = axis.norm();

@@ -1,7 +1,6 @@
 // How far a point lies inside a convex polygon (an outline's corners, in either winding), for the
-// tests of what an outline holds: handles inside a door outline (stereo_match.cpp), a hidden corner
-// inside the door a fit completes (partly_seen_door.cpp). Internal to
-// vsl_recognition.
+// tests of what an outline holds: handles on a door outline (bars_on_outline.cpp), a hidden corner
+// inside the door a fit completes (partly_seen_door.cpp). Internal to vsl_recognition.
 #pragma once
 
 #include <Eigen/Core>

@@ -30,7 +30,6 @@ std::optional<DoorSides> judge_door_sides(const DoorOutlines& outlines,
       }
     }
   }
-  out.worst_tilt_rad = std::asin(std::min(worst, 1.0));
   // With more than one side no door edge, the outlines do not say where the door is.
   if (tilted > 1) {
     return refuse(trace, StereoGate::kSideTilt, std::asin(std::min(worst, 1.0)),

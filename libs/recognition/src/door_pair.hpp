@@ -8,9 +8,7 @@
 
 #include <array>
 #include <optional>
-#include <vector>
 
-#include "epipolar.hpp"
 #include "triangulation.hpp"
 #include "vsl/recognition/stereo_match.hpp"
 
@@ -29,7 +27,6 @@ struct DoorOutlines {
 struct DoorSides {
   int tilted_side = -1;
   bool tilted_in_left = false;
-  double worst_tilt_rad = 0.0;  // over the sides judged
 };
 
 // The side gate: a pair whose sides are vertical in 3D passes, as does one with a single side

@@ -133,10 +133,11 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
   std::array<DoorOutlineView, 2> views{DoorOutlineView{corner_array(v.left_corners[l]), left},
                                        DoorOutlineView{corner_array(v.right_corners[r]), right}};
   for (std::size_t k = 0; k < 2; ++k) {
-    const Detection& d = k == 0 ? v.left[l] : v.right[r];
+    const std::vector<Eigen::Vector2d> raw_px =
+        Triangulator::outline_in_fit_order(k == 0 ? v.left[l] : v.right[r]);
     const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
     for (std::size_t j = 0; j < 4; ++j) {
-      if (beyond_image(d.corners_px[j], camera) && views[k].states[j] == CornerState::kSeen) {
+      if (beyond_image(raw_px[j], camera) && views[k].states[j] == CornerState::kSeen) {
         views[k].states[j] = CornerState::kHidden;
       }
     }
@@ -168,10 +169,10 @@ namespace {
 // Two whole door outlines that the cross match refused, explained by an occluder in front of the
 // door (a chair, the table's top): the lower corners on the sides (the occluder hides the door's
 // lower part: the pair was too short, or its lower corners off the fit), or one corner hidden in
-// both images (its contour is where the position gate, the side gate or the fit found no door
-// edge). Exactly one hidden corner must explain the pair: with two, the outlines do not say which
-// one the occluder hides, and the doors they give differ. `trace` keeps the cross match's refusal
-// unless the pair is so placed.
+// both images (its contour is where the side gate or the fit found no door edge). Exactly one
+// hidden corner must explain the pair: with two, the outlines do not say which one the occluder
+// hides, and the doors they give differ. `trace` keeps the cross match's refusal unless the pair is
+// so placed.
 std::optional<Candidate> explain_by_occluder(const StereoViews& v, int l, int r,
                                              StereoPairTrace& trace) {
   StereoPairTrace retry = trace;

@@ -10,7 +10,6 @@
 #include "door_rectangle_fit.hpp"
 #include "partly_seen_door.hpp"
 #include "side_correlation.hpp"
-#include "triangulation.hpp"
 
 namespace vsl::recognition::detail {
 namespace {

@@ -129,7 +129,7 @@ struct FittedDoor {
 // one_image_door.hpp) as one door seen in the two views, recording a refusal in `trace`; the
 // candidate with its centre (left camera frame, `reference_offset_m` behind the face along the
 // ray) and covariance otherwise, and the fitted rectangle in `fitted` when given. The caller tests
-// the handles inside.
+// the handles on the outlines (bars_on_outline.hpp).
 std::optional<Candidate> judge_partly_seen_door(
     int l, int r, const std::array<DoorOutlineView, 2>& views, const PinholeRig& rig,
     const Triangulator& triangulator, const StereoMatchOptions& options,

@@ -80,7 +80,8 @@ class PairJudge {
     if (!gate_position() || !gate_appearance() || !place_point() || !gate_size()) {
       return std::nullopt;
     }
-    const double epipolar_term = epipolar_px_ / o_.max_epipolar_distance_px;
+    const double epipolar_term =
+        o_.max_epipolar_distance_px > 0.0 ? epipolar_px_ / o_.max_epipolar_distance_px : 0.0;
     detail::Candidate c;
     c.left = l_;
     c.right = r_;
@@ -390,18 +391,14 @@ StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {
 // One detection of one image that no pair took, placed from that image alone by the door's fit
 // (one_image_door.hpp): whole outlines from both sides (pass 0); what is left from one side
 // (pass 1: the other side beyond the other image's border, or one of two peaks of a repeated
-// edge), and whole outlines also with the sides' roles swapped (merged_side).
+// edge), and whole outlines also with the sides' roles swapped (merged with a neighbour).
 std::optional<StereoPercept> place_from_one_image(const StereoViews& v, int image, std::size_t d,
                                                   int pass) {
   const int index = static_cast<int>(d);
   if (pass == 0) return detail::place_one_image_door(v, image, index, detail::SweptSides::kBoth);
   std::optional<StereoPercept> percept =
       detail::place_one_image_door(v, image, index, detail::SweptSides::kInner);
-  const StereoMatchOptions::DoorClass* door =
-      door_class_of(v.options, (image == 0 ? v.left : v.right)[d].type);
-  if (!percept && door) {
-    percept = detail::place_one_image_door(v, image, index, detail::SweptSides::kOuter);
-  }
+  if (!percept) percept = detail::place_one_image_door(v, image, index, detail::SweptSides::kOuter);
   return percept;
 }
 
@@ -426,14 +423,13 @@ void place_single_views(const StereoViews& v, const std::vector<detail::Candidat
       const auto& corners = image == 0 ? v.left_corners : v.right_corners;
       for (std::size_t d = 0; d < detections.size(); ++d) {
         const Detection& detection = detections[d];
-        const StereoMatchOptions::DoorClass* cut_door = door_class_of(options, detection.type);
-        const bool from_one_side = cut_door != nullptr;
+        const bool door_class = door_class_of(options, detection.type) != nullptr;
         const bool cut = detection.border_cut != BorderCut::kNone;
         if (paired[static_cast<std::size_t>(image)][d] || detection.needs_partner ||
             corners[d].size() != 4) {
           continue;
         }
-        if (pass == 0 ? cut : !from_one_side || placed[static_cast<std::size_t>(image)][d]) {
+        if (pass == 0 ? cut : !door_class || placed[static_cast<std::size_t>(image)][d]) {
           continue;
         }
         if (detail::judge_bars_on_outline(detections, detection, options).gate !=

@@ -117,7 +117,6 @@ constexpr NumberKey kNumberKeys[] = {
     // Correlations differ by at most 2.
     {"min_peak_margin", &StereoMatchOptions::min_peak_margin, 0.0, 2.0},
     {"single_view_min_separation_m", &StereoMatchOptions::single_view_min_separation_m, 0.0, 10.0},
-    // Below a half: the two sides' bands do not meet.
     {"max_bar_height_spread", &StereoMatchOptions::max_bar_height_spread, 0.0, 1.0},
     // Below pi/2: sin() still grows.
     {"max_side_tilt_rad", &StereoMatchOptions::max_side_tilt_rad, 0.0, 1.5},

@@ -8,20 +8,7 @@ namespace vsl::recognition::detail {
 
 std::vector<IdealPixel> undistorted_corners(const Detection& d,
                                             const head::CameraIntrinsics& intrinsics) {
-  if (d.corners_px.size() != 4) return {};
-  std::vector<IdealPixel> corners = undistort(d.corners_px, intrinsics);
-  if (d.border_cut != BorderCut::kNone) return corners;
-  // The two sides nearer the image vertical as the left (0 top, 3 bottom) and right (1 top, 2
-  // bottom) ones.
-  const std::array<Eigen::Vector2d, 4> c = corner_array(corners);
-  std::array<std::array<int, 2>, 2> sides = Triangulator::vertical_sides(c);
-  for (auto& [top, bottom] : sides) {
-    if (c[top].y() > c[bottom].y()) std::swap(top, bottom);
-  }
-  if (c[sides[0][0]].x() + c[sides[0][1]].x() > c[sides[1][0]].x() + c[sides[1][1]].x()) {
-    std::swap(sides[0], sides[1]);
-  }
-  return {corners[sides[0][0]], corners[sides[1][0]], corners[sides[1][1]], corners[sides[0][1]]};
+  return undistort(Triangulator::outline_in_fit_order(d), intrinsics);
 }
 
 // The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the

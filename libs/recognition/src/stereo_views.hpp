@@ -22,10 +22,8 @@
 
 namespace vsl::recognition::detail {
 
-// Undistorted corners of a detection's outline (empty unless it has four), clockwise from the top
-// left: a whole outline's renumbered so that its two sides nearer the image vertical are 0-3 and
-// 1-2 (quadrilateral.hpp numbers from the corner of least u + v, which for a narrow outline at a
-// grazing angle is a side's end); a cut one's as border_cut_of numbers it.
+// Undistorted corners of a detection's outline in the fit's order
+// (Triangulator::outline_in_fit_order; empty unless it has four).
 std::vector<IdealPixel> undistorted_corners(const Detection& d,
                                             const head::CameraIntrinsics& intrinsics);
 // The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the

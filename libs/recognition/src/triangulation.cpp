@@ -50,6 +50,20 @@ std::array<std::array<int, 2>, 2> Triangulator::vertical_sides(
   return {{{0, 3}, {1, 2}}};
 }
 
+std::vector<Eigen::Vector2d> Triangulator::outline_in_fit_order(const Detection& d) {
+  const std::vector<Eigen::Vector2d>& c = d.corners_px;
+  if (c.size() != 4) return {};
+  if (d.border_cut != BorderCut::kNone) return c;
+  std::array<std::array<int, 2>, 2> sides = vertical_sides({c[0], c[1], c[2], c[3]});
+  for (auto& [top, bottom] : sides) {
+    if (c[top].y() > c[bottom].y()) std::swap(top, bottom);
+  }
+  if (c[sides[0][0]].x() + c[sides[0][1]].x() > c[sides[1][0]].x() + c[sides[1][1]].x()) {
+    std::swap(sides[0], sides[1]);
+  }
+  return {c[sides[0][0]], c[sides[1][0]], c[sides[1][1]], c[sides[0][1]]};
+}
+
 std::array<std::array<double, 2>, 2> Triangulator::side_tilts(
     const std::array<Eigen::Vector2d, 4>& left, const std::array<Eigen::Vector2d, 4>& right,
     const Eigen::Vector3d& up) const {

@@ -8,9 +8,11 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "epipolar.hpp"
 #include "vsl/head/camera_intrinsics.hpp"
+#include "vsl/recognition/detection.hpp"
 
 namespace vsl::recognition::detail {
 
@@ -58,6 +60,13 @@ class Triangulator {
   // and {3, 2}.
   static std::array<std::array<int, 2>, 2> vertical_sides(
       const std::array<Eigen::Vector2d, 4>& corners_px);
+
+  // A detection's outline corners (raw pixels) clockwise from the top left, as the door's fit
+  // and the gates number them: a whole outline's renumbered so that its two sides nearer the image
+  // vertical are 0-3 (left) and 1-2 (right), tops first (quadrilateral.hpp numbers from the corner
+  // of least u + v, which for a narrow outline at a grazing angle is a side's end); a cut one's as
+  // border_cut_of numbers it. Empty unless it has four.
+  static std::vector<Eigen::Vector2d> outline_in_fit_order(const Detection& d);
 
   // How far from vertical in 3D a rectangle's sides 0-3 and 1-2 are (undistorted_corners numbers
   // a whole outline so that these are the sides nearer the image vertical), per side and image

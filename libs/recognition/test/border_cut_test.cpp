@@ -144,7 +144,7 @@ TEST_F(BorderCutTest, VisibleHeightBetweenHalfAndAlmostAllOfTheTypical) {
             2e-3);
 }
 
-TEST_F(BorderCutTest, WidthLeaningSideAndEpipolarGates) {
+TEST_F(BorderCutTest, WidthLeaningSideAndWidthRatioGates) {
   const Pair p = cut_door(kAbove, BorderCut::kTop);
   std::vector<StereoPairTrace> trace;
   options_.door_classes[0].min_width_m = 0.6;  // the door is 0.5 m wide

@@ -505,7 +505,8 @@ TEST_F(SideCorrelationTest, ASidePlacedOnAnotherEdgeMakesNoDoorWiderThanItsClass
   options.max_side_tilt_rad = 0.03;
   options.min_side_correlation = 0.7;
   options.min_single_view_correlation = 0.7;
-  // The painted band leaves a weaker second peak of the side, which a margin would also try.
+  // The painted band leaves a weaker second peak of the side: with a margin the pair's side would
+  // keep the outlines' depth, and a door from one image would try both peaks.
   options.min_peak_margin = 0.0;
   const StereoImages images{&left_grey_, &moved};
   const auto match = [&](const std::vector<Detection>& r) {

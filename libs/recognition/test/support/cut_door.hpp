@@ -2,8 +2,8 @@
 // (Detection::border_cut): 140 px wide, its left side at column `u`, 200 px of it in view down
 // to row 199, for the border-cut tests and BM_BorderCutPair. Over a bright wall (190) with the
 // door dark (70), a pair at u = 160 (left) and 135 (right) is a door 2 m ahead on the simulated
-// head (25 px of disparity). `cut_door_options` gives the shipped config's door options for
-// cut doors (config/recognition.yaml), set by name.
+// head (25 px of disparity). `cut_door_options` gives a door class's sizes as the shipped config
+// sets them (config/recognition.yaml), by name.
 #pragma once
 
 #include <utility>

@@ -90,8 +90,9 @@ struct StereoMatchOptions {
     // with the spread height_sigma_m; at least half of the least must be in view.
     std::vector<double> typical_heights_m;
     double height_sigma_m = 0.0;
-    // A fitted door narrower than min_width_m is a strip that segmentation split off; one wider
-    // than max_width_m is two doors, or a correlation peak on another door's edge (metres).
+    // A fitted door narrower than min_width_m is a strip that segmentation split off (not tested
+    // for a door from one image swept on both sides, whose one outline may measure it short); one
+    // wider than max_width_m is two doors, or a correlation peak on another door's edge (metres).
     double min_width_m = 0.0;
     double max_width_m = 0.0;
     // A door whose left or right side neither image shows is as wide as this or its visible
@@ -177,8 +178,8 @@ struct StereoPairTrace {
   double limit = 0.0;
   double cost = 0.0;      // a candidate's normalized cost
   bool assigned = false;  // a candidate the assignment kept (a percept)
-  // A candidate placed with one corner hidden by an occluder in both images after the position
-  // gate, the side gate or the door's fit refused it (docs/recognition.md).
+  // A candidate placed with one corner hidden by an occluder in both images after the side gate
+  // or the door's fit refused it (docs/recognition.md).
   bool occluded_corner = false;
 };
 
