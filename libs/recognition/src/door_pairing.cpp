@@ -9,13 +9,6 @@
 namespace vsl::recognition::detail {
 namespace {
 
-// Whether an outline corner's raw pixel lies outside the image (an extrapolation of its sides:
-// hidden rather than seen).
-bool beyond_image(const Eigen::Vector2d& raw_px, const head::CameraIntrinsics& camera) {
-  return raw_px.x() < -0.5 - 1e-6 || raw_px.y() < -0.5 - 1e-6 ||
-         raw_px.x() > camera.width_px - 0.5 + 1e-6 || raw_px.y() > camera.height_px - 0.5 + 1e-6;
-}
-
 // The cut an image shows of a door that the other image shows cut by `cut`, less its left
 // (`left_border`) or right border: the right camera sees less beyond its left border, the left
 // camera less beyond its right one.
@@ -133,11 +126,11 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
   std::array<DoorOutlineView, 2> views{DoorOutlineView{corner_array(v.left_corners[l]), left},
                                        DoorOutlineView{corner_array(v.right_corners[r]), right}};
   for (std::size_t k = 0; k < 2; ++k) {
-    const std::vector<Eigen::Vector2d> raw_px =
-        Triangulator::outline_in_fit_order(k == 0 ? v.left[l] : v.right[r]);
-    const head::CameraIntrinsics& camera = k == 0 ? v.left_intrinsics : v.right_intrinsics;
+    const std::array<bool, 4>& beyond =
+        (k == 0 ? v.left_beyond_image
+                : v.right_beyond_image)[static_cast<std::size_t>(k == 0 ? l : r)];
     for (std::size_t j = 0; j < 4; ++j) {
-      if (beyond_image(raw_px[j], camera) && views[k].states[j] == CornerState::kSeen) {
+      if (beyond[j] && views[k].states[j] == CornerState::kSeen) {
         views[k].states[j] = CornerState::kHidden;
       }
     }

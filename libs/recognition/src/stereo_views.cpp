@@ -11,6 +11,18 @@ std::vector<IdealPixel> undistorted_corners(const Detection& d,
   return undistort(Triangulator::outline_in_fit_order(d), intrinsics);
 }
 
+std::array<bool, 4> corners_beyond_image(const Detection& d,
+                                         const head::CameraIntrinsics& intrinsics) {
+  std::array<bool, 4> out{};
+  const std::vector<Eigen::Vector2d> c = Triangulator::outline_in_fit_order(d);
+  for (std::size_t j = 0; j < c.size(); ++j) {
+    out[j] = c[j].x() < -0.5 - 1e-6 || c[j].y() < -0.5 - 1e-6 ||
+             c[j].x() > intrinsics.width_px - 0.5 + 1e-6 ||
+             c[j].y() > intrinsics.height_px - 0.5 + 1e-6;
+  }
+  return out;
+}
+
 // The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the
 // bar's ends along the major axis, handle_recognizer.cpp) plus and minus half the major extent.
 std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d) {

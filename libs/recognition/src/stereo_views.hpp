@@ -26,6 +26,10 @@ namespace vsl::recognition::detail {
 // (Triangulator::outline_in_fit_order; empty unless it has four).
 std::vector<IdealPixel> undistorted_corners(const Detection& d,
                                             const head::CameraIntrinsics& intrinsics);
+// Which of those corners' raw pixels lie outside the image (an extrapolation of the outline's
+// sides: the door's corner there is hidden, not seen); all false without four corners.
+std::array<bool, 4> corners_beyond_image(const Detection& d,
+                                         const head::CameraIntrinsics& intrinsics);
 // The two ends of a bar detection's segment (raw pixels): its reference point (the middle of the
 // bar's ends along the major axis, handle_recognizer.cpp) plus and minus half the major extent.
 std::vector<Eigen::Vector2d> bar_ends_raw(const Detection& d);
@@ -79,9 +83,13 @@ struct StereoViews {
                                  left_intrinsics, left_T_right.inverse(),
                                  left_T_right.linear().transpose() * up);
     }
-    for (const Detection& d : left) left_corners.push_back(undistorted_corners(d, left_intrinsics));
+    for (const Detection& d : left) {
+      left_corners.push_back(undistorted_corners(d, left_intrinsics));
+      left_beyond_image.push_back(corners_beyond_image(d, left_intrinsics));
+    }
     for (const Detection& d : right) {
       right_corners.push_back(undistorted_corners(d, right_intrinsics));
+      right_beyond_image.push_back(corners_beyond_image(d, right_intrinsics));
     }
     left_bar_ends = bar_ends(left, left_intrinsics);
     right_bar_ends = bar_ends(right, right_intrinsics);
@@ -123,6 +131,7 @@ struct StereoViews {
   std::vector<IdealPixel> left_ideal, right_ideal;
   std::optional<SideCorrelator> correlator, reverse_correlator;
   std::vector<std::vector<IdealPixel>> left_corners, right_corners;
+  std::vector<std::array<bool, 4>> left_beyond_image, right_beyond_image;
   std::vector<std::vector<IdealPixel>> left_bar_ends, right_bar_ends;
 };
 
