@@ -9,14 +9,6 @@
 #include "triangulation.hpp"
 
 namespace vsl::recognition::detail {
-namespace {
-
-// A bar counts as on an outline when its reference point lies at most this far outside it, pixels
-// (bars_on_outline.hpp). The neighbour's handle of a double door counts too, but it stands at the
-// same height.
-constexpr double kBarNearOutlinePx = 3.0;
-
-}  // namespace
 
 bool is_bar_type(const StereoMatchOptions& options, const std::string& type) {
   return std::find(options.bar_types.begin(), options.bar_types.end(), type) !=
@@ -39,7 +31,7 @@ double bar_height_spread(const std::vector<Detection>& detections, const Detecti
   int count = 0;
   for (const Detection& d : detections) {
     if (!is_bar_type(options, d.type)) continue;
-    if (depth_inside_convex(c, c.size(), d.reference_px) < -kBarNearOutlinePx) continue;
+    if (depth_inside_convex(c, c.size(), d.reference_px) < 0.0) continue;
     const double along_px = (d.reference_px - top).dot(down);
     lowest = std::min(lowest, along_px);
     highest = std::max(highest, along_px);

@@ -17,9 +17,8 @@ bool is_bar_type(const StereoMatchOptions& options, const std::string& type);
 
 // How far apart in height the bar detections on `outline` lie, as a fraction of the outline's
 // height: their reference points' spread along the line from the middle of its top edge to the
-// middle of its bottom edge. A bar counts when its reference point lies inside the outline or
-// at most kBarNearOutlinePx outside (seen at a grazing angle, a drawer's handle stands on the
-// outline's near edge or just beyond it). 0 with fewer than two such bars or without four corners.
+// middle of its bottom edge, over the bars whose reference points lie inside the outline. 0 with
+// fewer than two such bars or without four corners.
 double bar_height_spread(const std::vector<Detection>& detections, const Detection& outline,
                          const StereoMatchOptions& options);
 

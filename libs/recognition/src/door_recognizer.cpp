@@ -32,12 +32,10 @@ constexpr double kMinBorderSideSupport = 0.6;
 // The colour angle's index in the door descriptor (door_descriptor_names()).
 constexpr int kColourComponent = 6;
 // A door face cut by the border fills the outline of its visible part, less its handle's hole
-// and the rows next to the border that segmentation leaves out (on the kitchen 0.85, 0.8 and
-// 0.75 gave 261, 262 and 262 true door percepts, 24 false each time).
+// and the rows next to the border that segmentation leaves out.
 constexpr double kMinBorderCutFill = 0.8;
 // The cut side's corners (the hull's chord along the border) lie this fraction of the visible
-// sides' length from the border row at most: the hull's vertex there can sit some rows in (on
-// both layouts 0.25 kept every true door percept that no bound keeps, and 0.1 lost 3 of each).
+// sides' length from the border row at most: the hull's vertex there can sit some rows in.
 constexpr double kMaxCutCornerOffBorder = 0.25;
 
 double square(double x) {

@@ -15,19 +15,12 @@ namespace vsl::recognition::detail {
 namespace {
 
 // A side placed this close to the other image's border (pixels, inside) still counts as beyond
-// it: it runs along the border there and the other image's blob ends at it. (On the kitchen 2,
-// 5, 8 and 12 px gave +1, +2, +3 and +3 true door percepts, the last two with one false.)
+// it: it runs along the border there and the other image's blob ends at it.
 constexpr double kMaxInsideBorderPx = 8.0;
 // The other image shows the placed side where its own sweep, searched kSideSearchPx around the
 // fitted side's horizontal distance, peaks within this fraction of that distance (3% of 2.3 m is
-// 7 cm, 0.7 px of disparity; on the kitchen 1.5%, 3% and 6% gave 269, 270 and 271 true door
-// percepts, with 25, 25 and 27 false).
+// 7 cm, 0.7 px of disparity).
 constexpr double kMaxPlacedDepthMismatch = 0.03;
-// The other image shows no edge where the placed side's window has less than this fraction of
-// the own window's contrast (standard deviation). On the kitchen any bound from 0.2 to 0.6 gave
-// 282 true door percepts (279 without), 0.8 and 1 gave 283 and 284, all with 25 false; above 0.6
-// the window shows some other edge, no longer "no edge".
-constexpr double kMaxMergedSideContrast = 0.3;
 // The whole depth range of a sweep, in pixels of image motion: every step.
 constexpr double kWholeRangePx = 1e4;
 
@@ -47,28 +40,11 @@ struct OwnView {
   int image;
   std::array<Eigen::Vector2d, 4> corners;  // ideal pixels, the fit's order
   const SideCorrelator& sweep;
-  const RigCamera& own_camera;  // the fit's pinhole of the own image
   const head::CameraIntrinsics& other;
   Eigen::Isometry3d left_T_own;   // own camera points into the left camera frame
-  Eigen::Vector3d up_in_own;      // unit
   Eigen::Vector3d up_in_left;     // unit
   const RigCamera& other_camera;  // the fit's pinhole of the other image
 };
-
-// Both sides vertical in 3D as the own image shows them: a vertical line and the camera centre
-// span a plane that holds `up`, |n . u| / |n| the sine of the side's tilt from vertical.
-bool sides_vertical(const OwnView& o, double max_tilt_rad) {
-  if (!(max_tilt_rad > 0.0)) return true;
-  const Eigen::Matrix3d k_inverse = o.own_camera.K.inverse();
-  for (const auto& [top, bottom] : kSides) {
-    const Eigen::Vector3d n = (k_inverse * o.corners[top].homogeneous())
-                                  .cross(k_inverse * o.corners[bottom].homogeneous());
-    if (!(n.norm() > 0.0) || std::abs(n.dot(o.up_in_own)) / n.norm() > std::sin(max_tilt_rad)) {
-      return false;
-    }
-  }
-  return true;
-}
 
 // A side's peaks over the whole depth range: the best, and when the second-best is within
 // min_peak_margin (a run of equal doors repeats every edge), that one too, refined a
@@ -94,9 +70,8 @@ SidePeaks side_peaks(const OwnView& o, std::size_t side, const StereoMatchOption
 
 // The placed side (its corners from the fit, left camera frame) as the other image must show it:
 // beyond that image's border on its side (not for a placed inner side: the swept outer one leaves
-// it on the side away from that border), or found there by its own sweep, or, with the outer
-// side swept, no edge there at all. `real`: its corners on the outline (a cut removes the one on
-// the cut edge).
+// it on the side away from that border), or found there by its own sweep. `real`: its corners on
+// the outline (a cut removes the one on the cut edge).
 bool placed_side_agrees(const OwnView& o, std::size_t side,
                         const std::array<Eigen::Vector3d, 2>& corners_left,
                         const std::array<bool, 2>& real, bool outer_swept,
@@ -126,14 +101,8 @@ bool placed_side_agrees(const OwnView& o, std::size_t side,
   const auto [top, bottom] = kSides[side];
   const auto found = o.sweep.correlate(o.corners[top], o.corners[bottom], placed_m, kSideSearchPx,
                                        options.min_depth_m, options.max_depth_m);
-  if (found && found->correlation >= options.min_single_view_correlation &&
-      std::abs(found->horizontal_distance_m - placed_m) <= kMaxPlacedDepthMismatch * placed_m) {
-    return true;
-  }
-  if (!outer_swept) return false;
-  const auto unseen = o.sweep.correlate(o.corners[top], o.corners[bottom], placed_m, 1.0,
-                                        options.min_depth_m, options.max_depth_m);
-  return unseen && unseen->contrast_ratio < kMaxMergedSideContrast;
+  return found && found->correlation >= options.min_single_view_correlation &&
+         std::abs(found->horizontal_distance_m - placed_m) <= kMaxPlacedDepthMismatch * placed_m;
 }
 
 // The views of one combination of the swept sides' horizontal distances (metres): the own
@@ -259,13 +228,10 @@ std::optional<StereoPercept> place_one_image_door(const StereoViews& v, int imag
   const OwnView o{image,
                   corner_array(corners),
                   *sweep,
-                  cameras[static_cast<std::size_t>(image)],
                   image == 0 ? v.right_intrinsics : v.left_intrinsics,
                   left_T_own,
-                  left_T_own.linear().transpose() * v.rig.up,
                   v.rig.up,
                   cameras[static_cast<std::size_t>(1 - image)]};
-  if (!sides_vertical(o, options.max_side_tilt_rad)) return std::nullopt;
   // The inner side is the right one of a left outline, the left one of a right outline.
   const std::size_t inner = image == 0 ? kRightSide : kLeftSide;
   std::array<bool, 2> swept{true, true};

@@ -9,8 +9,7 @@
 // other image (CornerState::kAbsent); the fit places it from the own image's corners on the door's
 // level edges, which must measure the door's width (not the class's guess), and the other image
 // must then agree: the side so placed lies beyond that image's border on its side (or within
-// kMaxInsideBorderPx of it), or that image shows it there, or (the outer side swept) shows no edge
-// at all there, where its blob merged the door with a neighbour of its colour. A swept side is
+// kMaxInsideBorderPx of it), or that image shows it there. A swept side is
 // held to two pixel sigmas of the fit, the outline's corners to the position gate of whole pairs;
 // a door swept on both sides has no viewing-angle or least-width bound (limits_of).
 //

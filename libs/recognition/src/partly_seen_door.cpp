@@ -29,9 +29,9 @@ constexpr double kMaxVisibleOfTypical = 1.05;
 constexpr double kMinVisibleOfTypicalWidth = 0.5;
 // The greatest standard deviation of the centre (metres) of a door placed with a corner hidden
 // in an image (an occluder's, or the image's own corner): three corners of a door 3-4 m away,
-// its width a few dozen pixels, leave its turn, and with it the centre, poorly known. Chosen on
-// the tuning kitchens (docs/recognition.md): of the hidden-corner fits placed with a centre
-// sigma above 0.3 m, 8 were false door percepts and 4 true; 0.25 and 0.3 differed by a few.
+// its width a few dozen pixels, leave its turn, and with it the centre, poorly known: placed
+// with a centre sigma above 0.3 m, such fits were mostly false door percepts on the tuning
+// kitchens (docs/recognition.md).
 constexpr double kMaxCentreSigmaWithHiddenM = 0.25;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // The least sine of the angle between a corner's ray and the level plane it is placed on in the

@@ -51,8 +51,7 @@ class StepScores {
       : left_values_(left_values),
         left_norm_(left_norm),
         right_values(left_values.size()),
-        scores(static_cast<std::size_t>(steps), -2.0),
-        contrasts(static_cast<std::size_t>(steps), 0.0) {}
+        scores(static_cast<std::size_t>(steps), -2.0) {}
 
   // Step k's score from right_values and their sum.
   void score(int k, double right_sum) {
@@ -65,7 +64,6 @@ class StepScores {
       right_norm2 += v * v;
     }
     scores[static_cast<std::size_t>(k)] = 2.0 * dot / (left_norm_ * left_norm_ + right_norm2);
-    contrasts[static_cast<std::size_t>(k)] = std::sqrt(right_norm2) / left_norm_;
   }
 
  private:
@@ -75,7 +73,6 @@ class StepScores {
  public:
   std::vector<double> right_values;
   std::vector<double> scores;
-  std::vector<double> contrasts;
 };
 
 // The left window's samples as the right camera sees them: A = K_r R^T r / |h(r)| per sample,
@@ -201,7 +198,6 @@ std::optional<SideCorrelator::SideDepth> peaks(const StepScores& s, const StepRa
   SideCorrelator::SideDepth out;
   out.horizontal_distance_m = 1.0 / (range.lambda_min + (k + offset) * range.step);
   out.correlation = *best;
-  out.contrast_ratio = s.contrasts[static_cast<std::size_t>(k)];
   const auto score = [&](int i) { return scores[static_cast<std::size_t>(i)]; };
   const auto valid = [&](int i) { return i >= 0 && i < steps && score(i) > -1.5; };
   int lobe_begin = k, lobe_end = k;

@@ -78,10 +78,6 @@ class SideCorrelator {
     // almost as high as the first.
     double second_correlation = -1.0;
     double second_distance_m = 0.0;  // D at that peak (not refined); 0 when there is none
-    // The right window's contrast at the peak's step, sqrt(var_r / var_l): near 0 where the right
-    // image shows no edge at all there (the same surface on both sides), near 1 for an edge as
-    // strong as the left one's.
-    double contrast_ratio = 0.0;
   };
   // The side from left ideal pixel `a` to `b`, searched within `search_px` pixels of image motion
   // around `initial_distance_m` and within [min_distance_m, max_distance_m]. nullopt when the

@@ -198,9 +198,8 @@ TEST_F(StereoMatchTest, DoorOutlinesArePlacedByTheirSidesAndTheLeftImagesEnds) {
   const Pair beside = pair_of(centre + 0.15 * along_face);
   const auto placed = match({rotated.left, handle.left, beside.left},
                             {rotated.right, handle.right, beside.right}, -down);
-  const auto door_percept = std::find_if(placed.begin(), placed.end(), [](const StereoPercept& q) {
-    return q.left_detection == 0;
-  });
+  const auto door_percept = std::find_if(
+      placed.begin(), placed.end(), [](const StereoPercept& q) { return q.left_detection == 0; });
   ASSERT_NE(door_percept, placed.end());
   EXPECT_LT((door_percept->left_camera_position_m - centre).norm(), 5e-3);
   // Sides 6% of the height to the right in the right image: another depth, another door.

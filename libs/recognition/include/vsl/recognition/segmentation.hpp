@@ -24,16 +24,14 @@ struct SegmentationOptions {
   // levels, floored): at 0.06 a region seeded on the worktop's dark lip crept over the
   // blended rows below it into the doors and filled S_max with their tops, a
   // mix of grey and blue whose mode joins neither, and the doors lost their top
-  // strip (kitchen 315 -> 330 true door percepts, galley 239 -> 243, the L 312
-  // -> 310, with the class models retrained; docs/recognition.md).
+  // strip (docs/recognition.md).
   double max_neighbour_difference_rgb = 0.045;
   // ... and, in the row pass, within max_run_mean_difference_rgb (max over channels) of the mean
   // of the run it extends (0 turns this off). A row crossing a shallow-sloped edge between two
   // dark colours (a base unit's door under the worktop's lip) meets blended pixels a few grey
   // levels apart, each step within the bound above, and the two colours' ellipsoid is within
   // V_max: the run held both, and the door's top strip became a blob of its own. 0.035 (8 grey
-  // levels, floored), chosen on the tuning set (kitchen and the two tuning kitchens, 200 views
-  // each: door percepts 1724 -> 1751 true, 105 -> 101 false; docs/recognition.md).
+  // levels, floored), chosen on the tuning kitchens (docs/recognition.md).
   double max_run_mean_difference_rgb = 0.035;
   // Thin-line barrier, computed once per image: a pixel (or a pair of pixels)
   // whose brightness stands out from both neighbours across it by at least
