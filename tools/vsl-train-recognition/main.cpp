@@ -286,17 +286,6 @@ int main(int argc, char** argv) {
       }
       const tools::TrainedModel trained = tools::train_class(s, options.keep);
       s.file.model = trained.model;
-      // The kept hysteresis threshold must stay at or above the new acceptance threshold
-      // (recognizer_factory.hpp refuses the file otherwise).
-      double& with_partner = s.file.door.max_mahalanobis2_with_partner;
-      if (s.file.recognizer == "door" && with_partner > 0.0 &&
-          with_partner < trained.model.max_mahalanobis2()) {
-        std::fprintf(stderr,
-                     "vsl-train-recognition: %s: max_mahalanobis2_with_partner %g is below the "
-                     "new threshold %g; raised to it (no weak detections until you set it)\n",
-                     type.c_str(), with_partner, trained.model.max_mahalanobis2());
-        with_partner = trained.model.max_mahalanobis2();
-      }
       std::ostringstream provenance;
       provenance << options.command_line << ": " << trained.summary << " from " << source_text;
       s.file.model.set_provenance(provenance.str());

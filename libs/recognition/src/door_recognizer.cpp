@@ -259,8 +259,8 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
   DoorRecognizerParameters out;
   if (section.is_null()) return out;
   section.expect_map();
-  section.expect_keys({"ideal_colour_rgb", "min_blob_px", "min_border_distance_px",
-                       "max_mahalanobis2_with_partner", "detect_border_cut"});
+  section.expect_keys(
+      {"ideal_colour_rgb", "min_blob_px", "min_border_distance_px", "detect_border_cut"});
   if (const auto colour = section.find("ideal_colour_rgb")) {
     out.ideal_colour_rgb = config::as_vector3(*colour);
     if (out.ideal_colour_rgb.minCoeff() < 0.0 || out.ideal_colour_rgb.maxCoeff() > 1.0) {
@@ -271,13 +271,6 @@ DoorRecognizerParameters door_parameters_from(const config::Node& section) {
   if (const auto v = section.find("min_blob_px")) out.min_blob_px = int_in(*v, 1, 100000000);
   if (const auto v = section.find("min_border_distance_px")) {
     out.min_border_distance_px = int_in(*v, 0, 1000);
-  }
-  if (const auto v = section.find("max_mahalanobis2_with_partner")) {
-    out.max_mahalanobis2_with_partner = v->as_double();
-    if (!(out.max_mahalanobis2_with_partner >= 0.0) ||
-        !std::isfinite(out.max_mahalanobis2_with_partner)) {
-      v->fail("must be 0 (off) or a finite D^2 at least the model's max_mahalanobis2");
-    }
   }
   if (const auto v = section.find("detect_border_cut")) {
     out.detect_border_cut = v->as_bool();
@@ -296,10 +289,6 @@ void write_door_parameters(std::ostream& out, const DoorRecognizerParameters& pa
       << ", " << exact_number(q.z()) << "]\n"
       << indent << "min_blob_px: " << parameters.min_blob_px << "\n"
       << indent << "min_border_distance_px: " << parameters.min_border_distance_px << "\n";
-  if (parameters.max_mahalanobis2_with_partner > 0.0) {
-    out << indent << "max_mahalanobis2_with_partner: "
-        << exact_number(parameters.max_mahalanobis2_with_partner) << "\n";
-  }
   if (parameters.detect_border_cut) out << indent << "detect_border_cut: true\n";
 }
 
@@ -308,13 +297,6 @@ DoorRecognizer::DoorRecognizer(GaussianClassModel model, DoorRecognizerParameter
   if (model_.component_names() != door_descriptor_names()) {
     throw std::invalid_argument("DoorRecognizer: the model of '" + model_.type() +
                                 "' is not over the door descriptor's components");
-  }
-  if (parameters_.max_mahalanobis2_with_partner != 0.0 &&
-      !(parameters_.max_mahalanobis2_with_partner >= model_.max_mahalanobis2())) {
-    throw std::invalid_argument(
-        "DoorRecognizer: max_mahalanobis2_with_partner must be 0 or at least the model's "
-        "max_mahalanobis2 (" +
-        exact_number(model_.max_mahalanobis2()) + ")");
   }
 }
 
@@ -333,9 +315,7 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
         square(colour_angle_rad(parameters_.ideal_colour_rgb, blob.mean_colour_rgb) -
                model_.mean()(kColourComponent)) /
         model_.covariance()(kColourComponent, kColourComponent);
-    const double max_d2 =
-        std::max(model_.max_mahalanobis2(), parameters_.max_mahalanobis2_with_partner);
-    if (!(colour_d2 <= max_d2)) continue;
+    if (!model_.accepts(colour_d2)) continue;
     const BlobAxes axes = blob_axes(blob);
     std::optional<BlobQuadrilateral> quad;
     if (blob.u_min < border || blob.v_min < border || blob.u_max >= bgr_image.cols - border ||
@@ -347,7 +327,7 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
         // left alone.
         const bool at_side = blob.u_min < border || blob.u_max >= bgr_image.cols - border;
         const bool at_top_or_bottom = blob.v_min < border || blob.v_max >= bgr_image.rows - border;
-        if (parameters_.detect_border_cut && model_.accepts(colour_d2)) {
+        if (parameters_.detect_border_cut) {
           // At two borders: cut along both at their corner, or along one whole side, the
           // other border taking only a corner off (the sides' intersection restores it).
           std::optional<BorderCutOutline> cut =
@@ -369,7 +349,7 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
     }
     const double d2 =
         model_.mahalanobis2(door_descriptor(blob, axes, parameters_.ideal_colour_rgb));
-    if (!(d2 <= max_d2)) continue;
+    if (!model_.accepts(d2)) continue;
     Detection detection;
     detection.type = model_.type();
     detection.blob_index = static_cast<int>(i);
@@ -385,7 +365,6 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
     detection.minor_extent_px = axes.minor_extent_px;
     detection.mahalanobis2 = d2;
     detection.confidence = static_cast<float>(model_.confidence(d2));
-    detection.needs_partner = !model_.accepts(d2);
     out.push_back(std::move(detection));
   }
 }

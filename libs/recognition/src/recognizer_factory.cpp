@@ -82,12 +82,6 @@ RecognizerFile recognizer_file_from(const config::Node& root) {
   const std::optional<config::Node> parameters = root.find("parameters");
   if (out.recognizer == kDoor) {
     if (parameters) out.door = door_parameters_from(*parameters);
-    const double with_partner = out.door.max_mahalanobis2_with_partner;
-    if (with_partner > 0.0 && with_partner < out.model.max_mahalanobis2()) {
-      parameters->at("max_mahalanobis2_with_partner")
-          .fail("must be 0 (off) or at least the model's max_mahalanobis2 (" +
-                exact_number(out.model.max_mahalanobis2()) + ")");
-    }
   } else {
     if (parameters) out.handle = handle_parameters_from(*parameters);
   }

@@ -44,8 +44,7 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
                        "max_twin_split_px",
                        "min_twin_gap_support",
                        "min_twin_piece_fraction",
-                       "min_twin_gap_chromaticity_difference",
-                       "split_horizontal_slits"});
+                       "min_twin_gap_chromaticity_difference"});
   if (const auto v = section.find("max_neighbour_difference_rgb")) {
     out.max_neighbour_difference_rgb = v->as_double_in(0.0, 1.0);
   }
@@ -97,9 +96,6 @@ SegmentationOptions segmentation_options_from(const config::Node& section) {
   }
   if (const auto v = section.find("min_twin_piece_fraction")) {
     out.min_twin_piece_fraction = v->as_double_in(0.0, 0.5);
-  }
-  if (const auto v = section.find("split_horizontal_slits")) {
-    out.split_horizontal_slits = v->as_bool();
   }
   if (const auto v = section.find("min_twin_gap_chromaticity_difference")) {
     out.min_twin_gap_chromaticity_difference = v->as_double_in(0.0, 1.0);

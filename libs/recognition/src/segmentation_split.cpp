@@ -90,43 +90,6 @@ SlitEvidence vertical_slit_evidence(const std::vector<PixelRun>& runs,
   return e;
 }
 
-// Horizontal slits, in the blob mirrored about its diagonal ((u, v) -> (v, u)): gaps of
-// 1..max_slit_width_px between two pixels of one column, found in one pass over the rows (without
-// building the mirrored blob, which is only needed when a slit is found).
-SlitEvidence horizontal_slit_evidence(const std::vector<PixelRun>& runs,
-                                      const SegmentationOptions& options) {
-  int u_min = runs.front().u_begin, u_max = runs.front().u_end;
-  for (const PixelRun& r : runs) {
-    u_min = std::min(u_min, r.u_begin);
-    u_max = std::max(u_max, r.u_end);
-  }
-  SlitEvidence e;
-  e.v_min = u_min;
-  e.rows = u_max - u_min;
-  e.row_first.assign(static_cast<std::size_t>(e.rows), 0);
-  e.row_end.assign(static_cast<std::size_t>(e.rows), 0);
-  std::vector<int> last_v(static_cast<std::size_t>(e.rows), -1);
-  for (const PixelRun& r : runs) {
-    for (int u = r.u_begin; u < r.u_end; ++u) {
-      const auto column = static_cast<std::size_t>(u - u_min);
-      const int last = last_v[column];
-      if (last < 0) {
-        e.row_first[column] = r.v;
-      } else {
-        const int gap = r.v - last - 1;
-        if (gap >= 1 && gap <= options.max_slit_width_px)
-          e.points.push_back({u, 0.5 * (last + r.v)});
-      }
-      last_v[column] = r.v;
-      e.row_end[column] = r.v + 1;
-    }
-  }
-  std::sort(e.points.begin(), e.points.end(), [](const SlitPoint& a, const SlitPoint& b) {
-    return a.v != b.v ? a.v < b.v : a.u < b.u;
-  });
-  return e;
-}
-
 // The slit lines, best first (through the most slit points), up to kMaxSlitsTried: each the
 // best candidate line that is not (about) one already found, refitted; the search stops at the
 // first that fails the support test.
@@ -235,38 +198,6 @@ std::optional<std::pair<std::vector<PixelRun>, std::vector<PixelRun>>> cut_at_sl
   return std::nullopt;
 }
 
-// The runs of the blob mirrored about the diagonal (u, v) -> (v, u), sorted by (v, u_begin):
-// horizontal slits become vertical ones.
-std::vector<PixelRun> transposed(const std::vector<PixelRun>& runs) {
-  int u_min = runs.front().u_begin, u_max = runs.front().u_end;
-  for (const PixelRun& r : runs) {
-    u_min = std::min(u_min, r.u_begin);
-    u_max = std::max(u_max, r.u_end);
-  }
-  const int v_min = runs.front().v, rows = runs.back().v - v_min + 1;
-  // Column-major occupancy of the bounding box: each column of the blob becomes a row.
-  std::vector<unsigned char> occupied(static_cast<std::size_t>(u_max - u_min) * rows, 0);
-  for (const PixelRun& r : runs) {
-    for (int u = r.u_begin; u < r.u_end; ++u) {
-      occupied[static_cast<std::size_t>(u - u_min) * rows + (r.v - v_min)] = 1;
-    }
-  }
-  std::vector<PixelRun> out;
-  for (int u = u_min; u < u_max; ++u) {
-    const unsigned char* column = &occupied[static_cast<std::size_t>(u - u_min) * rows];
-    for (int k = 0; k < rows;) {
-      if (!column[k]) {
-        ++k;
-        continue;
-      }
-      const int begin = k;
-      while (k < rows && column[k]) ++k;
-      out.push_back({u, v_min + begin, v_min + k});
-    }
-  }
-  return out;
-}
-
 void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int level,
            std::vector<std::vector<PixelRun>>& out) {
   long area = 0;
@@ -277,16 +208,6 @@ void split(std::vector<PixelRun> runs, const SegmentationOptions& options, int l
   }
   auto pieces =
       cut_at_slit(runs, find_slits(vertical_slit_evidence(runs, options), options), area, options);
-  // A horizontal slit: the reveal between the drawer fronts of a stack, or between a drawer and
-  // the door below it, found as a vertical slit of the transposed blob.
-  if (!pieces && options.split_horizontal_slits) {
-    const std::vector<SlitLine> slits =
-        find_slits(horizontal_slit_evidence(runs, options), options);
-    if (!slits.empty()) {
-      pieces = cut_at_slit(transposed(runs), slits, area, options);
-      if (pieces) *pieces = {transposed(pieces->first), transposed(pieces->second)};
-    }
-  }
   if (!pieces) {
     out.push_back(std::move(runs));
     return;

@@ -72,11 +72,6 @@ class PairJudge {
         cut_bar_(cut_bar) {}
 
   std::optional<detail::Candidate> judge() {
-    // Hysteresis: a blob the class model rates just beyond its threshold in one image counts
-    // when the other image shows it clearly; two weak views are not evidence enough.
-    if (dl_.needs_partner && dr_.needs_partner) {
-      return detail::refuse(trace_, StereoGate::kWeakPair, 0.0, 0.0);
-    }
     if (!gate_position() || !gate_appearance() || !place_point() || !gate_size()) {
       return std::nullopt;
     }
@@ -264,21 +259,16 @@ class PairJudge {
 
 // A pair of door outlines of a class with sizes (is_door_pair): one door seen whole or in part,
 // placed by the door's fit (door_pairing.hpp), the corners' states from the border's cuts. Before
-// it, what the outlines hold: not two weak views (Detection::needs_partner: a blob the class model
-// rates just beyond its threshold counts when the other image shows it clearly), no handles one
-// above another (a stack of drawer fronts merged into one door-shaped blob carries a handle per
-// front), and for whole outlines the side gate (door_pair.hpp: a side that is no door edge in one
-// outline is merged there). A whole pair so refused that an occluder may explain is added to
-// `occluded` (explain_unpaired_by_occluder).
+// it, what the outlines hold: no handles one above another (a stack of drawer fronts merged into
+// one door-shaped blob carries a handle per front), and for whole outlines the side gate
+// (door_pair.hpp: a side that is no door edge in one outline is merged there). A whole pair so
+// refused that an occluder may explain is added to `occluded` (explain_unpaired_by_occluder).
 std::optional<detail::Candidate> judge_door_pair(const StereoViews& v, int l, int r,
                                                  StereoPairTrace& trace,
                                                  std::vector<StereoPairTrace>& occluded) {
   using detail::CornerState;
   const Detection& dl = v.left[l];
   const Detection& dr = v.right[r];
-  if (dl.needs_partner && dr.needs_partner) {
-    return detail::refuse(trace, StereoGate::kWeakPair, 0.0, 0.0);
-  }
   if (const detail::BarVerdict bars = v.judge_bars(dl, dr); bars.gate != StereoGate::kNone) {
     return detail::refuse(trace, bars.gate, bars.value, bars.limit);
   }
@@ -339,37 +329,12 @@ std::vector<detail::Candidate> judge_all_pairs(const StereoViews& v,
   return candidates;
 }
 
-// The one-to-one assignment (stereo_assignment.hpp): pairs of two clear detections first; a weak
-// detection (Detection::needs_partner) then takes only a partner left over, so that it never
-// draws a clear detection into a worse pair (the assignment maximizes the number of pairs before
-// their cost). Crossed pairs are then swapped (detail::uncross).
+// The one-to-one assignment (stereo_assignment.hpp), then crossed pairs swapped
+// (detail::uncross).
 std::vector<detail::Candidate> assign_pairs(const StereoViews& v,
                                             const std::vector<detail::Candidate>& candidates) {
-  const auto is_weak_pair = [&](const detail::Candidate& c) {
-    return v.left[c.left].needs_partner || v.right[c.right].needs_partner;
-  };
-  std::vector<detail::Candidate> clear, weak;
-  for (const detail::Candidate& c : candidates) (is_weak_pair(c) ? weak : clear).push_back(c);
-  const int left_count = static_cast<int>(v.left.size());
-  const int right_count = static_cast<int>(v.right.size());
-  std::vector<detail::Candidate> assigned = detail::assign(clear, left_count, right_count);
-  if (!weak.empty()) {
-    std::vector<char> left_taken(v.left.size(), 0), right_taken(v.right.size(), 0);
-    for (const detail::Candidate& c : assigned) {
-      left_taken[static_cast<std::size_t>(c.left)] = 1;
-      right_taken[static_cast<std::size_t>(c.right)] = 1;
-    }
-    std::erase_if(weak, [&](const detail::Candidate& c) {
-      return left_taken[static_cast<std::size_t>(c.left)] ||
-             right_taken[static_cast<std::size_t>(c.right)];
-    });
-    for (detail::Candidate& c : detail::assign(weak, left_count, right_count)) {
-      assigned.push_back(std::move(c));
-    }
-    std::sort(
-        assigned.begin(), assigned.end(),
-        [](const detail::Candidate& a, const detail::Candidate& b) { return a.left < b.left; });
-  }
+  std::vector<detail::Candidate> assigned =
+      detail::assign(candidates, static_cast<int>(v.left.size()), static_cast<int>(v.right.size()));
   detail::uncross(assigned, candidates, v.left, v.left_ideal, v.right_ideal);
   return assigned;
 }
@@ -425,8 +390,7 @@ void place_single_views(const StereoViews& v, const std::vector<detail::Candidat
         const Detection& detection = detections[d];
         const bool door_class = door_class_of(options, detection.type) != nullptr;
         const bool cut = detection.border_cut != BorderCut::kNone;
-        if (paired[static_cast<std::size_t>(image)][d] || detection.needs_partner ||
-            corners[d].size() != 4) {
+        if (paired[static_cast<std::size_t>(image)][d] || corners[d].size() != 4) {
           continue;
         }
         if (pass == 0 ? cut : !door_class || placed[static_cast<std::size_t>(image)][d]) {
@@ -505,8 +469,6 @@ const char* stereo_gate_name(StereoGate gate) {
       return "extent";
     case StereoGate::kHeight:
       return "height";
-    case StereoGate::kWeakPair:
-      return "weak_pair";
     case StereoGate::kStackedBars:
       return "stacked_bars";
     case StereoGate::kRectangleFit:

@@ -183,7 +183,6 @@ TEST(ModelFile, RoundTripIsExact) {
                                {Eigen::VectorXd::Constant(kDoorDescriptorSize, 1.0)},
                                default_fit_options("door"));
   door.door.min_blob_px = 123;
-  door.door.max_mahalanobis2_with_partner = 30.25;
   door.door.detect_border_cut = true;
   const std::string path =
       (std::filesystem::path(testing::TempDir()) / "vsl_class_model_test_door.yaml").string();
@@ -192,7 +191,6 @@ TEST(ModelFile, RoundTripIsExact) {
   EXPECT_EQ(door_back.recognizer, "door");
   EXPECT_EQ(door_back.model.covariance(), door.model.covariance());
   EXPECT_EQ(door_back.door.min_blob_px, 123);
-  EXPECT_EQ(door_back.door.max_mahalanobis2_with_partner, 30.25);
   EXPECT_TRUE(door_back.door.detect_border_cut);
   std::filesystem::remove(path);
   EXPECT_THROW(save_recognizer_file(door, "/nonexistent-dir/door.yaml"), std::runtime_error);
@@ -320,18 +318,6 @@ TEST(ModelFile, EveryValidationError) {
                "parameters.min_border_distance_px", "must be an integer in [0, 1000]");
   expect_error(replaced(door_text.str(), "recognizer: door", "recognizer: handle"),
                "model.descriptor", "expected the components");
-  // The hysteresis threshold: 0 or at least the model's (18.5 for the chi-square 0.99 quantile
-  // of a fit with default options).
-  const std::string with_partner =
-      replaced(door_text.str(), "min_border_distance_px: 1",
-               "min_border_distance_px: 1\n  max_mahalanobis2_with_partner: 25");
-  EXPECT_EQ(recognizer_file_from(config::Node::load_string(with_partner, "m.yaml"))
-                .door.max_mahalanobis2_with_partner,
-            25.0);
-  expect_error(replaced(with_partner, "with_partner: 25", "with_partner: 5"),
-               "parameters.max_mahalanobis2_with_partner", "at least the model's");
-  expect_error(replaced(with_partner, "with_partner: 25", "with_partner: -1"),
-               "parameters.max_mahalanobis2_with_partner", "must be 0 (off)");
   // Border-cut doors: a boolean, off unless given.
   EXPECT_FALSE(recognizer_file_from(config::Node::load_string(door_text.str(), "m.yaml"))
                    .door.detect_border_cut);

@@ -209,7 +209,7 @@ TEST(Recognizers, SyntheticKitchenFront) {
   EXPECT_NEAR(handles[1].reference_px.y(), 89.5, 0.3);
 }
 
-TEST(Recognizers, DoorsJustBeyondTheModelAreWeakDetections) {
+TEST(Recognizers, DoorsBeyondTheModelsThresholdAreNotReported) {
   cv::Mat image(240, 200, CV_8UC3, kWallBgr);
   const cv::Rect door(60, 30, 70, 170);
   image(door).setTo(kDoorBgr * 0.62);
@@ -218,30 +218,18 @@ TEST(Recognizers, DoorsJustBeyondTheModelAreWeakDetections) {
   GaussianClassModel model =
       diagonal_model("door", door_descriptor_names(), {1.1, 1.1, 0.95, 0.04, 0.08, 0.7, 0.01},
                      {0.3, 0.3, 0.1, 0.06, 0.1, 0.5, 0.03});
-  const auto detect = [&](const GaussianClassModel& m, double with_partner) {
-    DoorRecognizerParameters parameters;
-    parameters.max_mahalanobis2_with_partner = with_partner;
+  const auto detect = [&](const GaussianClassModel& m) {
     std::vector<Detection> out;
-    DoorRecognizer(m, parameters).recognize(image, blobs, out);
+    DoorRecognizer(m, DoorRecognizerParameters{}).recognize(image, blobs, out);
     return out;
   };
-  const std::vector<Detection> clear = detect(model, 0.0);
-  ASSERT_EQ(clear.size(), 1u);
-  EXPECT_FALSE(clear[0].needs_partner);
-  const double d2 = clear[0].mahalanobis2;
+  const std::vector<Detection> accepted = detect(model);
+  ASSERT_EQ(accepted.size(), 1u);
+  const double d2 = accepted[0].mahalanobis2;
   ASSERT_GT(d2, 0.1);
-  // The same blob with the model's threshold just below its D^2: weak, when the hysteresis
-  // threshold reaches it, and otherwise not reported at all.
+  // The same blob with the model's threshold just below its D^2.
   model.set_max_mahalanobis2(0.9 * d2);
-  EXPECT_TRUE(detect(model, 0.0).empty());
-  EXPECT_TRUE(detect(model, 0.95 * d2).empty());
-  const std::vector<Detection> weak = detect(model, 1.1 * d2);
-  ASSERT_EQ(weak.size(), 1u);
-  EXPECT_TRUE(weak[0].needs_partner);
-  EXPECT_DOUBLE_EQ(weak[0].mahalanobis2, d2);
-  EXPECT_EQ(weak[0].reference_px, clear[0].reference_px);
-  // A hysteresis threshold below the model's own is a contradiction.
-  EXPECT_THROW(detect(model, 0.5 * d2), std::invalid_argument);
+  EXPECT_TRUE(detect(model).empty());
 }
 
 TEST(Recognizers, BlobsOnThreeImageBordersAreNotJudged) {

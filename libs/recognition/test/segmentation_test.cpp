@@ -177,7 +177,7 @@ TEST(SegmentationOptions, ReadsEveryKey) {
       "  min_blob_px: 9\n  min_split_blob_px: 800\n  max_slit_width_px: 3\n"
       "  min_slit_support: 0.6\n  min_split_piece_fraction: 0.3\n  max_twin_split_px: 900\n"
       "  min_twin_gap_support: 0.7\n  min_twin_piece_fraction: 0.3\n"
-      "  min_twin_gap_chromaticity_difference: 0.1\n  split_horizontal_slits: false\n");
+      "  min_twin_gap_chromaticity_difference: 0.1\n");
   EXPECT_DOUBLE_EQ(options.max_neighbour_difference_rgb, 0.05);
   EXPECT_DOUBLE_EQ(options.max_run_mean_difference_rgb, 0.02);
   EXPECT_DOUBLE_EQ(options.max_colour_volume_rgb3, 1e-3);
@@ -200,7 +200,6 @@ TEST(SegmentationOptions, ReadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.min_twin_gap_support, 0.7);
   EXPECT_DOUBLE_EQ(options.min_twin_piece_fraction, 0.3);
   EXPECT_DOUBLE_EQ(options.min_twin_gap_chromaticity_difference, 0.1);
-  EXPECT_FALSE(options.split_horizontal_slits);
   // Every key is optional.
   const SegmentationOptions defaults = options_from("segmentation: {}\n");
   EXPECT_EQ(defaults.max_region_px, SegmentationOptions{}.max_region_px);
@@ -323,31 +322,6 @@ TEST(SlitSplit, ADoorWithAHandleHoleOrANotchIsNotSplit) {
     return !groove;
   });
   EXPECT_EQ(split_at_slits(shaker, SegmentationOptions{}).size(), 1u);
-}
-
-TEST(SlitSplit, HorizontalSlitsOfADrawerStackAreCutWhenNoVerticalOneIs) {
-  // Two drawer fronts (rows 0-39 and 41-79) whose reveal (row 40) the barrier lost over 20 of
-  // 120 columns.
-  const auto stack =
-      runs_where(0, 120, 0, 80, [](int u, int v) { return !(v == 40 && u >= 10 && u < 110); });
-  const auto pieces = split_at_slits(stack, SegmentationOptions{});
-  ASSERT_EQ(pieces.size(), 2u);
-  for (const PixelRun& r : pieces[0]) EXPECT_LE(r.v, 40);
-  for (const PixelRun& r : pieces[1]) EXPECT_GE(r.v, 40);
-  EXPECT_EQ(area_of(pieces[0]) + area_of(pieces[1]), area_of(stack));
-  for (const auto& piece : pieces) {  // sorted by (v, u_begin), as the input
-    for (std::size_t i = 1; i < piece.size(); ++i) {
-      EXPECT_TRUE(piece[i - 1].v < piece[i].v ||
-                  (piece[i - 1].v == piece[i].v && piece[i - 1].u_end < piece[i].u_begin));
-    }
-  }
-  // A shaker door's rails: the grooves 10 px inside its top and bottom edges cut off strips.
-  const auto rails = runs_where(
-      0, 80, 0, 160, [](int u, int v) { return !((v == 10 || v == 149) && u >= 10 && u < 70); });
-  EXPECT_EQ(split_at_slits(rails, SegmentationOptions{}).size(), 1u);
-  SegmentationOptions vertical_only;
-  vertical_only.split_horizontal_slits = false;
-  EXPECT_EQ(split_at_slits(stack, vertical_only).size(), 1u);
 }
 
 // Twin bars: two brass bars (5 x 60 px) side by side on a blue door, 3 px apart, joined by two

@@ -428,10 +428,6 @@ TEST_F(SideCorrelationTest, ADoorSeenInOneImageOnlyIsPlacedFromItsSidesAlone) {
   EXPECT_TRUE(match({left, upper, lower}, {}, images).empty());
   EXPECT_EQ(match({left, upper, beside}, {}, images).size(), 1u);
   options.max_bar_height_spread = 0.0;
-  // A weak detection never makes a percept alone.
-  Detection weak = left;
-  weak.needs_partner = true;
-  EXPECT_TRUE(match({weak}, {}, images).empty());
   // A second outline of a door that a pair already placed adds no percept.
   EXPECT_EQ(match({left, left}, {right}, images).size(), 1u);
   // Off (0): no pair, no percept.

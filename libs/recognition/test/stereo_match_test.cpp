@@ -615,41 +615,6 @@ TEST_F(StereoMatchTest, ConfidenceIsTheGeometricMean) {
   EXPECT_NEAR(percepts[0].confidence, 0.72, 1e-6);
 }
 
-TEST_F(StereoMatchTest, AWeakDetectionNeedsAClearPartner) {
-  // Hysteresis (Detection::needs_partner): a weak view pairs with a clear one, in either image;
-  // two weak views make no percept, and the trace says why.
-  Pair p = pair_of({0.1, 0.0, 2.0});
-  p.left.needs_partner = true;
-  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
-  p.left.needs_partner = false;
-  p.right.needs_partner = true;
-  EXPECT_EQ(match({p.left}, {p.right}).size(), 1u);
-  p.left.needs_partner = true;
-  std::vector<StereoPairTrace> trace;
-  EXPECT_TRUE(match_and_triangulate({p.left}, {p.right}, calibration_.left, calibration_.right,
-                                    left_T_right_, options_, Eigen::Vector3d::Zero(), &trace)
-                  .empty());
-  ASSERT_EQ(trace.size(), 1u);
-  EXPECT_EQ(trace[0].refused_by, StereoGate::kWeakPair);
-  EXPECT_STREQ(stereo_gate_name(trace[0].refused_by), "weak_pair");
-
-  // A weak detection takes only a partner that the clear pairs left: the most pairs would be
-  // {weak - R1, L1 - R2}, which draws L1 away from its own view R1.
-  p.left.needs_partner = false;
-  p.right.needs_partner = false;
-  Detection r2 = p.right;  // on the same row, nearer, larger: admissible for L1 at a higher cost
-  r2.reference_px.x() -= 30.0;
-  r2.area_px *= 1.4;
-  Detection weak = p.left;  // admissible with R1 only (its area ratio to R2 is 2.1)
-  weak.reference_px.x() += 10.0;
-  weak.area_px /= 1.5;
-  weak.needs_partner = true;
-  const auto percepts = match({p.left, weak}, {p.right, r2});
-  ASSERT_EQ(percepts.size(), 1u);
-  EXPECT_EQ(percepts[0].left_detection, 0);
-  EXPECT_EQ(percepts[0].right_detection, 0);
-}
-
 TEST_F(StereoMatchTest, EmptyInputs) {
   const Pair p = pair_of({0.0, 0.0, 1.5});
   EXPECT_TRUE(match({}, {p.right}).empty());

@@ -46,11 +46,6 @@ struct Detection {
   // the confidence derived from it: the chi-square survival probability, 0 .. 1.
   double mahalanobis2 = 0.0;
   float confidence = 0.0f;
-  // A weak detection: D^2 beyond the class model's acceptance threshold, but within the
-  // recognizer's threshold for a blob whose other view is clear
-  // (DoorRecognizerParameters::max_mahalanobis2_with_partner). The stereo match pairs it only
-  // with a detection that is not weak (StereoGate::kWeakPair), so it never makes a percept alone.
-  bool needs_partner = false;
   // A door whose outline the top or bottom image border cuts along a whole side
   // (DoorRecognizerParameters::detect_border_cut): its corners_px are the outline's with the two
   // on the cut side where the vertical sides leave the image, its height_px is the visible length

@@ -27,13 +27,6 @@ struct DoorRecognizerParameters {
   // still shows each of the four sides along at least 60% of its length (the border cut off a
   // corner, which the sides' intersection restores). 0 disables the check.
   int min_border_distance_px = 1;
-  // Hysteresis on D^2 (Detection::needs_partner): a blob whose D^2 is beyond the class model's
-  // max_mahalanobis2 but at most this is reported as a weak detection, which the stereo match
-  // keeps only when the other image's detection passes the model's threshold. One view of a door
-  // is often a little off the model (a strip of shadow, a chair in front of a corner) while the
-  // other is clean. 0: off (no weak detections); otherwise at least the model's threshold
-  // (checked when the model file is read).
-  double max_mahalanobis2_with_partner = 0.0;
   // Doors cut by the top or bottom image border along a whole side (Detection::border_cut): a
   // door a robot stands near is often taller than the image's vertical field of view, and
   // base-unit doors lose their bottom to the image's lower border when the head looks at the

@@ -77,10 +77,6 @@ struct SegmentationOptions {
   int max_slit_width_px = 4;
   double min_slit_support = 0.4;
   double min_split_piece_fraction = 0.2;
-  // ... and when no vertical slit splits it, a horizontal one (found the same way in the blob
-  // mirrored about its diagonal): the reveals between the drawer fronts of a stack, or between a
-  // drawer and the door below it.
-  bool split_horizontal_slits = true;
   // Twin-bar split (split_twin_bars): a blob of at most max_twin_split_px pixels (0 turns it off)
   // is cut in two along its major axis where a gap runs between two bars in at least
   // min_twin_gap_support of its slices across, when each piece is a bar (along at least 60% of

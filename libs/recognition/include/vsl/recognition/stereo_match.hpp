@@ -147,7 +147,7 @@ struct StereoPercept {
 };
 
 // The gates of match_and_triangulate (kTriangulation: the pair's point cannot be triangulated,
-// e.g. it is not in front of both cameras). A pair meets them in this order: kWeakPair; with its
+// e.g. it is not in front of both cameras). A pair meets them in this order: with its
 // position kStackedBars, kEpipolar and kSideTilt; kAreaRatio, kOrientation; kTriangulation and
 // kRectangleFit (a door's fit); kDepth, kExtent, kHeight.
 enum class StereoGate {
@@ -160,7 +160,6 @@ enum class StereoGate {
   kDepth,
   kExtent,
   kHeight,
-  kWeakPair,  // both detections weak (Detection::needs_partner)
   // bar detections on an outline one above another (max_bar_height_spread)
   kStackedBars,
   // a corner of a door's outline farther from the fitted rectangle than the outlines' tolerance
