@@ -31,9 +31,6 @@ int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
 constexpr double kMinBorderSideSupport = 0.6;
 // The colour angle's index in the door descriptor (door_descriptor_names()).
 constexpr int kColourComponent = 6;
-// A door face cut by the border fills the outline of its visible part, less its handle's hole
-// and the rows next to the border that segmentation leaves out.
-constexpr double kMinBorderCutFill = 0.8;
 // The cut side's corners (the hull's chord along the border) lie this fraction of the visible
 // sides' length from the border row at most: the hull's vertex there can sit some rows in.
 constexpr double kMaxCutCornerOffBorder = 0.25;
@@ -187,12 +184,6 @@ std::optional<BorderCutOutline> corner_cut_of(const BlobQuadrilateral& quad, con
   return out;
 }
 
-// The area of a convex quadrilateral (corners in order), pixels.
-double outline_area_px(const std::array<Eigen::Vector2d, 4>& c) {
-  const Eigen::Vector2d a = c[2] - c[0], b = c[3] - c[1];
-  return 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
-}
-
 // The detection of a blob that border_cut_of found cut (Detection::border_cut).
 Detection border_cut_detection(const std::string& type, const Blob& blob, int blob_index,
                                const BorderCutOutline& outline, const BlobAxes& axes,
@@ -339,7 +330,7 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
               cut = border_cut_of(*quad, blob, vertical, bgr_image.cols, bgr_image.rows);
             }
           }
-          if (cut && blob.area_px >= kMinBorderCutFill * outline_area_px(cut->corners)) {
+          if (cut) {
             out.push_back(border_cut_detection(model_.type(), blob, static_cast<int>(i), *cut, axes,
                                                colour_d2));
           }

@@ -259,8 +259,8 @@ std::vector<Detection> synthetic_door_detections(const cv::Mat& image,
 
 TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   // A door panel whose top the image's upper border cuts (a wall cupboard seen from close by),
-  // one whose bottom the lower border cuts, one cut by the left border, and a short strip cut by
-  // the top border with a notch (fills under 80% of its outline).
+  // one whose bottom the lower border cuts, one cut by the left border, and one cut by the top
+  // border with a hole where its handle's blob would be: its outline is the panel's.
   cv::Mat image(240, 320, CV_8UC3, kWallBgr);
   const cv::Scalar door_bgr = kDoorBgr * 0.62;
   const cv::Rect top_cut(30, 0, 60, 110), bottom_cut(120, 130, 70, 110), left_cut(0, 60, 20, 120),
@@ -274,7 +274,7 @@ TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   }
   EXPECT_TRUE(synthetic_door_detections(image, blobs, false).empty());
   const std::vector<Detection> cut = synthetic_door_detections(image, blobs, true);
-  ASSERT_EQ(cut.size(), 3u);
+  ASSERT_EQ(cut.size(), 4u);
   // Top cut: the corners on the cut side where the sides leave the image (the outer edge of
   // row 0), the reference point the middle of the bottom edge, the height the visible sides'.
   EXPECT_EQ(cut[0].blob_index, 0);
@@ -307,6 +307,9 @@ TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   EXPECT_NEAR(cut[2].reference_px.x(), 19.5, 1.0);
   EXPECT_NEAR(cut[2].reference_px.y(), 119.5, 1.0);
   EXPECT_NEAR(cut[2].height_px, 120.0, 1.5);
+  EXPECT_EQ(cut[3].blob_index, 3);
+  EXPECT_EQ(cut[3].border_cut, BorderCut::kTop);
+  EXPECT_NEAR(cut[3].height_px, 90.0, 1.5);
 }
 
 // The detections of the synthetic handle model (synthetic_recognizers) with border-cut bars on or
