@@ -37,6 +37,14 @@ bool may_be_occluder_cut(const StereoPairTrace& refusal) {
          refusal.refused_by == StereoGate::kRectangleFit;
 }
 
+// The sides' correlation searches this far (pixels of image motion) around the outlines' depth:
+// a margin and a fraction of the left outline's width (side_correlation.hpp).
+double side_search_px(const DoorOutlineView& left) {
+  const std::array<Eigen::Vector2d, 4>& c = left.corners_ideal_px;
+  return kSideSearchPx +
+         kSideSearchWidthFraction * 0.5 * ((c[1] - c[0]).norm() + (c[2] - c[3]).norm());
+}
+
 // Each vertical side of the left outline placed where the images around it correlate, searched
 // around the outlines' depth (side_correlation.hpp): one image's outline often lacks a stile that
 // the other keeps. The right view's corners on that side become where the right camera sees the
@@ -49,8 +57,7 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::DoorClass& 
   };
   const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
   std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
-  const double width_px = 0.5 * ((left[1] - left[0]).norm() + (left[2] - left[3]).norm());
-  const double search_px = kSideSearchPx + kSideSearchWidthFraction * width_px;
+  const double search_px = side_search_px(views[0]);
   const DoorOutlineView outline = views[1];
   // Each side's middle (left camera frame, metres), where it was placed.
   std::array<std::optional<Eigen::Vector3d>, 2> middle_m;
@@ -89,6 +96,70 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::DoorClass& 
       (*middle_m[0] - *middle_m[1]).norm() > door.max_width_m) {
     views[1] = outline;
   }
+}
+
+// The least visible height the door's fit accepts (metres): half the class's least typical height
+// (a size from the prior) and the least of its height range (a measured one); 0 when either bound
+// is missing.
+double least_visible_height_m(const StereoViews& v, const StereoMatchOptions::DoorClass& door) {
+  const StereoMatchOptions::ExtentRange* range = height_range(v.options, door.type);
+  if (door.typical_heights_m.empty() || !range) return 0.0;
+  return std::min(0.5 * door.typical_heights_m.front(), range->min_m);
+}
+
+// Before the sides' correlation, whether the outlines are too short for the door at any depth the
+// correlation or the fit can give them. A side's depth moves at most `reach_px` of image motion
+// from where the outlines put it (the correlation's search, or the position gate: the right
+// outline's side line where it crosses the left side's epipolar line); the farthest
+// such depth D_far makes the side longest, |X(top, D_far) - X(bottom, D_far)| on the left rays
+// (SideCorrelator::point_at), times the right outline's side length over the left's where that is
+// longer. Refused when twice the longest side stays under least_visible_height_m: two outlines of
+// different doors paired at a depth of decimetres, which the fit refuses after the correlation.
+// False (no bound) unless both sides are on the outline in both images.
+bool too_short_at_any_depth(const StereoViews& v, const std::array<DoorOutlineView, 2>& views,
+                            double reach_px, double least_height_m, StereoPairTrace& trace) {
+  if (!(least_height_m > 0.0)) return false;
+  const auto on_side = [](CornerState s) {
+    return s == CornerState::kSeen || s == CornerState::kOnSide;
+  };
+  const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
+  const std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
+  double longest_m = 0.0;
+  for (const auto& [top, bottom] : {std::array<std::size_t, 2>{0, 3}, {1, 2}}) {
+    for (const DoorOutlineView& view : views) {
+      if (!on_side(view.states[top]) || !on_side(view.states[bottom])) return false;
+    }
+    // The side's depth as the fit takes it from the right image: where the right outline's side
+    // line crosses the epipolar line of the left side's middle (not where its ends are).
+    const Eigen::Vector2d left_middle = 0.5 * (left[top] + left[bottom]);
+    const Eigen::Vector3d crossing =
+        v.epipolar.right_line(left_middle)
+            .cross(right[top].homogeneous().cross(right[bottom].homogeneous()));
+    if (!(std::abs(crossing.z()) > 1e-12)) return false;
+    const auto middle_point =
+        v.triangulator.point(left_middle, Eigen::Vector2d(crossing.head<2>() / crossing.z()));
+    if (!middle_point) return false;
+    // lambda = 1 / D, and the side's image motion per unit of lambda at its depth.
+    const Eigen::Vector3d middle = *middle_point;
+    const double lambda = 1.0 / v.correlator->horizontal_distance(middle);
+    const auto at = v.triangulator.project_right(middle);
+    const auto nearer = v.triangulator.project_right(middle / 1.001);
+    if (!(lambda > 0.0) || !at || !nearer) return false;
+    const double px_per_lambda = (*nearer - *at).norm() / (0.001 * lambda);
+    const double far_lambda = lambda - reach_px / px_per_lambda;
+    const double far_m = far_lambda > 0.0 ? std::min(1.0 / far_lambda, v.options.max_depth_m)
+                                          : v.options.max_depth_m;
+    const auto top_far = v.correlator->point_at(left[top], far_m);
+    const auto bottom_far = v.correlator->point_at(left[bottom], far_m);
+    if (!top_far || !bottom_far) return false;
+    const double left_px = (left[bottom] - left[top]).norm();
+    const double right_px = (right[bottom] - right[top]).norm();
+    longest_m = std::max(longest_m, (*top_far - *bottom_far).norm() *
+                                        std::max(1.0, right_px / std::max(left_px, 1e-9)));
+  }
+  if (2.0 * longest_m >= least_height_m) return false;
+  refuse(trace, StereoGate::kHeight, 2.0 * longest_m, least_height_m);
+  return true;
 }
 
 // Before the sides' correlation (the costliest step), what the two outlines alone refuse: where
@@ -152,7 +223,13 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
   // gate's tolerance of the left one's, not within the pixel noise (a side that correlates is
   // measured to that noise: correlate_sides).
   views[1].sigma_px.fill(options.max_epipolar_distance_px);
-  if (v.correlator) correlate_sides(v, door, views);
+  if (v.correlator) {
+    const double reach_px = std::max(side_search_px(views[0]), limits.tolerance_px);
+    if (too_short_at_any_depth(v, views, reach_px, least_visible_height_m(v, door), trace)) {
+      return std::nullopt;
+    }
+    correlate_sides(v, door, views);
+  }
   return judge_partly_seen_door(l, r, views, v.rig, v.triangulator, options, door,
                                 reference_depth_offset(options, v.left[l].type), limits, trace);
 }
