@@ -1,6 +1,7 @@
 // Descriptors and Gaussian classification (paper §2.1, Eqs. 2 and 3).
 //   BM_DoorPerBlob / BM_HandlePerBlob: descriptor + class model (+ corner verification for the
-//     handle) of one ground-truth blob of a rendered kitchen view (from the id buffer).
+//     handle where its model file turns it on) of one ground-truth blob of a rendered kitchen
+//     view (from the id buffer).
 //   BM_ClassifySegmentedImage: both recognizers over all blobs segment() finds in one image.
 // Run from the repository root (config/worlds/kitchen.yaml, config/recognition/*.yaml):
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench

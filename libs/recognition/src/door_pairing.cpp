@@ -108,14 +108,17 @@ double least_visible_height_m(const StereoViews& v, const StereoMatchOptions::Do
 }
 
 // Before the sides' correlation, whether the outlines are too short for the door at any depth the
-// correlation or the fit can give them. A side's depth moves at most `reach_px` of image motion
-// from where the outlines put it (the correlation's search, or the position gate: the right
-// outline's side line where it crosses the left side's epipolar line); the farthest
-// such depth D_far makes the side longest, |X(top, D_far) - X(bottom, D_far)| on the left rays
-// (SideCorrelator::point_at), times the right outline's side length over the left's where that is
-// longer. Refused when twice the longest side stays under least_visible_height_m: two outlines of
-// different doors paired at a depth of decimetres, which the fit refuses after the correlation.
-// False (no bound) unless both sides are on the outline in both images.
+// correlation and the fit can give them. A side's depth is taken as the fit takes it from the right
+// image: where the right outline's side line crosses the epipolar line of the left side's middle.
+// The correlation moves it by its search and the fit by the position gate, together `reach_px` of
+// image motion; the farthest depth so reached, D_far, makes the side longest: |X(top, D_far) -
+// X(bottom, D_far)| on the left rays (SideCorrelator::point_at), times the right outline's side
+// length over the left's where that is longer. Refused when twice the longest side stays under
+// least_visible_height_m: two outlines of different doors paired at a depth of decimetres, which
+// the fit refuses after the correlation. The factor of two is the margin for what the bound
+// leaves out: ideal against raw pixels of a distorted image, the right camera's own focal length
+// and distance, the left corners' own error. False (no bound) unless both sides are on the
+// outline in both images.
 bool too_short_at_any_depth(const StereoViews& v, const std::array<DoorOutlineView, 2>& views,
                             double reach_px, double least_height_m, StereoPairTrace& trace) {
   if (!(least_height_m > 0.0)) return false;
@@ -129,8 +132,7 @@ bool too_short_at_any_depth(const StereoViews& v, const std::array<DoorOutlineVi
     for (const DoorOutlineView& view : views) {
       if (!on_side(view.states[top]) || !on_side(view.states[bottom])) return false;
     }
-    // The side's depth as the fit takes it from the right image: where the right outline's side
-    // line crosses the epipolar line of the left side's middle (not where its ends are).
+    // The side's depth from the right side line (not from where its ends are).
     const Eigen::Vector2d left_middle = 0.5 * (left[top] + left[bottom]);
     const Eigen::Vector3d crossing =
         v.epipolar.right_line(left_middle)
@@ -224,7 +226,7 @@ std::optional<Candidate> judge_door(const StereoViews& v, int l, int r,
   // measured to that noise: correlate_sides).
   views[1].sigma_px.fill(options.max_epipolar_distance_px);
   if (v.correlator) {
-    const double reach_px = std::max(side_search_px(views[0]), limits.tolerance_px);
+    const double reach_px = side_search_px(views[0]) + limits.tolerance_px;
     if (too_short_at_any_depth(v, views, reach_px, least_visible_height_m(v, door), trace)) {
       return std::nullopt;
     }

@@ -3,7 +3,6 @@
 
 #include <opencv2/core.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <ostream>

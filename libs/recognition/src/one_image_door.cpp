@@ -50,9 +50,8 @@ struct OwnView {
 
 // Both sides vertical in 3D as the own image shows them: a vertical line and the camera centre
 // span a plane that holds `up`, |n . u| / |n| the sine of the side's tilt from vertical. An
-// outline with a side tilted more than max_side_tilt_rad places no door from one image anyway
-// (on the tuning kitchens not one percept changes without this test); it spares the sweeps over
-// the whole depth range, the costliest step (a third of the stereo stage on a busy view).
+// outline with a side tilted more than max_side_tilt_rad places no door from one image anyway;
+// the test spares its sweeps over the whole depth range, the costliest step.
 bool sides_vertical(const OwnView& o, double max_tilt_rad) {
   if (!(max_tilt_rad > 0.0)) return true;
   const Eigen::Matrix3d k_inverse = o.own_camera.K.inverse();

@@ -56,9 +56,8 @@ bool among(const SlitLine& line, const std::vector<SlitLine>& rejected, int v_mi
   });
 }
 
-// What the slit search looks at, in a frame where the slits sought are near-vertical: per row
-// (v_min + k) the blob's first column and one past its last (0: no pixel in the row), and the slit
-// points, sorted by (v, u).
+// What the slit search looks at: per row (v_min + k) the blob's first column and one past its
+// last (0: no pixel in the row), and the slit points, sorted by (v, u).
 struct SlitEvidence {
   int v_min = 0;
   int rows = 0;

@@ -356,7 +356,8 @@ StereoPercept to_percept(const StereoViews& v, const detail::Candidate& c) {
 // One detection of one image that no pair took, placed from that image alone by the door's fit
 // (one_image_door.hpp): whole outlines from both sides (pass 0); what is left from one side
 // (pass 1: the other side beyond the other image's border, or one of two peaks of a repeated
-// edge), and whole outlines also with the sides' roles swapped (merged with a neighbour).
+// edge), and whole outlines also with the sides' roles swapped (the outer side swept, the inner
+// one placed and found in the other image).
 std::optional<StereoPercept> place_from_one_image(const StereoViews& v, int image, std::size_t d,
                                                   int pass) {
   const int index = static_cast<int>(d);

@@ -264,12 +264,12 @@ TEST(Recognizers, DoorsCutByOneBorderAreBorderCutDetections) {
   cv::Mat image(240, 320, CV_8UC3, kWallBgr);
   const cv::Scalar door_bgr = kDoorBgr * 0.62;
   const cv::Rect top_cut(30, 0, 60, 110), bottom_cut(120, 130, 70, 110), left_cut(0, 60, 20, 120),
-      notched(230, 0, 60, 90);
-  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, notched}) image(r).setTo(door_bgr);
+      holed(230, 0, 60, 90);
+  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, holed}) image(r).setTo(door_bgr);
   image(cv::Rect(245, 30, 30, 40)).setTo(kWallBgr);
   add_noise(image, 17);
   std::vector<Blob> blobs;
-  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, notched}) {
+  for (const cv::Rect& r : {top_cut, bottom_cut, left_cut, holed}) {
     blobs.push_back(colour_blob(image, door_bgr, 12.0, r));
   }
   EXPECT_TRUE(synthetic_door_detections(image, blobs, false).empty());

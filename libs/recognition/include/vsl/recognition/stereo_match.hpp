@@ -148,7 +148,8 @@ struct StereoPercept {
 
 // The gates of match_and_triangulate (kTriangulation: the pair's point cannot be triangulated,
 // e.g. it is not in front of both cameras). A pair meets them in this order: with its
-// position kStackedBars, kEpipolar and kSideTilt; kAreaRatio, kOrientation; kTriangulation and
+// position kStackedBars, kEpipolar and kSideTilt; kAreaRatio, kOrientation; for door outlines
+// kHeight before the sides' correlation (too short at any depth it can reach); kTriangulation and
 // kRectangleFit (a door's fit); kDepth, kExtent, kHeight.
 enum class StereoGate {
   kNone,
