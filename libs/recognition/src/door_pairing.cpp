@@ -37,6 +37,12 @@ bool may_be_occluder_cut(const StereoPairTrace& refusal) {
          refusal.refused_by == StereoGate::kRectangleFit;
 }
 
+// A corner on its vertical side in an image: the door's corner, or where the side leaves the
+// outline.
+bool on_side(CornerState s) {
+  return s == CornerState::kSeen || s == CornerState::kOnSide;
+}
+
 // The sides' correlation searches this far (pixels of image motion) around the outlines' depth:
 // a margin and a fraction of the left outline's width (side_correlation.hpp).
 double side_search_px(const DoorOutlineView& left) {
@@ -52,9 +58,6 @@ double side_search_px(const DoorOutlineView& left) {
 // repeats every edge: StereoMatchOptions::min_peak_margin), keeps the right outline's.
 void correlate_sides(const StereoViews& v, const StereoMatchOptions::DoorClass& door,
                      std::array<DoorOutlineView, 2>& views) {
-  const auto on_side = [](CornerState s) {
-    return s == CornerState::kSeen || s == CornerState::kOnSide;
-  };
   const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
   std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
   const double search_px = side_search_px(views[0]);
@@ -104,7 +107,7 @@ void correlate_sides(const StereoViews& v, const StereoMatchOptions::DoorClass& 
 double least_visible_height_m(const StereoViews& v, const StereoMatchOptions::DoorClass& door) {
   const StereoMatchOptions::ExtentRange* range = height_range(v.options, door.type);
   if (door.typical_heights_m.empty() || !range) return 0.0;
-  return std::min(0.5 * door.typical_heights_m.front(), range->min_m);
+  return std::min(kMinVisibleOfTypicalHeight * door.typical_heights_m.front(), range->min_m);
 }
 
 // Before the sides' correlation, whether the outlines are too short for the door at any depth the
@@ -122,9 +125,6 @@ double least_visible_height_m(const StereoViews& v, const StereoMatchOptions::Do
 bool too_short_at_any_depth(const StereoViews& v, const std::array<DoorOutlineView, 2>& views,
                             double reach_px, double least_height_m, StereoPairTrace& trace) {
   if (!(least_height_m > 0.0)) return false;
-  const auto on_side = [](CornerState s) {
-    return s == CornerState::kSeen || s == CornerState::kOnSide;
-  };
   const std::array<Eigen::Vector2d, 4>& left = views[0].corners_ideal_px;
   const std::array<Eigen::Vector2d, 4>& right = views[1].corners_ideal_px;
   double longest_m = 0.0;

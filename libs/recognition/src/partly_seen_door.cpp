@@ -350,7 +350,8 @@ std::optional<Refusal> prior_refusal(const Start& start, const StereoMatchOption
                                      const SizePriors& priors) {
   using enum StereoGate;
   const std::vector<double>& heights = door.typical_heights_m;
-  if (auto refusal = priors.height ? outside(kHeight, start.visible_height_m, 0.5 * heights.front(),
+  if (auto refusal = priors.height ? outside(kHeight, start.visible_height_m,
+                                             kMinVisibleOfTypicalHeight * heights.front(),
                                              kMaxVisibleOfTypical * heights.back())
                                    : std::nullopt) {
     return refusal;

@@ -84,6 +84,11 @@ inline constexpr double kRectangleEpipolarFraction = 0.05;
 // grazing angles no door of the evaluations was recognized whole either (PartlySeenLimits).
 inline constexpr double kMinCosViewing = 0.2;
 
+// A height the fit takes from the class's prior needs at least this fraction of the least
+// typical height in view (PartlySeenLimits; door_pairing.cpp bounds pairs by it before the
+// sides' correlation).
+inline constexpr double kMinVisibleOfTypicalHeight = 0.5;
+
 enum class CornerState { kSeen, kOnSide, kOnEdge, kHidden, kMerged, kAbsent };
 
 // One image's outline of the door: its corners (ideal pixels, clockwise from the top left) and
