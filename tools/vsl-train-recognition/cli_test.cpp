@@ -68,6 +68,21 @@ TEST(VslTrainRecognition, TrainsHandleModelOnSimulatedViews) {
   }
 }
 
+// --keep TYPE=FRACTION: each class's threshold keeps its own share of the positives.
+TEST(VslTrainRecognition, KeepsEachClassOwnShareOfPositives) {
+  const auto dir = scratch_dir("keep");
+  const auto result = run_command(
+      {VSL_TRAIN_RECOGNITION_BIN, "--world", "config/worlds/kitchen.yaml", "--views", "6", "--seed",
+       "3", "--types", "handle", "--keep", "handle=0.9", "-q", "-o", dir.string()},
+      300.0);
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  const std::size_t at = result.out.find("keeps ");
+  ASSERT_NE(at, std::string::npos) << result.out;
+  const double kept_percent = std::stod(result.out.substr(at + 6));
+  EXPECT_GE(kept_percent, 90.0) << result.out;
+  EXPECT_LT(kept_percent, 92.0) << result.out;  // not the default 98%
+}
+
 // Twelve blue "doors" of different sizes on a grey wall, each with its box, in two images.
 TEST(VslTrainRecognition, TrainsOnHandLabelledBoxes) {
   const auto dir = scratch_dir("boxes");
@@ -128,6 +143,9 @@ TEST(VslTrainRecognition, BadInputExitsTwoWithOneLine) {
       {"--world", "config/worlds/kitchen.yaml", "--views", "x", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--views", "0", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--keep", "2", "-o", out},
+      {"--world", "config/worlds/kitchen.yaml", "--keep", "door=2", "-o", out},
+      {"--world", "config/worlds/kitchen.yaml", "--keep", "=0.9", "-o", out},
+      {"--world", "config/worlds/kitchen.yaml", "--keep", "window=0.9", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--types", "window", "-o", out},
       {"--world", "no/such/world.yaml", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--config", "no/such.yaml", "-o", out},

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -53,7 +54,9 @@ options:
   -o, --output-dir DIR  where the model files go (default config/recognition); an existing
                         <type>.yaml there keeps its recognizer parameters, only the model changes
   --keep FRACTION       the threshold is the smallest squared Mahalanobis distance that keeps
-                        this fraction of the positives (default 0.98)
+                        this fraction of the positives (default 0.98); per class as
+                        TYPE=FRACTION,... (e.g. door=0.925,handle=0.998; a class not named
+                        keeps 0.98)
   --dry-run             report, write nothing
   -q, --quiet           no status line
 exit codes: 0 ok, 1 a file could not be written or too few samples, 2 bad usage or input file
@@ -89,11 +92,40 @@ struct Options {
   std::vector<std::string> types{"door", "handle"};
   std::string config_file = "config/recognition.yaml";
   std::string output_dir = "config/recognition";
-  double keep = 0.98;
+  double keep = 0.98;                     // for a class not in keep_of
+  std::map<std::string, double> keep_of;  // --keep TYPE=FRACTION,...
   bool dry_run = false;
   bool quiet = false;
   std::string command_line;
 };
+
+double parse_fraction(const std::string& text) {
+  double value = 0.0;
+  try {
+    std::size_t used = 0;
+    value = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    usage_error("--keep wants a number, got '" + text + "'");
+  }
+  if (!(value > 0.5 && value <= 1.0)) usage_error("--keep wants (0.5, 1], got " + text);
+  return value;
+}
+
+// FRACTION, or TYPE=FRACTION,... for each class its own.
+void parse_keep(const std::string& text, Options& options) {
+  if (text.find('=') == std::string::npos) {
+    options.keep = parse_fraction(text);
+    return;
+  }
+  for (const std::string& entry : split(text, ',')) {
+    const std::size_t equals = entry.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      usage_error("--keep wants FRACTION or TYPE=FRACTION,..., got '" + entry + "'");
+    }
+    options.keep_of[entry.substr(0, equals)] = parse_fraction(entry.substr(equals + 1));
+  }
+}
 
 Options parse(int argc, char** argv) {
   Options options;
@@ -128,15 +160,7 @@ Options parse(int argc, char** argv) {
     } else if (arg == "-o" || arg == "--output-dir") {
       options.output_dir = value_of(i, arg);
     } else if (arg == "--keep") {
-      const std::string text = value_of(i, arg);
-      try {
-        std::size_t used = 0;
-        options.keep = std::stod(text, &used);
-        if (used != text.size()) throw std::invalid_argument(text);
-      } catch (const std::exception&) {
-        usage_error("--keep wants a number, got '" + text + "'");
-      }
-      if (!(options.keep > 0.5 && options.keep <= 1.0)) usage_error("--keep wants (0.5, 1]");
+      parse_keep(value_of(i, arg), options);
     } else if (arg == "--dry-run") {
       options.dry_run = true;
     } else if (arg == "-q" || arg == "--quiet") {
@@ -147,6 +171,11 @@ Options parse(int argc, char** argv) {
   }
   if (options.world_file.empty() == options.labels_file.empty()) {
     usage_error("give exactly one of --world and --labels");
+  }
+  for (const auto& [type, keep] : options.keep_of) {
+    if (std::find(options.types.begin(), options.types.end(), type) == options.types.end()) {
+      usage_error("--keep: '" + type + "' is not among the classes trained (--types)");
+    }
   }
   return options;
 }
@@ -284,7 +313,8 @@ int main(int argc, char** argv) {
         exit_code = 1;
         continue;
       }
-      const tools::TrainedModel trained = tools::train_class(s, options.keep);
+      const tools::TrainedModel trained = tools::train_class(
+          s, options.keep_of.count(type) ? options.keep_of.at(type) : options.keep);
       s.file.model = trained.model;
       std::ostringstream provenance;
       provenance << options.command_line << ": " << trained.summary << " from " << source_text;

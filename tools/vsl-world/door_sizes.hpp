@@ -1,37 +1,16 @@
-// The sizes of a world's objects of one type (doors) as the recognizer's class entry wants them
-// (StereoMatchOptions::DoorClass, config/recognition.yaml door_classes): the prior of the door
-// fit for what neither image shows (docs/recognition.md).
+// The sizes of a world's objects of one type (vsl/world/object_sizes.hpp), printed as the
+// recognizer's class entry wants them (config/recognition.yaml, stereo.door_classes).
 #pragma once
 
 #include <ostream>
 #include <string>
-#include <utility>
-#include <vector>
 
-#include "vsl/world/world_model.hpp"
+#include "vsl/world/object_sizes.hpp"
 
 namespace vsl::world_tool {
 
-// One size and how many objects have it (metres; sizes within 5 mm are one).
-struct SizeCount {
-  double size_m = 0.0;
-  int count = 0;
-};
-
-struct ClassSizes {
-  std::string type;
-  int objects = 0;                 // of the type, with a size (ObjectModel::size_m)
-  std::vector<SizeCount> heights;  // along the object's z (up), ascending
-  std::vector<SizeCount> widths;   // along its x (across the face), ascending
-  double typical_width_m = 0.0;    // the most common width (the narrower of equals)
-  double width_sigma_m = 0.0;      // RMS of the widths about it
-  double height_sigma_m = 0.0;     // RMS of the heights about the most common height
-};
-
-// The sizes of `type`'s objects that have one; `objects` 0 when none has.
-ClassSizes class_sizes(const world::WorldModel& world, const std::string& type);
-
 // A comment line with the counts and the door_classes entry's size keys, YAML.
-void print_class_sizes(const ClassSizes& sizes, const std::string& world_name, std::ostream& out);
+void print_class_sizes(const world::ClassSizes& sizes, const std::string& world_name,
+                       std::ostream& out);
 
 }  // namespace vsl::world_tool

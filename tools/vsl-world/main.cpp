@@ -231,8 +231,7 @@ int main(int argc, char** argv) {
       std::printf("%s: ok (%zu objects, %zu primitives)\n", options.file.c_str(),
                   world.objects.size(), primitives);
     } else if (options.command == "door-sizes") {
-      const vsl::world_tool::ClassSizes sizes =
-          vsl::world_tool::class_sizes(world, options.sizes_type);
+      const vsl::world::ClassSizes sizes = vsl::world::class_sizes(world, options.sizes_type);
       if (sizes.objects == 0) {
         std::cerr << options.file << ": no object of type '" << options.sizes_type
                   << "' has a size\n";

@@ -117,12 +117,15 @@ void cup_pull(WorldBuilder& builder, const HandleStyle& style, const FrontSpec& 
   const double cup = length_of(style), plate = cup + 2 * kCupPlateEar;
   const double w = f.width_m, h = f.height_m, tall = kCupHeight + kCupPlateAbove;
   const double x = f.opening_side * std::max(0.0, w / 2 - kCupEdge - plate / 2);
+  // The cup's opening (its lowest edge) on the front; the object's position is the centre of
+  // what a camera sees of it, the shell and its plate, tall / 2 above the opening.
   const double z = f.at == GripAt::top      ? h / 2 - kCupEdge - tall
                    : f.at == GripAt::bottom ? -h / 2 + kCupEdge
                                             : -tall / 2;  // a drawer's: the cup centred
-  ObjectModel& c =
-      builder.add(f.id + ".handle", "handle", offset(f.world_T_front, {x, -kCupDepth / 2, z}),
-                  Vector3d(plate, kCupDepth, tall), f.id);
+  ObjectModel& c = builder.add(f.id + ".handle", "handle",
+                               offset(f.world_T_front, {x, -kCupDepth / 2, z + tall / 2}),
+                               Vector3d(plate, kCupDepth, tall), f.id);
+  const Vector3d opening(0, 0, -tall / 2);  // in the handle's frame
   constexpr int kSteps = 8;
   std::vector<Vector2d> shell, cap{{kCupDepth / 2, 0.0}};
   for (int i = kSteps; i >= 0; --i) cap.push_back(cup_arc(i * std::numbers::pi / 2 / kSteps, 0));
@@ -130,14 +133,14 @@ void cup_pull(WorldBuilder& builder, const HandleStyle& style, const FrontSpec& 
   for (int i = kSteps; i >= 0; --i) {
     shell.push_back(cup_arc(i * std::numbers::pi / 2 / kSteps, kCupShell));
   }
-  c.primitives.push_back(polyhedron("handle", Vector3d::Zero(), prism_x(shell, cup)));
+  c.primitives.push_back(polyhedron("handle", opening, prism_x(shell, cup)));
   for (double side : {-1.0, 1.0}) {
-    c.primitives.push_back(
-        polyhedron("handle", {side * (cup - kCupShell) / 2, 0, 0}, prism_x(cap, kCupShell)));
+    c.primitives.push_back(polyhedron(
+        "handle", opening + Vector3d(side * (cup - kCupShell) / 2, 0, 0), prism_x(cap, kCupShell)));
   }
-  c.primitives.push_back(box_between("handle",
-                                     {-plate / 2, kCupDepth / 2 - kCupShell, kCupHeight - 0.015},
-                                     {plate / 2, kCupDepth / 2, tall}));
+  c.primitives.push_back(box_between(
+      "handle", opening + Vector3d(-plate / 2, kCupDepth / 2 - kCupShell, kCupHeight - 0.015),
+      opening + Vector3d(plate / 2, kCupDepth / 2, tall)));
 }
 
 void recessed(WorldBuilder& builder, const FrontSpec& f, const GripCut& cut) {

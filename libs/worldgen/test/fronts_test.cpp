@@ -226,13 +226,14 @@ TEST(HandleKinds, ReferencePointIsTheCentreOfTheVisibleGrip) {
     EXPECT_GT(g.at.z(), 0.0);
     EXPECT_NEAR(g.handle.size_m->x(), 0.032, 1e-9);  // default diameter
   }
-  {  // Cup pull: the centre of its opening, which faces down; the shell rises above it.
+  {  // Cup pull: the centre of the shell and its plate; the opening faces down.
     const Grip g = grip(generate(layout_with("shaker", "{kind: cup_pull}")), drawer);
-    EXPECT_NEAR(g.own.min().z(), 0.0, 1e-9);
+    EXPECT_NEAR(g.own.center().z(), 0.0, 1e-9);
+    EXPECT_NEAR(g.own.min().z(), -g.handle.size_m->z() / 2, 1e-9);
     EXPECT_NEAR(g.own.center().y(), 0.0, 1e-9);
     EXPECT_NEAR(g.own.center().x(), 0.0, 1e-9);
     EXPECT_NEAR(g.at.y(), -g.handle.size_m->y() / 2, 1e-9);
-    EXPECT_NEAR(g.at.z() + g.handle.size_m->z() / 2, 0.0, 1e-9);  // centred on the drawer
+    EXPECT_NEAR(g.at.z(), 0.0, 1e-9);  // centred on the drawer
   }
   {  // Recessed: the opening on the front face along the top edge, the front's full width.
     const world::WorldModel world = generate(layout_with("shaker", "{kind: recessed}"));
