@@ -81,6 +81,14 @@ TEST(VslTrainRecognition, KeepsEachClassOwnShareOfPositives) {
   const double kept_percent = std::stod(result.out.substr(at + 6));
   EXPECT_GE(kept_percent, 90.0) << result.out;
   EXPECT_LT(kept_percent, 92.0) << result.out;  // not the default 98%
+  // chi2: the threshold is the fitted Gaussian's own chi-square 0.99 quantile (11.34 for the
+  // handle's 3 components).
+  const auto chi2 = run_command(
+      {VSL_TRAIN_RECOGNITION_BIN, "--world", "config/worlds/kitchen.yaml", "--views", "6", "--seed",
+       "3", "--types", "handle", "--keep", "handle=chi2", "-q", "-o", dir.string()},
+      300.0);
+  ASSERT_EQ(chi2.exit_code, 0) << chi2.out << chi2.err;
+  EXPECT_NE(chi2.out.find("threshold D^2 <= 11.34 "), std::string::npos) << chi2.out;
 }
 
 // Twelve blue "doors" of different sizes on a grey wall, each with its box, in two images.

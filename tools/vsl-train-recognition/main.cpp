@@ -54,9 +54,13 @@ options:
   -o, --output-dir DIR  where the model files go (default config/recognition); an existing
                         <type>.yaml there keeps its recognizer parameters, only the model changes
   --keep FRACTION       the threshold is the smallest squared Mahalanobis distance that keeps
-                        this fraction of the positives (default 0.98); per class as
+                        this fraction of the positives (default 0.98), or chi2: the
+                        fitted Gaussian's own chi-square quantile; per class as
                         TYPE=FRACTION,... (e.g. door=0.925,handle=0.998; a class not named
                         keeps 0.98)
+  --learn-colour        each class's ideal colour (ideal_colour_rgb) becomes the mean colour of
+                        its positive blobs, rather than the model file's (for a building whose
+                        fronts and handles are not the bundled kitchen's colours)
   --dry-run             report, write nothing
   -q, --quiet           no status line
 exit codes: 0 ok, 1 a file could not be written or too few samples, 2 bad usage or input file
@@ -94,12 +98,15 @@ struct Options {
   std::string output_dir = "config/recognition";
   double keep = 0.98;                     // for a class not in keep_of
   std::map<std::string, double> keep_of;  // --keep TYPE=FRACTION,...
+  bool learn_colour = false;
   bool dry_run = false;
   bool quiet = false;
   std::string command_line;
 };
 
+// A share of positives in (0.5, 1], or "chi2": the fit's own chi-square quantile (0 here).
 double parse_fraction(const std::string& text) {
+  if (text == "chi2") return 0.0;
   double value = 0.0;
   try {
     std::size_t used = 0;
@@ -108,7 +115,7 @@ double parse_fraction(const std::string& text) {
   } catch (const std::exception&) {
     usage_error("--keep wants a number, got '" + text + "'");
   }
-  if (!(value > 0.5 && value <= 1.0)) usage_error("--keep wants (0.5, 1], got " + text);
+  if (!(value > 0.5 && value <= 1.0)) usage_error("--keep wants (0.5, 1] or chi2, got " + text);
   return value;
 }
 
@@ -161,6 +168,8 @@ Options parse(int argc, char** argv) {
       options.output_dir = value_of(i, arg);
     } else if (arg == "--keep") {
       parse_keep(value_of(i, arg), options);
+    } else if (arg == "--learn-colour") {
+      options.learn_colour = true;
     } else if (arg == "--dry-run") {
       options.dry_run = true;
     } else if (arg == "-q" || arg == "--quiet") {
@@ -294,7 +303,7 @@ int main(int argc, char** argv) {
     const tools::RecognitionConfig config = tools::read_recognition_config(options.config_file);
     std::vector<tools::ClassSamples> samples;
     for (const std::string& type : options.types) {
-      samples.push_back(tools::ClassSamples{template_for(type, options), {}, {}});
+      samples.push_back(tools::ClassSamples{template_for(type, options), {}, {}, {}, {}});
     }
     std::string source_text;
     if (!options.world_file.empty()) {
@@ -312,6 +321,12 @@ int main(int argc, char** argv) {
                      type.c_str(), s.positives.size(), tools::kMinPositives);
         exit_code = 1;
         continue;
+      }
+      if (options.learn_colour && tools::learn_ideal_colour(s)) {
+        const Eigen::Vector3d& q = s.file.recognizer == "door" ? s.file.door.ideal_colour_rgb
+                                                               : s.file.handle.ideal_colour_rgb;
+        std::printf("%s: ideal colour learned from the positives: [%.3f, %.3f, %.3f]\n",
+                    type.c_str(), q.x(), q.y(), q.z());
       }
       const tools::TrainedModel trained = tools::train_class(
           s, options.keep_of.count(type) ? options.keep_of.at(type) : options.keep);

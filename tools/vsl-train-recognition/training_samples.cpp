@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "vsl/recognition/descriptors.hpp"
 #include "vsl/recognition/labelling.hpp"
 
 namespace vsl::tools {
@@ -17,8 +18,9 @@ void add(ClassSamples& s, const recognition::Blob& blob, recognition::SampleRole
   if (role == recognition::SampleRole::unused) return;
   Eigen::VectorXd descriptor = recognition::descriptor_of(s.file, blob);
   if (!descriptor.allFinite()) return;  // a degenerate blob: no statistics to learn from
-  (role == recognition::SampleRole::positive ? s.positives : s.negatives)
-      .push_back(std::move(descriptor));
+  const bool positive = role == recognition::SampleRole::positive;
+  (positive ? s.positives : s.negatives).push_back(std::move(descriptor));
+  (positive ? s.positive_colours : s.negative_colours).push_back(blob.mean_colour_rgb);
 }
 
 }  // namespace
@@ -73,6 +75,30 @@ void add_box_samples(const cv::Mat& bgr_image, const std::vector<recognition::La
   }
 }
 
+bool learn_ideal_colour(ClassSamples& samples) {
+  if (samples.positive_colours.empty()) return false;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& c : samples.positive_colours) mean += c;
+  mean /= static_cast<double>(samples.positive_colours.size());
+  if (!(mean.norm() > 1e-6)) return false;  // black has no chromaticity
+  recognition::RecognizerFile& file = samples.file;
+  const bool door = file.recognizer == "door";
+  (door ? file.door.ideal_colour_rgb : file.handle.ideal_colour_rgb) = mean;
+  const auto recolour = [&](std::vector<Eigen::VectorXd>& descriptors,
+                            const std::vector<Eigen::Vector3d>& colours) {
+    for (std::size_t i = 0; i < descriptors.size(); ++i) {
+      if (door) {
+        recognition::set_door_colour_components(descriptors[i], mean, colours[i]);
+      } else {
+        recognition::set_handle_colour_components(descriptors[i], mean, colours[i]);
+      }
+    }
+  };
+  recolour(samples.positives, samples.positive_colours);
+  recolour(samples.negatives, samples.negative_colours);
+  return true;
+}
+
 TrainedModel train_class(const ClassSamples& samples, double keep) {
   if (samples.positives.size() < kMinPositives) {
     throw std::invalid_argument("train_class: too few positive samples");
@@ -88,11 +114,12 @@ TrainedModel train_class(const ClassSamples& samples, double keep) {
   d2.reserve(samples.positives.size());
   for (const Eigen::VectorXd& v : samples.positives) d2.push_back(out.model.mahalanobis2(v));
   std::sort(d2.begin(), d2.end());
-  // The smallest D^2 that keeps at least `keep` of the positives.
   const auto n = d2.size();
-  const std::size_t index =
-      std::min(n - 1, static_cast<std::size_t>(std::ceil(keep * static_cast<double>(n))) - 1);
-  out.model.set_max_mahalanobis2(std::max(d2[index], 1e-9));
+  if (keep > 0.0) {  // the smallest D^2 that keeps at least `keep` of the positives
+    const std::size_t index =
+        std::min(n - 1, static_cast<std::size_t>(std::ceil(keep * static_cast<double>(n))) - 1);
+    out.model.set_max_mahalanobis2(std::max(d2[index], 1e-9));
+  }
   const double threshold = out.model.max_mahalanobis2();
   out.kept_fraction =
       static_cast<double>(std::upper_bound(d2.begin(), d2.end(), threshold) - d2.begin()) /

@@ -25,6 +25,9 @@ struct ClassSamples {
   recognition::RecognizerFile file;  // the recognizer to train: its descriptor and parameters
   std::vector<Eigen::VectorXd> positives;
   std::vector<Eigen::VectorXd> negatives;
+  // Each sample's blob mean colour (RGB in [0, 1]), in the same order.
+  std::vector<Eigen::Vector3d> positive_colours;
+  std::vector<Eigen::Vector3d> negative_colours;
 };
 
 // True when the file's recognizer would compute the descriptor of `blob` at all (its size limits
@@ -45,6 +48,12 @@ void add_box_samples(const cv::Mat& bgr_image, const std::vector<recognition::La
                      const recognition::SegmentationOptions& segmentation,
                      std::vector<ClassSamples>& samples);
 
+// Sets the file's ideal colour (Q_d of Eq. 2, Q of Eq. 3) to the mean colour of the positives
+// and recomputes every sample's colour components for it: the class's colour learned from its
+// own views rather than given. Returns false, changing nothing, when there are no positives or
+// their mean is black.
+bool learn_ideal_colour(ClassSamples& samples);
+
 struct TrainedModel {
   recognition::GaussianClassModel model;
   double kept_fraction = 0.0;               // of the positives, by the threshold
@@ -55,7 +64,8 @@ struct TrainedModel {
 };
 
 // Fits the model to the positives (default_fit_options of the recognizer) and sets the threshold
-// to the smallest squared Mahalanobis distance that keeps `keep` of the positives. Requires at
+// to the smallest squared Mahalanobis distance that keeps `keep` of the positives (keep 0: the
+// fit's own chi-square quantile of its acceptance probability). Requires at
 // least kMinPositives positives (std::invalid_argument otherwise).
 TrainedModel train_class(const ClassSamples& samples, double keep);
 

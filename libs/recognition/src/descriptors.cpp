@@ -197,8 +197,20 @@ Eigen::VectorXd door_descriptor(const Blob& blob, const BlobAxes& axes,
   v << axes.chord_ratio_major, axes.chord_ratio_minor, elasticity, axes.side_1_from_vertical_rad,
       axes.side_2_from_vertical_rad,
       0.5 * std::log((blob.rho1_px2 + kPixelVariancePx2) / (blob.rho2_px2 + kPixelVariancePx2)),
-      colour_angle_rad(ideal_colour_rgb, blob.mean_colour_rgb);
+      0.0;
+  set_door_colour_components(v, ideal_colour_rgb, blob.mean_colour_rgb);
   return v;
+}
+
+void set_door_colour_components(Eigen::VectorXd& v, const Eigen::Vector3d& ideal_colour_rgb,
+                                const Eigen::Vector3d& colour_rgb) {
+  v(kDoorColourAngleComponent) = colour_angle_rad(ideal_colour_rgb, colour_rgb);
+}
+
+void set_handle_colour_components(Eigen::VectorXd& v, const Eigen::Vector3d& ideal_colour_rgb,
+                                  const Eigen::Vector3d& colour_rgb) {
+  v(kHandleColourAngleComponent) = colour_angle_rad(ideal_colour_rgb, colour_rgb);
+  v(kHandleColourDistanceComponent) = (ideal_colour_rgb - colour_rgb).norm();
 }
 
 Eigen::VectorXd door_descriptor(const Blob& blob, const Eigen::Vector3d& ideal_colour_rgb) {
@@ -208,9 +220,9 @@ Eigen::VectorXd door_descriptor(const Blob& blob, const Eigen::Vector3d& ideal_c
 Eigen::VectorXd handle_descriptor(const Blob& blob, const Eigen::Vector3d& ideal_colour_rgb) {
   if (blob.empty()) throw std::invalid_argument("handle_descriptor: empty blob");
   Eigen::VectorXd v(kHandleDescriptorSize);
-  v << std::log((blob.rho1_px2 + kPixelVariancePx2) / (blob.rho2_px2 + kPixelVariancePx2)),
-      colour_angle_rad(ideal_colour_rgb, blob.mean_colour_rgb),
-      (ideal_colour_rgb - blob.mean_colour_rgb).norm();
+  v << std::log((blob.rho1_px2 + kPixelVariancePx2) / (blob.rho2_px2 + kPixelVariancePx2)), 0.0,
+      0.0;
+  set_handle_colour_components(v, ideal_colour_rgb, blob.mean_colour_rgb);
   return v;
 }
 

@@ -28,8 +28,6 @@ int int_in(const config::Node& node, std::int64_t min, std::int64_t max) {
 
 // Of each side of a blob cut by the image border, at least this fraction must be outline.
 constexpr double kMinBorderSideSupport = 0.6;
-// The colour angle's index in the door descriptor (door_descriptor_names()).
-constexpr int kColourComponent = 6;
 // The cut side's corners (the hull's chord along the border) lie this fraction of the visible
 // sides' length from the border row at most: the hull's vertex there can sit some rows in.
 constexpr double kMaxCutCornerOffBorder = 0.25;
@@ -303,8 +301,8 @@ void DoorRecognizer::recognize(const cv::Mat& bgr_image, const std::vector<Blob>
     // worktop) are refused before the descriptor's pass over their pixels.
     const double colour_d2 =
         square(colour_angle_rad(parameters_.ideal_colour_rgb, blob.mean_colour_rgb) -
-               model_.mean()(kColourComponent)) /
-        model_.covariance()(kColourComponent, kColourComponent);
+               model_.mean()(kDoorColourAngleComponent)) /
+        model_.covariance()(kDoorColourAngleComponent, kDoorColourAngleComponent);
     if (!model_.accepts(colour_d2)) continue;
     const BlobAxes axes = blob_axes(blob);
     std::optional<BlobQuadrilateral> quad;

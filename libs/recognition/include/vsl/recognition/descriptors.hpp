@@ -66,6 +66,11 @@ namespace vsl::recognition {
 
 inline constexpr int kDoorDescriptorSize = 7;
 inline constexpr int kHandleDescriptorSize = 3;
+// Indices of the components that depend on the ideal colour (door_descriptor_names(),
+// handle_descriptor_names()).
+inline constexpr int kDoorColourAngleComponent = 6;
+inline constexpr int kHandleColourAngleComponent = 1;
+inline constexpr int kHandleColourDistanceComponent = 2;
 
 // Component names, as written in the model files (class_model.hpp) and checked on loading.
 const std::vector<std::string>& door_descriptor_names();
@@ -99,5 +104,12 @@ Eigen::VectorXd door_descriptor(const Blob& blob, const Eigen::Vector3d& ideal_c
 
 // V_h (Eq. 3), size kHandleDescriptorSize.
 Eigen::VectorXd handle_descriptor(const Blob& blob, const Eigen::Vector3d& ideal_colour_rgb);
+
+// The components of V_d (V_h) that depend on the ideal colour, set for a blob of mean colour
+// `colour_rgb`: training that learns the class's ideal colour recomputes them without the blob.
+void set_door_colour_components(Eigen::VectorXd& v, const Eigen::Vector3d& ideal_colour_rgb,
+                                const Eigen::Vector3d& colour_rgb);
+void set_handle_colour_components(Eigen::VectorXd& v, const Eigen::Vector3d& ideal_colour_rgb,
+                                  const Eigen::Vector3d& colour_rgb);
 
 }  // namespace vsl::recognition
