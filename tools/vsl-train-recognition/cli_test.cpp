@@ -91,6 +91,27 @@ TEST(VslTrainRecognition, KeepsEachClassOwnShareOfPositives) {
   EXPECT_NE(chi2.out.find("threshold D^2 <= 11.34 "), std::string::npos) << chi2.out;
 }
 
+// --learn-colour: the written model's ideal colour is its positives' mean colour, not the file's.
+TEST(VslTrainRecognition, LearnsTheIdealColourOfItsPositives) {
+  const auto dir = scratch_dir("colour");
+  const auto result = run_command(
+      {VSL_TRAIN_RECOGNITION_BIN, "--world", "config/worlds/kitchen.yaml", "--views", "6", "--seed",
+       "3", "--types", "handle", "--learn-colour", "--keep", "f1", "-q", "-o", dir.string()},
+      300.0);
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  EXPECT_NE(result.out.find("handle: ideal colour learned from the positives: ["),
+            std::string::npos)
+      << result.out;
+  const std::string text = read_text(dir / "handle.yaml");
+  const std::string shipped = read_text("config/recognition/handle.yaml");
+  const auto colour_line = [](const std::string& file) {
+    const std::size_t at = file.find("ideal_colour_rgb:");
+    return at == std::string::npos ? std::string() : file.substr(at, file.find('\n', at) - at);
+  };
+  EXPECT_FALSE(colour_line(text).empty()) << text;
+  EXPECT_NE(colour_line(text), colour_line(shipped));
+}
+
 // Twelve blue "doors" of different sizes on a grey wall, each with its box, in two images.
 TEST(VslTrainRecognition, TrainsOnHandLabelledBoxes) {
   const auto dir = scratch_dir("boxes");

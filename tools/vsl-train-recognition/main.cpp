@@ -54,8 +54,9 @@ options:
   -o, --output-dir DIR  where the model files go (default config/recognition); an existing
                         <type>.yaml there keeps its recognizer parameters, only the model changes
   --keep FRACTION       the threshold is the smallest squared Mahalanobis distance that keeps
-                        this fraction of the positives (default 0.98), or chi2: the
-                        fitted Gaussian's own chi-square quantile; per class as
+                        this fraction of the positives (default 0.98); chi2: the fitted
+                        Gaussian's own chi-square quantile; f1: the threshold with the best
+                        F1 of the positive against the negative samples; per class as
                         TYPE=FRACTION,... (e.g. door=0.925,handle=0.998; a class not named
                         keeps 0.98)
   --learn-colour        each class's ideal colour (ideal_colour_rgb) becomes the mean colour of
@@ -104,9 +105,11 @@ struct Options {
   std::string command_line;
 };
 
-// A share of positives in (0.5, 1], or "chi2": the fit's own chi-square quantile (0 here).
+// A share of positives in (0.5, 1], "chi2": the fit's own chi-square quantile (0 here), or "f1":
+// the threshold with the best F1 of positives against negatives (tools::kKeepBestF1).
 double parse_fraction(const std::string& text) {
   if (text == "chi2") return 0.0;
+  if (text == "f1") return tools::kKeepBestF1;
   double value = 0.0;
   try {
     std::size_t used = 0;
@@ -115,7 +118,9 @@ double parse_fraction(const std::string& text) {
   } catch (const std::exception&) {
     usage_error("--keep wants a number, got '" + text + "'");
   }
-  if (!(value > 0.5 && value <= 1.0)) usage_error("--keep wants (0.5, 1] or chi2, got " + text);
+  if (!(value > 0.5 && value <= 1.0)) {
+    usage_error("--keep wants (0.5, 1], chi2 or f1, got " + text);
+  }
   return value;
 }
 

@@ -23,6 +23,29 @@ void add(ClassSamples& s, const recognition::Blob& blob, recognition::SampleRole
   (positive ? s.positive_colours : s.negative_colours).push_back(blob.mean_colour_rgb);
 }
 
+// The D^2 among the positives' that maximizes F1 = 2 TP / (2 TP + FP + FN) over the samples:
+// positives within it are true, negatives within it false (the first of equals, the tighter).
+double best_f1_threshold(const std::vector<double>& positive_d2,
+                         const recognition::GaussianClassModel& model,
+                         const ClassSamples& samples) {
+  std::vector<double> negative_d2;
+  negative_d2.reserve(samples.negatives.size());
+  for (const Eigen::VectorXd& v : samples.negatives) negative_d2.push_back(model.mahalanobis2(v));
+  std::sort(negative_d2.begin(), negative_d2.end());
+  const auto n = static_cast<double>(positive_d2.size());
+  double best_f1 = -1.0, best = positive_d2.back();
+  for (std::size_t i = 0; i < positive_d2.size(); ++i) {
+    if (i + 1 < positive_d2.size() && positive_d2[i + 1] == positive_d2[i]) continue;
+    const double tp = static_cast<double>(i + 1);
+    const auto fp = static_cast<double>(
+        std::upper_bound(negative_d2.begin(), negative_d2.end(), positive_d2[i]) -
+        negative_d2.begin());
+    const double f1 = 2.0 * tp / (2.0 * tp + fp + (n - tp));
+    if (f1 > best_f1) best_f1 = f1, best = positive_d2[i];
+  }
+  return best;
+}
+
 }  // namespace
 
 bool judged_by(const recognition::RecognizerFile& file, const recognition::Blob& blob, int width_px,
@@ -119,6 +142,8 @@ TrainedModel train_class(const ClassSamples& samples, double keep) {
     const std::size_t index =
         std::min(n - 1, static_cast<std::size_t>(std::ceil(keep * static_cast<double>(n))) - 1);
     out.model.set_max_mahalanobis2(std::max(d2[index], 1e-9));
+  } else if (keep == kKeepBestF1) {
+    out.model.set_max_mahalanobis2(std::max(best_f1_threshold(d2, out.model, samples), 1e-9));
   }
   const double threshold = out.model.max_mahalanobis2();
   out.kept_fraction =

@@ -63,9 +63,13 @@ struct TrainedModel {
   std::string summary;                // one line for people and for the model's provenance
 };
 
+// `keep` of train_class that asks for the threshold with the best F1 over the samples.
+inline constexpr double kKeepBestF1 = -1.0;
+
 // Fits the model to the positives (default_fit_options of the recognizer) and sets the threshold
 // to the smallest squared Mahalanobis distance that keeps `keep` of the positives (keep 0: the
-// fit's own chi-square quantile of its acceptance probability). Requires at
+// fit's own chi-square quantile of its acceptance probability; kKeepBestF1: the one that
+// maximizes F1 of the positives against the negatives). Requires at
 // least kMinPositives positives (std::invalid_argument otherwise).
 TrainedModel train_class(const ClassSamples& samples, double keep);
 
