@@ -51,7 +51,9 @@ ClassSizes class_sizes(const WorldModel& world, const std::string& type) {
   out.heights = counted(heights);
   out.widths = counted(widths);
   std::tie(out.typical_width_m, out.width_sigma_m) = mode_and_spread(out.widths);
-  out.height_sigma_m = mode_and_spread(out.heights).second;
+  // At most the smallest height: a spread wider than a door is no prior (and the recognizer's
+  // config refuses it); doors of very different heights are each among the typical heights.
+  out.height_sigma_m = std::min(mode_and_spread(out.heights).second, out.heights.front().size_m);
   return out;
 }
 

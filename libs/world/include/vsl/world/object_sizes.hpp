@@ -23,7 +23,7 @@ struct ClassSizes {
   std::vector<SizeCount> widths;   // along its x (across the face), ascending
   double typical_width_m = 0.0;    // the most common width (the narrower of equals)
   double width_sigma_m = 0.0;      // RMS of the widths about it
-  double height_sigma_m = 0.0;     // RMS of the heights about the most common height
+  double height_sigma_m = 0.0;     // RMS of the heights about the most common, at most the least
 };
 
 // The sizes of `type`'s objects that have one; `objects` 0 when none has.
