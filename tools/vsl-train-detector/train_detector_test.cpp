@@ -126,4 +126,32 @@ TEST(LayoutVariants, WritesLayoutsTheGeneratorMakesDeterministically) {
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
+// --colours: each variant also draws its palette, and the generator takes it (the kitchen's own
+// colours: entry is replaced by materials).
+TEST(LayoutVariants, ColoursDrawsEachVariantsPalette) {
+  const fs::path dir = scratch("variant-colours");
+  const auto written =
+      run_command({VSL_LAYOUT_VARIANTS, "--per-layout", "2", "--seed", "7", "--colours", "--out",
+                   dir.string(), "-q", "config/layouts/kitchen.yaml"});
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  std::string doors;
+  for (int k = 0; k < 2; ++k) {
+    const std::string name = "kitchen_v" + std::to_string(k) + ".yaml";
+    const std::string layout = read(dir / name);
+    EXPECT_EQ(layout.find("\ncolours:"), std::string::npos) << layout;
+    for (const char* material : {"door", "handle", "carcass", "wall", "countertop", "floor"}) {
+      EXPECT_NE(layout.find("  " + std::string(material) + ": {colour: '#"), std::string::npos)
+          << material << "\n"
+          << layout;
+    }
+    const auto door = layout.find("  door: {colour: '#");
+    if (door != std::string::npos) doors += layout.substr(door + 19, 6) + " ";
+    const auto generated = run_command({VSL_WORLDGEN_BIN, "kitchen", (dir / name).string(), "-o",
+                                        (dir / ("world_" + name)).string(), "-q"});
+    EXPECT_EQ(generated.exit_code, 0) << name << ": " << generated.err;
+  }
+  EXPECT_NE(doors.substr(0, 6), doors.substr(7, 6)) << doors;   // two palettes
+  EXPECT_EQ(doors.find("2f5f8f"), std::string::npos) << doors;  // not the kitchen's blue
+}
+
 }  // namespace
