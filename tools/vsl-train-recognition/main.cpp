@@ -58,7 +58,7 @@ options:
                         Gaussian's own chi-square quantile; f1: the threshold with the best
                         F1 of the positive against the negative samples; per class as
                         TYPE=FRACTION,... (e.g. door=0.925,handle=0.998; a class not named
-                        keeps 0.98)
+                        gets the last plain --keep, else 0.98)
   --learn-colour        each class's ideal colour (ideal_colour_rgb) becomes the mean colour of
                         its positive blobs, rather than the model file's (for a building whose
                         fronts and handles are not the bundled kitchen's colours)
@@ -105,10 +105,10 @@ struct Options {
   std::string command_line;
 };
 
-// A share of positives in (0.5, 1], "chi2": the fit's own chi-square quantile (0 here), or "f1":
-// the threshold with the best F1 of positives against negatives (tools::kKeepBestF1).
+// A share of positives in (0.5, 1], "chi2": the fit's own chi-square quantile, or "f1": the
+// threshold with the best F1 of positives against negatives (train_class's `keep`).
 double parse_fraction(const std::string& text) {
-  if (text == "chi2") return 0.0;
+  if (text == "chi2") return tools::kKeepChiSquare;
   if (text == "f1") return tools::kKeepBestF1;
   double value = 0.0;
   try {
@@ -116,7 +116,7 @@ double parse_fraction(const std::string& text) {
     value = std::stod(text, &used);
     if (used != text.size()) throw std::invalid_argument(text);
   } catch (const std::exception&) {
-    usage_error("--keep wants a number, got '" + text + "'");
+    usage_error("--keep wants a number, chi2 or f1, got '" + text + "'");
   }
   if (!(value > 0.5 && value <= 1.0)) {
     usage_error("--keep wants (0.5, 1], chi2 or f1, got " + text);
@@ -130,12 +130,16 @@ void parse_keep(const std::string& text, Options& options) {
     options.keep = parse_fraction(text);
     return;
   }
+  if (text.back() == ',') usage_error("--keep: a trailing comma in '" + text + "'");
   for (const std::string& entry : split(text, ',')) {
     const std::size_t equals = entry.find('=');
     if (equals == std::string::npos || equals == 0) {
       usage_error("--keep wants FRACTION or TYPE=FRACTION,..., got '" + entry + "'");
     }
-    options.keep_of[entry.substr(0, equals)] = parse_fraction(entry.substr(equals + 1));
+    if (!options.keep_of.emplace(entry.substr(0, equals), parse_fraction(entry.substr(equals + 1)))
+             .second) {
+      usage_error("--keep names '" + entry.substr(0, equals) + "' twice");
+    }
   }
 }
 

@@ -41,7 +41,10 @@ double best_f1_threshold(const std::vector<double>& positive_d2,
         std::upper_bound(negative_d2.begin(), negative_d2.end(), positive_d2[i]) -
         negative_d2.begin());
     const double f1 = 2.0 * tp / (2.0 * tp + fp + (n - tp));
-    if (f1 > best_f1) best_f1 = f1, best = positive_d2[i];
+    if (f1 > best_f1) {
+      best_f1 = f1;
+      best = positive_d2[i];
+    }
   }
   return best;
 }
@@ -138,12 +141,19 @@ TrainedModel train_class(const ClassSamples& samples, double keep) {
   for (const Eigen::VectorXd& v : samples.positives) d2.push_back(out.model.mahalanobis2(v));
   std::sort(d2.begin(), d2.end());
   const auto n = d2.size();
-  if (keep > 0.0) {  // the smallest D^2 that keeps at least `keep` of the positives
+  if (keep > 0.0 && keep <= 1.0) {  // the smallest D^2 that keeps at least `keep` of them
     const std::size_t index =
         std::min(n - 1, static_cast<std::size_t>(std::ceil(keep * static_cast<double>(n))) - 1);
     out.model.set_max_mahalanobis2(std::max(d2[index], 1e-9));
   } else if (keep == kKeepBestF1) {
-    out.model.set_max_mahalanobis2(std::max(best_f1_threshold(d2, out.model, samples), 1e-9));
+    // Without negatives F1 would keep every positive, outliers too: the fit's quantile instead.
+    if (!samples.negatives.empty()) {
+      out.model.set_max_mahalanobis2(std::max(best_f1_threshold(d2, out.model, samples), 1e-9));
+    }
+  } else if (keep != kKeepChiSquare) {
+    throw std::invalid_argument(
+        "train_class: keep must be in (0, 1], kKeepChiSquare or "
+        "kKeepBestF1");
   }
   const double threshold = out.model.max_mahalanobis2();
   out.kept_fraction =

@@ -63,13 +63,15 @@ struct TrainedModel {
   std::string summary;                // one line for people and for the model's provenance
 };
 
-// `keep` of train_class that asks for the threshold with the best F1 over the samples.
+// `keep` of train_class asking for the fit's own chi-square quantile of its acceptance
+// probability, and for the threshold with the best F1 of the positives against the negatives
+// (the chi-square quantile when there are no negatives).
+inline constexpr double kKeepChiSquare = 0.0;
 inline constexpr double kKeepBestF1 = -1.0;
 
 // Fits the model to the positives (default_fit_options of the recognizer) and sets the threshold
-// to the smallest squared Mahalanobis distance that keeps `keep` of the positives (keep 0: the
-// fit's own chi-square quantile of its acceptance probability; kKeepBestF1: the one that
-// maximizes F1 of the positives against the negatives). Requires at
+// to the smallest squared Mahalanobis distance that keeps `keep` (in (0, 1]) of the positives, or
+// by kKeepChiSquare or kKeepBestF1 (std::invalid_argument for any other value). Requires at
 // least kMinPositives positives (std::invalid_argument otherwise).
 TrainedModel train_class(const ClassSamples& samples, double keep);
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <stdexcept>
 
 #include "vsl/recognition/descriptors.hpp"
 
@@ -65,6 +66,41 @@ TEST(TrainClass, BestF1ThresholdBeatsTheOtherRules) {
   }
   // The crowding negatives make it give up some positives: neither all nor the chi-square's.
   EXPECT_LT(best.kept_fraction, 1.0);
+}
+
+// Without negatives F1 would keep every positive: the fit's chi-square quantile instead.
+TEST(TrainClass, BestF1WithoutNegativesIsTheChiSquareQuantile) {
+  ClassSamples s = handle_samples();
+  s.negatives.clear();
+  s.negative_colours.clear();
+  const TrainedModel t = train_class(s, vsl::tools::kKeepBestF1);
+  EXPECT_DOUBLE_EQ(t.model.max_mahalanobis2(), t.chi_square_threshold);
+  EXPECT_THROW(train_class(s, -0.5), std::invalid_argument);
+  EXPECT_THROW(train_class(s, 1.5), std::invalid_argument);
+}
+
+// A door's ideal colour: its one colour component, the angle.
+TEST(LearnIdealColour, DoorsAngleComponent) {
+  ClassSamples s;
+  s.file.recognizer = "door";
+  const auto& names = vsl::recognition::door_descriptor_names();
+  const auto k = static_cast<Eigen::Index>(names.size());
+  s.file.model = vsl::recognition::GaussianClassModel("door", names, Eigen::VectorXd::Zero(k),
+                                                      Eigen::MatrixXd::Identity(k, k), 1.0);
+  s.positives.assign(2, Eigen::VectorXd::Constant(k, 0.5));
+  s.positive_colours = {Eigen::Vector3d(0.1, 0.2, 0.5), Eigen::Vector3d(0.1, 0.2, 0.3)};
+  s.negatives.assign(1, Eigen::VectorXd::Constant(k, 0.5));
+  s.negative_colours = {Eigen::Vector3d(0.5, 0.2, 0.1)};
+  ASSERT_TRUE(vsl::tools::learn_ideal_colour(s));
+  const Eigen::Vector3d q(0.1, 0.2, 0.4);
+  EXPECT_TRUE(s.file.door.ideal_colour_rgb.isApprox(q, 1e-12));
+  const int c = vsl::recognition::kDoorColourAngleComponent;
+  EXPECT_NEAR(s.negatives[0](c),
+              vsl::recognition::colour_angle_rad(q, Eigen::Vector3d(0.5, 0.2, 0.1)), 1e-12);
+  EXPECT_DOUBLE_EQ(s.positives[0](0), 0.5);  // the shape components stay
+  // A black mean has no chromaticity: nothing learned.
+  s.positive_colours.assign(2, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(vsl::tools::learn_ideal_colour(s));
 }
 
 TEST(LearnIdealColour, TheMeanOfThePositivesColoursWithTheirComponentsRecomputed) {

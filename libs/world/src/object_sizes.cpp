@@ -50,10 +50,14 @@ ClassSizes class_sizes(const WorldModel& world, const std::string& type) {
   if (out.objects == 0) return out;
   out.heights = counted(heights);
   out.widths = counted(widths);
+  // Spreads below kSameSizeM are not measured (sizes within it are one): at least that, so that
+  // a world whose doors are all one width still has a prior with a spread.
   std::tie(out.typical_width_m, out.width_sigma_m) = mode_and_spread(out.widths);
+  out.width_sigma_m = std::max(out.width_sigma_m, kSameSizeM);
   // At most the smallest height: a spread wider than a door is no prior (and the recognizer's
   // config refuses it); doors of very different heights are each among the typical heights.
-  out.height_sigma_m = std::min(mode_and_spread(out.heights).second, out.heights.front().size_m);
+  out.height_sigma_m =
+      std::clamp(mode_and_spread(out.heights).second, kSameSizeM, out.heights.front().size_m);
   return out;
 }
 

@@ -47,4 +47,11 @@ TEST(ClassSizes, HeightSpreadAtMostTheSmallestHeight) {
   EXPECT_NEAR(sizes.height_sigma_m, 0.4, 1e-12);  // the RMS about 0.8 is 0.61
 }
 
+// Doors all of one size: spreads of 5 mm (sizes within that are one), not 0.
+TEST(ClassSizes, OneSizeHasTheLeastSpread) {
+  const auto sizes = class_sizes(doors({{0.6, 0.7}, {0.6, 0.7}}), "door");
+  EXPECT_NEAR(sizes.width_sigma_m, 0.005, 1e-12);
+  EXPECT_NEAR(sizes.height_sigma_m, 0.005, 1e-12);
+}
+
 }  // namespace

@@ -22,8 +22,9 @@ struct ClassSizes {
   std::vector<SizeCount> heights;  // along the object's z (up), ascending
   std::vector<SizeCount> widths;   // along its x (across the face), ascending
   double typical_width_m = 0.0;    // the most common width (the narrower of equals)
-  double width_sigma_m = 0.0;      // RMS of the widths about it
-  double height_sigma_m = 0.0;     // RMS of the heights about the most common, at most the least
+  double width_sigma_m = 0.0;      // RMS of the widths about it, at least 5 mm
+  // RMS of the heights about the most common, at least 5 mm and at most the smallest height.
+  double height_sigma_m = 0.0;
 };
 
 // The sizes of `type`'s objects that have one; `objects` 0 when none has.
