@@ -150,6 +150,7 @@ TEST(LayoutVariants, ColoursDrawsEachVariantsPalette) {
                                         (dir / ("world_" + name)).string(), "-q"});
     EXPECT_EQ(generated.exit_code, 0) << name << ": " << generated.err;
   }
+  ASSERT_EQ(doors.size(), 14u) << doors;
   EXPECT_NE(doors.substr(0, 6), doors.substr(7, 6)) << doors;   // two palettes
   EXPECT_EQ(doors.find("2f5f8f"), std::string::npos) << doors;  // not the kitchen's blue
 }
