@@ -5,8 +5,10 @@
 
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "vsl/recognition/descriptors.hpp"
+#include "vsl/recognition/recognizer_factory.hpp"
 
 namespace {
 
@@ -14,14 +16,21 @@ using vsl::tools::ClassSamples;
 using vsl::tools::train_class;
 using vsl::tools::TrainedModel;
 
+// No samples yet, for the recognizer ("door" or "handle") with a placeholder model.
+ClassSamples samples_for(const std::string& recognizer) {
+  ClassSamples s;
+  s.file.recognizer = recognizer;
+  const auto& names = vsl::recognition::descriptor_names_of(recognizer);
+  const auto k = static_cast<Eigen::Index>(names.size());
+  s.file.model = vsl::recognition::GaussianClassModel(recognizer, names, Eigen::VectorXd::Zero(k),
+                                                      Eigen::MatrixXd::Identity(k, k), 1.0);
+  return s;
+}
+
 // Handle samples: positives around one descriptor, negatives some near them and most far away.
 ClassSamples handle_samples() {
-  ClassSamples s;
-  s.file.recognizer = "handle";
-  const auto& names = vsl::recognition::handle_descriptor_names();
-  const auto k = static_cast<Eigen::Index>(names.size());
-  s.file.model = vsl::recognition::GaussianClassModel("handle", names, Eigen::VectorXd::Zero(k),
-                                                      Eigen::MatrixXd::Identity(k, k), 1.0);
+  ClassSamples s = samples_for("handle");
+  const auto k = static_cast<Eigen::Index>(s.file.model.component_names().size());
   std::mt19937 rng(5);
   std::normal_distribution<double> unit(0.0, 1.0);
   const auto draw = [&](double centre, double spread) {
@@ -81,12 +90,8 @@ TEST(TrainClass, BestF1WithoutNegativesIsTheChiSquareQuantile) {
 
 // A door's ideal colour: its one colour component, the angle.
 TEST(LearnIdealColour, DoorsAngleComponent) {
-  ClassSamples s;
-  s.file.recognizer = "door";
-  const auto& names = vsl::recognition::door_descriptor_names();
-  const auto k = static_cast<Eigen::Index>(names.size());
-  s.file.model = vsl::recognition::GaussianClassModel("door", names, Eigen::VectorXd::Zero(k),
-                                                      Eigen::MatrixXd::Identity(k, k), 1.0);
+  ClassSamples s = samples_for("door");
+  const auto k = static_cast<Eigen::Index>(s.file.model.component_names().size());
   s.positives.assign(2, Eigen::VectorXd::Constant(k, 0.5));
   s.positive_colours = {Eigen::Vector3d(0.1, 0.2, 0.5), Eigen::Vector3d(0.1, 0.2, 0.3)};
   s.negatives.assign(1, Eigen::VectorXd::Constant(k, 0.5));
