@@ -257,6 +257,19 @@ TEST(LockstepPipeline, AmbiguousStartResolvedByActiveValidation) {
   EXPECT_NE(states.find("ACTIVE_VALIDATION"), std::string::npos) << states;
 }
 
+// tools/recognition-for-world on the world (60 views: a test's share), into dir/recognition; the
+// recognition config it wrote.
+std::string recognition_for(const std::string& world, const std::filesystem::path& dir) {
+  const auto made = vsl::testing::run_command(
+      {std::string(VSL_SOURCE_DIR) + "/tools/recognition-for-world", world,
+       (dir / "recognition").string(), "--views", "60", "--build", VSL_BINARY_DIR},
+      600.0);
+  if (made.exit_code != 0) {
+    throw std::runtime_error("tools/recognition-for-world failed: " + made.out + made.err);
+  }
+  return (dir / "recognition" / "recognition.yaml").string();
+}
+
 // config/vsl-localizer.yaml for another world, written into `dir`: its world and its options
 // file named by absolute path.
 std::string localizer_config_for(const std::string& world, const std::filesystem::path& dir) {
@@ -294,14 +307,8 @@ TEST(LockstepPipeline, AnotherLookLocalizesWithClassModelsTrainedOnItsWorld) {
   ASSERT_TRUE(shipped.pose.has_value()) << shipped.log;
   EXPECT_NE(shipped.pose->status, vsl::pose_estimate_t::LOCALIZED);
 
-  const auto made = vsl::testing::run_command(
-      {std::string(VSL_SOURCE_DIR) + "/tools/recognition-for-world", world,
-       (dir / "recognition").string(), "--views", "60", "--build", VSL_BINARY_DIR},
-      600.0);
-  ASSERT_EQ(made.exit_code, 0) << made.out << made.err;
   const Outcome trained =
-      LockstepPipeline(pose, localizer_config,
-                       OtherWorld{world, (dir / "recognition" / "recognition.yaml").string()})
+      LockstepPipeline(pose, localizer_config, OtherWorld{world, recognition_for(world, dir)})
           .run();
   expect_localized_near_truth(trained);
 }
@@ -453,14 +460,9 @@ TEST_P(ImportedKitchenTest, LocalizesInIt) {
   EXPECT_GT(handles, 20);
 
   const std::string localizer_config = localizer_config_for(world, dir);
-  const auto made = vsl::testing::run_command(
-      {std::string(VSL_SOURCE_DIR) + "/tools/recognition-for-world", world,
-       (dir / "recognition").string(), "--views", "60", "--build", VSL_BINARY_DIR},
-      600.0);
-  ASSERT_EQ(made.exit_code, 0) << made.out << made.err;
   const Outcome outcome =
       LockstepPipeline(std::array<double, 4>{1.981, 1.428, 0, 112.4}, localizer_config,
-                       OtherWorld{world, (dir / "recognition" / "recognition.yaml").string()})
+                       OtherWorld{world, recognition_for(world, dir)})
           .run();
   expect_localized_near_truth(outcome);
 }
