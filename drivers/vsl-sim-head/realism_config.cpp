@@ -80,14 +80,6 @@ void read_camera_keys(const Node& section, render::RealismOptions& out) {
 
 }  // namespace
 
-std::optional<render::RealismLevel> realism_level_from_name(std::string_view name) {
-  for (const render::RealismLevel level :
-       {render::RealismLevel::off, render::RealismLevel::materials, render::RealismLevel::full}) {
-    if (name == render::realism_level_name(level)) return level;
-  }
-  return std::nullopt;
-}
-
 render::RealismOptions realism_options_from(const Node& section) {
   render::RealismOptions out;
   if (section.is_null()) return out;

@@ -17,7 +17,6 @@ namespace vsl::sim_head {
 
 render::RealismOptions realism_options_from(const config::Node& section);
 
-// "off", "materials" or "full" (render::realism_level_name's names); nullopt for anything else.
-std::optional<render::RealismLevel> realism_level_from_name(std::string_view name);
+using render::realism_level_from_name;
 
 }  // namespace vsl::sim_head

@@ -163,15 +163,9 @@ Options parse(int argc, char** argv) {
       if (options.model_files.empty()) usage_error("--models wants a comma-separated list");
     } else if (arg == "--realism") {
       const std::string level = value_of(i, arg);
-      if (level == "off") {
-        options.realism = render::RealismLevel::off;
-      } else if (level == "materials") {
-        options.realism = render::RealismLevel::materials;
-      } else if (level == "full") {
-        options.realism = render::RealismLevel::full;
-      } else {
-        usage_error("--realism wants off, materials or full, got '" + level + "'");
-      }
+      const std::optional<render::RealismLevel> parsed = render::realism_level_from_name(level);
+      if (!parsed) usage_error("--realism wants off, materials or full, got '" + level + "'");
+      options.realism = *parsed;
     } else if (arg == "--max-distance") {
       options.max_distance_m = parse_positive(value_of(i, arg), arg);
     } else if (arg == "--target-distance") {

@@ -176,6 +176,7 @@ TEST(VslTrainRecognition, BadInputExitsTwoWithOneLine) {
       {"--world", "config/worlds/kitchen.yaml", "--keep", "=0.9", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--keep", "window=0.9", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--keep", "door=0.9,", "-o", out},
+      {"--world", "config/worlds/kitchen.yaml", "--realism", "Full", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--keep", "door=0.9,door=f1", "-o", out},
       {"--world", "config/worlds/kitchen.yaml", "--types", "window", "-o", out},
       {"--world", "no/such/world.yaml", "-o", out},

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -59,6 +60,8 @@ options:
                         F1 of the positive against the negative samples; per class as
                         TYPE=FRACTION,... (e.g. door=0.925,handle=0.998; a class not named
                         gets the last plain --keep, else 0.98)
+  --realism LEVEL       --world: the simulated views' realism, off (default), materials or full
+                        (docs/rendering.md): train for the images the recognizer will see
   --learn-colour        each class's ideal colour (ideal_colour_rgb) becomes the mean colour of
                         its positive blobs, rather than the model file's (for a building whose
                         fronts and handles are not the bundled kitchen's colours)
@@ -99,6 +102,7 @@ struct Options {
   std::string output_dir = "config/recognition";
   double keep = 0.98;                     // for a class not in keep_of
   std::map<std::string, double> keep_of;  // --keep TYPE=FRACTION,...
+  render::RealismLevel realism = render::RealismLevel::off;
   bool learn_colour = false;
   bool dry_run = false;
   bool quiet = false;
@@ -177,6 +181,11 @@ Options parse(int argc, char** argv) {
       options.output_dir = value_of(i, arg);
     } else if (arg == "--keep") {
       parse_keep(value_of(i, arg), options);
+    } else if (arg == "--realism") {
+      const std::string level = value_of(i, arg);
+      const std::optional<render::RealismLevel> parsed = render::realism_level_from_name(level);
+      if (!parsed) usage_error("--realism wants off, materials or full, got '" + level + "'");
+      options.realism = *parsed;
     } else if (arg == "--learn-colour") {
       options.learn_colour = true;
     } else if (arg == "--dry-run") {
@@ -263,7 +272,9 @@ void collect_from_world(const Options& options, const tools::RecognitionConfig& 
   const world::WorldModel world = world::load_world(options.world_file);
   const head::HeadKinematics head =
       head::HeadKinematics::load(config.head_file, config.calibration_file);
-  const render::Renderer renderer(world, tools::simulated_camera_options());
+  render::RenderOptions camera = tools::simulated_camera_options();
+  camera.realism.level = options.realism;
+  const render::Renderer renderer(world, camera);
   const tools::ViewSampler sampler(world, head);
   std::vector<std::string> object_types;
   for (const world::ObjectModel& object : world.objects) object_types.push_back(object.type);
@@ -280,7 +291,8 @@ void collect_from_world(const Options& options, const tools::RecognitionConfig& 
   }
   source_text = std::to_string(2 * options.views) + " simulated images of " + options.world_file +
                 " (" + std::to_string(options.views) + " views, seed " +
-                std::to_string(options.seed) + ")";
+                std::to_string(options.seed) + ", realism " +
+                render::realism_level_name(options.realism) + ")";
 }
 
 void collect_from_labels(const Options& options, const tools::RecognitionConfig& config,

@@ -158,6 +158,14 @@ const char* realism_level_name(RealismLevel level) {
   return "off";
 }
 
+std::optional<RealismLevel> realism_level_from_name(std::string_view name) {
+  for (const RealismLevel level :
+       {RealismLevel::off, RealismLevel::materials, RealismLevel::full}) {
+    if (name == realism_level_name(level)) return level;
+  }
+  return std::nullopt;
+}
+
 Renderer::Renderer(const world::WorldModel& world, RenderOptions options)
     : options_(checked(options)),
       scene_(std::make_shared<const Scene>(world, options_)),

@@ -13,6 +13,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string_view>
 
 #include "vsl/head/camera_intrinsics.hpp"
 #include "vsl/world/world_model.hpp"
@@ -27,6 +29,8 @@ enum class RealismLevel {
               //   noise, white-balance error, MJPEG compression
 };
 const char* realism_level_name(RealismLevel level);
+// The level of that name ("off", "materials" or "full"); nullopt for anything else.
+std::optional<RealismLevel> realism_level_from_name(std::string_view name);
 
 // The realism levels' parameters. Only read when level is not `off`.
 struct RealismOptions {
