@@ -343,11 +343,9 @@ int main(int argc, char** argv) {
         exit_code = 1;
         continue;
       }
-      if (options.learn_colour && tools::learn_ideal_colour(s)) {
-        const Eigen::Vector3d& q = s.file.recognizer == "door" ? s.file.door.ideal_colour_rgb
-                                                               : s.file.handle.ideal_colour_rgb;
+      if (const auto q = options.learn_colour ? tools::learn_ideal_colour(s) : std::nullopt) {
         std::printf("%s: ideal colour learned from the positives: [%.3f, %.3f, %.3f]\n",
-                    type.c_str(), q.x(), q.y(), q.z());
+                    type.c_str(), q->x(), q->y(), q->z());
       }
       const tools::TrainedModel trained = tools::train_class(
           s, options.keep_of.count(type) ? options.keep_of.at(type) : options.keep);

@@ -101,12 +101,12 @@ void add_box_samples(const cv::Mat& bgr_image, const std::vector<recognition::La
   }
 }
 
-bool learn_ideal_colour(ClassSamples& samples) {
-  if (samples.positive_colours.empty()) return false;
+std::optional<Eigen::Vector3d> learn_ideal_colour(ClassSamples& samples) {
+  if (samples.positive_colours.empty()) return std::nullopt;
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& c : samples.positive_colours) mean += c;
   mean /= static_cast<double>(samples.positive_colours.size());
-  if (!(mean.norm() > 1e-6)) return false;  // black has no chromaticity
+  if (!(mean.norm() > 1e-6)) return std::nullopt;  // black has no chromaticity
   recognition::RecognizerFile& file = samples.file;
   const bool door = file.recognizer == "door";
   (door ? file.door.ideal_colour_rgb : file.handle.ideal_colour_rgb) = mean;
@@ -122,7 +122,7 @@ bool learn_ideal_colour(ClassSamples& samples) {
   };
   recolour(samples.positives, samples.positive_colours);
   recolour(samples.negatives, samples.negative_colours);
-  return true;
+  return mean;
 }
 
 TrainedModel train_class(const ClassSamples& samples, double keep) {

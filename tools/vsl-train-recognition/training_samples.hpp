@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,9 +51,9 @@ void add_box_samples(const cv::Mat& bgr_image, const std::vector<recognition::La
 
 // Sets the file's ideal colour (Q_d of Eq. 2, Q of Eq. 3) to the mean colour of the positives
 // and recomputes every sample's colour components for it: the class's colour learned from its
-// own views rather than given. Returns false, changing nothing, when there are no positives or
-// their mean is black.
-bool learn_ideal_colour(ClassSamples& samples);
+// own views rather than given. Returns the colour learned; nullopt, changing nothing, when there
+// are no positives or their mean is black.
+std::optional<Eigen::Vector3d> learn_ideal_colour(ClassSamples& samples);
 
 struct TrainedModel {
   recognition::GaussianClassModel model;
