@@ -40,17 +40,25 @@ def stage(cin, cout, blocks, k=3):
     return nn.Sequential(SeparableBlock(cin, cout, 2, k), *[SeparableBlock(cout, cout, 1, k) for _ in range(blocks - 1)])
 
 
+# The deep stages' channels and blocks (stride 16, stride 32) unless a checkpoint says otherwise:
+# checkpoints store them as "deep" and "deep_blocks"; older ones, without them, are (128, 192) and
+# (3, 2).
+DEEP = (128, 192)
+DEEP_BLOCKS = (3, 2)
+
+
 class DoorHandleDetector(nn.Module):
-    def __init__(self, num_classes=2, width=1.0):
+    def __init__(self, num_classes=2, width=1.0, deep=DEEP, deep_blocks=DEEP_BLOCKS):
         super().__init__()
-        c = [int(round(v * width)) for v in (16, 32, 64, 128, 192)]
+        c = [int(round(v * width)) for v in (16, 32, 64, *deep)]
         self.num_classes = num_classes
+        self.deep, self.deep_blocks = tuple(deep), tuple(deep_blocks)
         # stride 4: a full 3x3 convolution, then a separable one (a full one here costs 3x)
         self.stem = nn.Sequential(conv_bn(3, c[0], 3, 2), conv_bn(c[0], c[0], 3, 2, groups=c[0]),
                                   conv_bn(c[0], c[1], 1))
         self.s8 = stage(c[1], c[2], 2)
-        self.s16 = stage(c[2], c[3], 3)
-        self.s32 = stage(c[3], c[4], 2, k=5)
+        self.s16 = stage(c[2], c[3], deep_blocks[0])
+        self.s32 = stage(c[3], c[4], deep_blocks[1], k=5)
         f, f4 = 64, 32  # pyramid channels; fewer at stride 4, where each layer costs the most
         self.lat32 = conv_bn(c[4], f, 1)
         self.lat16 = conv_bn(c[3], f, 1)
@@ -72,3 +80,37 @@ class DoorHandleDetector(nn.Module):
         p16 = self.smooth16(self.lat16(x16) + up(self.lat32(x32)))
         p8 = self.smooth8(self.lat8(x8) + up(p16))
         return self.head(self.lat4(x4) + up(p8))
+
+
+def load_state(net, weights):
+    """Loads `weights` (a state dict) into `net`, which may be wider or deeper in its deep stages
+    than the network they were trained in (Net2Net, Chen et al. 2016: the grown network computes
+    the same function at first). Each tensor is copied into the leading part of its namesake. A
+    convolution reading new input channels reads them with zero weights, so what the new
+    channels carry does not reach the old outputs until training makes it; a new residual block
+    starts with its last batch norm's scale at zero, so it passes its input through unchanged.
+    New output channels keep their random initialization: the zero weights reading them still
+    receive gradients."""
+    own = net.state_dict()
+    grown = {}
+    for name, value in own.items():
+        if name not in weights:
+            if name.endswith("pw.1.weight"):  # a new block's closing batch norm: identity block
+                value = torch.zeros_like(value)
+            grown[name] = value
+            continue
+        old = weights[name]
+        if old.shape == value.shape:
+            grown[name] = old
+            continue
+        if old.dim() != value.dim() or any(o > n for o, n in zip(old.shape, value.shape)) or \
+                old.shape[2:] != value.shape[2:]:
+            raise RuntimeError(f"{name}: {tuple(old.shape)} cannot grow into {tuple(value.shape)}")
+        value = value.clone()
+        if value.dim() == 4 and value.shape[1] > 1:  # a convolution across channels
+            value[: old.shape[0], old.shape[1]:] = 0.0
+        elif name.endswith(("running_mean", "bias")) and value.dim() == 1:
+            value[old.shape[0]:] = 0.0
+        value[tuple(slice(0, n) for n in old.shape)] = old
+        grown[name] = value
+    net.load_state_dict(grown)

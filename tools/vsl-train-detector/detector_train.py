@@ -64,7 +64,8 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
         smoothed = value if smoothed is None else 0.98 * smoothed + 0.02 * value
         now = time.time()
         if (step + 1) % 1000 == 0 or step + 1 == args.iterations:
-            torch.save({"weights": net.state_dict(), "width": args.width, "step": step + 1}, checkpoint_path)
+            torch.save({"weights": net.state_dict(), "width": args.width, "deep": args.deep,
+                        "deep_blocks": args.deep_blocks, "step": step + 1}, checkpoint_path)
         if monitor and (step + 1) % 2000 == 0 and step + 1 < args.iterations:
             net.eval()
             log(monitor(step + 1))

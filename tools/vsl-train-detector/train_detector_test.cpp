@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "run_command.hpp"
 
@@ -66,6 +67,58 @@ TEST(VslTrainDetector, FineTunesOnABoxLabelFileAndTheModelRunsInCpp) {
   EXPECT_NE(evaluated.out.find("\"type\":\"handle\""), std::string::npos) << evaluated.out;
 }
 
+// The AP50 of each class in vsl-eval-recognition's JSON, in order.
+std::vector<double> ap50s(const std::string& json) {
+  std::vector<double> values;
+  for (std::size_t at = json.find("\"ap50\":"); at != std::string::npos;
+       at = json.find("\"ap50\":", at + 1)) {
+    values.push_back(std::stod(json.substr(at + 7)));
+  }
+  return values;
+}
+
+// A network grown from the shipped one (wider and deeper stride-16 and stride-32 stages) computes
+// what the shipped one does until it is trained: the same detections, so the same AP50, in C++.
+TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
+  const fs::path dir = scratch("grow");
+  const auto dataset =
+      run_command({VSL_MAKE_DATASET_BIN, "--world", "config/worlds/kitchen_galley.yaml", "--views",
+                   "6", "--seed", "7", "--out", (dir / "data").string(), "-q"},
+                  300.0);
+  ASSERT_EQ(dataset.exit_code, 0) << dataset.err;
+  const auto grown = run_command(
+      {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--deep",
+       "160,256", "--deep-blocks", "4,3", "--iterations", "0", "--threads", "1", "--out",
+       (dir / "grown").string(), "-q"},
+      600.0);
+  ASSERT_EQ(grown.exit_code, 0) << grown.err;
+  EXPECT_GT(fs::file_size(dir / "grown" / "door_handle.onnx"),
+            fs::file_size("config/recognition/detector/door_handle.onnx"));
+  std::vector<std::vector<double>> figures;
+  for (const fs::path& detector :
+       {fs::path("config/recognition/detector/door_handle.yaml"), dir / "grown" / "door_handle.yaml"}) {
+    const auto evaluated =
+        run_command({VSL_EVAL_RECOGNITION_BIN, "--images", (dir / "data" / "images").string(),
+                     "--yolo-labels", (dir / "data" / "labels").string(), "--detector",
+                     detector.string(), "--json", "-", "-q"},
+                    120.0);
+    ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
+    figures.push_back(ap50s(evaluated.out));
+  }
+  ASSERT_EQ(figures[0].size(), 2u);
+  ASSERT_EQ(figures[1].size(), 2u);
+  EXPECT_GT(figures[0][0] + figures[0][1], 0.5);  // the images hold what the model finds
+  EXPECT_NEAR(figures[1][0], figures[0][0], 1e-9);
+  EXPECT_NEAR(figures[1][1], figures[0][1], 1e-9);
+  // Shrinking is not growing: one line, exit code 2.
+  const auto shrunk = run_command(
+      {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--deep", "64,96",
+       "--iterations", "0", "--out", (dir / "shrunk").string()},
+      600.0);
+  EXPECT_EQ(shrunk.exit_code, 2);
+  EXPECT_NE(shrunk.err.find("cannot grow into"), std::string::npos) << shrunk.err;
+}
+
 TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
   const fs::path dir = scratch("bad");
   const auto missing = run_command(
@@ -87,6 +140,11 @@ TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
                                   "--out", (dir / "m").string()});
   EXPECT_EQ(input.exit_code, 2);
   EXPECT_NE(input.err.find("multiples of 32"), std::string::npos) << input.err;
+  const auto deep = run_command({VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--deep", "192",
+                                 "--out", (dir / "m").string()});
+  EXPECT_EQ(deep.exit_code, 2);
+  EXPECT_NE(deep.err.find("--deep: '192' is not two positive integers A,B"), std::string::npos)
+      << deep.err;
 }
 
 // The training layouts' variants: each one a layout vsl-worldgen generates, the same files for the
