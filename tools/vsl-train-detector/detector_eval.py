@@ -13,10 +13,11 @@ def detect(net, images, stride, min_score=0.02, max_per_class=100, nms_iou=0.6):
     """images: B x 3 x H x W tensor -> per image a list of (class, score, x0, y0, x1, y1)."""
     with torch.no_grad():
         maps = net(images)
-    num_classes = maps.shape[1] - 4
+    num_classes = net.num_classes
     scores = torch.sigmoid(maps[:, :num_classes])
     peaks = scores * (scores == F.max_pool2d(scores, 3, 1, 1))
     boxes = decode_boxes(maps[:, num_classes:], stride)
+    per_class = boxes.shape[1] == 4 * num_classes and num_classes > 1
     out = []
     for b in range(maps.shape[0]):
         found = []
@@ -25,7 +26,8 @@ def detect(net, images, stride, min_score=0.02, max_per_class=100, nms_iou=0.6):
             top = torch.topk(s, min(max_per_class, s.numel()))
             keep = top.values >= min_score
             idx = top.indices[keep]
-            cand = boxes[b].reshape(4, -1)[:, idx].T.numpy()
+            group = boxes[b, 4 * c : 4 * c + 4] if per_class else boxes[b, :4]
+            cand = group.reshape(4, -1)[:, idx].T.numpy()
             for k in nms(cand, top.values[keep].numpy(), nms_iou):
                 found.append((c, float(top.values[keep][k]), *map(float, cand[k])))
         out.append(found)

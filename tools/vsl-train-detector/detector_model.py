@@ -48,8 +48,12 @@ DEEP_BLOCKS = (3, 2)
 
 
 class DoorHandleDetector(nn.Module):
-    def __init__(self, num_classes=2, width=1.0, deep=DEEP, deep_blocks=DEEP_BLOCKS):
+    def __init__(self, num_classes=2, width=1.0, deep=DEEP, deep_blocks=DEEP_BLOCKS,
+                 box_per_class=False):
         super().__init__()
+        # One box per class at each cell, or one shared by the classes (the older models): with a
+        # shared box, a drawer front whose centre is its handle's is given the handle's box.
+        self.box_groups = num_classes if box_per_class else 1
         c = [int(round(v * width)) for v in (16, 32, 64, *deep)]
         self.num_classes = num_classes
         self.deep, self.deep_blocks = tuple(deep), tuple(deep_blocks)
@@ -67,7 +71,7 @@ class DoorHandleDetector(nn.Module):
         self.smooth8 = nn.Sequential(SeparableBlock(f, f), conv_bn(f, f4, 1))
         self.lat4 = conv_bn(c[1], f4, 1)
         self.head = nn.Sequential(conv_bn(f4, f4, 3, groups=f4), conv_bn(f4, f4, 1),
-                                  nn.Conv2d(f4, num_classes + 4, 1))
+                                  nn.Conv2d(f4, num_classes + 4 * self.box_groups, 1))
         nn.init.constant_(self.head[-1].bias[:num_classes], -4.6)  # initial centre-ness 0.01
         nn.init.constant_(self.head[-1].bias[num_classes:], 2.0)   # sides ~7 px away
 
@@ -89,9 +93,20 @@ def load_state(net, weights):
     convolution reading new input channels reads them with zero weights, so what the new
     channels carry does not reach the old outputs until training makes it; a new residual block
     starts with its last batch norm's scale at zero, so it passes its input through unchanged.
+    A network with a box per class grown from one with a shared box starts with the shared box's
+    maps for every class.
     New output channels keep their random initialization: the zero weights reading them still
     receive gradients."""
     own = net.state_dict()
+    head = "head.2."  # the last convolution: classes' centre-ness, then 4 box sides per group
+    for name in (head + "weight", head + "bias"):
+        old, new = weights.get(name), own.get(name)
+        if old is not None and new is not None and old.shape[0] == net.num_classes + 4 and \
+                new.shape[0] > old.shape[0]:
+            # A box per class from the shared one: each class starts with the shared box's maps.
+            weights = dict(weights)
+            shared = old[net.num_classes:]
+            weights[name] = torch.cat([old[: net.num_classes]] + [shared] * net.box_groups)
     grown = {}
     for name, value in own.items():
         if name not in weights:

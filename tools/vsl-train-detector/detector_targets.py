@@ -10,7 +10,10 @@ maximum 1 at the cell holding c (a positive); the focal loss of CenterNet (Zhou 
                    { (1 - G)^4 p^2 log(1 - p)        elsewhere
 The box is regressed at every cell where G > 0.01, as distances exp(d) from the cell's centre to
 the four sides, with GIoU loss weighted by G normalized to log(area) per box, so that large boxes
-do not drown small ones (TTFNet Eq. 5). Smaller boxes are drawn last and own shared cells.
+do not drown small ones (TTFNet Eq. 5). Smaller boxes are drawn last and own shared cells. With a
+box per class (box_groups = the number of classes) each class's boxes are drawn in maps of their
+own: a drawer front and its handle share a centre, and with one shared box the front's cells
+belong to the handle, so the door class learns the handle's box there.
 """
 import math
 
@@ -21,10 +24,12 @@ ALPHA = 0.54
 MIN_GAUSSIAN = 0.01
 
 
-def build_targets(boxes, classes, num_classes, out_h, out_w, stride):
+def build_targets(boxes, classes, num_classes, out_h, out_w, stride, box_groups=1):
+    """Centre-ness (classes x h x w), box targets (4 box_groups x h x w) and their weights
+    (box_groups x h x w)."""
     heat = np.zeros((num_classes, out_h, out_w), np.float32)
-    box_target = np.zeros((4, out_h, out_w), np.float32)
-    weight = np.zeros((out_h, out_w), np.float32)
+    box_target = np.zeros((box_groups, 4, out_h, out_w), np.float32)
+    weight = np.zeros((box_groups, out_h, out_w), np.float32)
     ys = (np.arange(out_h, dtype=np.float32) + 0.5) * stride
     xs = (np.arange(out_w, dtype=np.float32) + 0.5) * stride
     areas = (boxes[:, 2] - boxes[:, 0]) * (boxes[:, 3] - boxes[:, 1])
@@ -44,9 +49,10 @@ def build_targets(boxes, classes, num_classes, out_h, out_w, stride):
         region[i, j] = True
         w = g * region
         w *= math.log(max(areas[k] / (stride * stride), 1.0) + 1.0) / w.sum()
-        box_target[:, region] = np.array([x0, y0, x1, y1], np.float32)[:, None]
-        weight[region] = w[region]
-    return heat, box_target, weight
+        group = classes[k] if box_groups > 1 else 0
+        box_target[group][:, region] = np.array([x0, y0, x1, y1], np.float32)[:, None]
+        weight[group][region] = w[region]
+    return heat, box_target.reshape(4 * box_groups, out_h, out_w), weight
 
 
 def cell_centres(out_h, out_w, stride, device=None):
@@ -56,10 +62,12 @@ def cell_centres(out_h, out_w, stride, device=None):
 
 
 def decode_boxes(distances, stride):
-    """B x 4 x h x w log-distances -> B x 4 x h x w boxes (x0, y0, x1, y1), input pixels."""
+    """B x 4G x h x w log-distances -> B x 4G x h x w boxes (x0, y0, x1, y1 per group G),
+    input pixels."""
     d = torch.exp(distances.clamp(-2.0, 7.0))
     cx, cy = cell_centres(d.shape[2], d.shape[3], stride, d.device)
-    return torch.stack([cx - d[:, 0], cy - d[:, 1], cx + d[:, 2], cy + d[:, 3]], 1)
+    sides = [cx - d[:, 0::4], cy - d[:, 1::4], cx + d[:, 2::4], cy + d[:, 3::4]]  # B x G x h x w
+    return torch.stack(sides, 2).flatten(1, 2)
 
 
 def focal_loss(logits, heat):
@@ -71,7 +79,9 @@ def focal_loss(logits, heat):
 
 
 def giou_loss(pred, target, weight):
-    """pred, target: B x 4 x h x w boxes; weight: B x h x w."""
+    """pred, target: B x 4G x h x w boxes; weight: B x G x h x w."""
+    b, g, h, w_ = weight.shape
+    pred, target, weight = pred.reshape(b * g, 4, h, w_), target.reshape(b * g, 4, h, w_), weight.reshape(b * g, h, w_)
     mask = weight > 0
     if not mask.any():
         return pred.sum() * 0

@@ -22,7 +22,8 @@ def make_batch(real, sim, args, rng, stride):
         use_sim = sim and (not real or rng.random() < args.sim_fraction)
         sample = rng.choice(sim if use_sim else real)
         image, b, c = data.augment(sample, args.input_w, args.input_h, rng)
-        heat, box_target, weight = build_targets(b, c, len(data.CLASSES), out_h, out_w, stride)
+        heat, box_target, weight = build_targets(b, c, len(data.CLASSES), out_h, out_w, stride,
+                                                 len(data.CLASSES) if args.box_per_class else 1)
         images.append(data.to_tensor_layout(image))
         heats.append(heat)
         boxes.append(box_target)
@@ -65,7 +66,8 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
         now = time.time()
         if (step + 1) % 1000 == 0 or step + 1 == args.iterations:
             torch.save({"weights": net.state_dict(), "width": args.width, "deep": args.deep,
-                        "deep_blocks": args.deep_blocks, "step": step + 1}, checkpoint_path)
+                        "deep_blocks": args.deep_blocks, "box_per_class": args.box_per_class,
+                        "step": step + 1}, checkpoint_path)
         if monitor and (step + 1) % 2000 == 0 and step + 1 < args.iterations:
             net.eval()
             log(monitor(step + 1))

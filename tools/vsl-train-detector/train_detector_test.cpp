@@ -77,8 +77,9 @@ std::vector<double> ap50s(const std::string& json) {
   return values;
 }
 
-// A network grown from the shipped one (wider and deeper stride-16 and stride-32 stages) computes
-// what the shipped one does until it is trained: the same detections, so the same AP50, in C++.
+// A network grown from the shipped one (wider and deeper stride-16 and stride-32 stages, a box per
+// class where the shipped one shares one box) computes what the shipped one does until it is
+// trained: the same detections, so the same AP50, in C++.
 TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
   const fs::path dir = scratch("grow");
   const auto dataset =
@@ -88,10 +89,13 @@ TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
   ASSERT_EQ(dataset.exit_code, 0) << dataset.err;
   const auto grown = run_command(
       {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--deep",
-       "160,256", "--deep-blocks", "4,3", "--iterations", "0", "--threads", "1", "--out",
+       "160,256", "--deep-blocks", "4,3", "--box-per-class", "--iterations", "0", "--threads", "1", "--out",
        (dir / "grown").string(), "-q"},
       600.0);
   ASSERT_EQ(grown.exit_code, 0) << grown.err;
+  EXPECT_NE(read(dir / "grown" / "door_handle.yaml")
+                .find("architecture: {deep: [160, 256], deep_blocks: [4, 3], box_per_class: true}"),
+            std::string::npos);
   EXPECT_GT(fs::file_size(dir / "grown" / "door_handle.onnx"),
             fs::file_size("config/recognition/detector/door_handle.onnx"));
   std::vector<std::vector<double>> figures;

@@ -105,12 +105,14 @@ LearnedDetector::LearnedDetector(LearnedDetectorOptions options)
                         std::to_string(options_.input_width) + "x" +
                         std::to_string(options_.input_height) + " input (" + e.err + ")");
   }
-  const int channels = static_cast<int>(options_.classes.size()) + 4;
-  if (output.dims != 4 || output.size[1] != channels ||
+  const int classes = static_cast<int>(options_.classes.size());
+  if (output.dims != 4 ||
+      (output.size[1] != classes + 4 && output.size[1] != classes + 4 * classes) ||
       output.size[2] != options_.input_height / options_.stride ||
       output.size[3] != options_.input_width / options_.stride) {
-    throw config::Error(options_.model_path + ": the output is not " + std::to_string(channels) +
-                        " maps (classes + 4 box sides) at stride " +
+    throw config::Error(options_.model_path + ": the output is not " +
+                        std::to_string(classes + 4) + " or " + std::to_string(5 * classes) +
+                        " maps (classes + 4 box sides, shared or per class) at stride " +
                         std::to_string(options_.stride));
   }
 }
@@ -141,8 +143,10 @@ void suppress_overlaps(std::vector<BoxDetection>& boxes, double iou) {
 
 // Decoding (tools/vsl-train-detector/detector_targets.py trains it): output cell (i, j) has its
 // centre at input pixel ((j + 0.5) s, (i + 0.5) s) for stride s; channel c < C holds the logit of
-// class c's centre-ness, channels C .. C+3 the log-distances (d_l, d_t, d_r, d_b) from the cell
-// centre to the box's sides in input pixels. An object is a cell whose centre-ness is a maximum
+// class c's centre-ness, channels C + 4g .. C + 4g + 3 the log-distances (d_l, d_t, d_r, d_b) from
+// the cell centre to the box's sides in input pixels, g = 0 for every class (C + 4 channels) or
+// g = c (5 C channels: each class regresses its own box, so a drawer front whose centre is its
+// handle's does not take the handle's box). An object is a cell whose centre-ness is a maximum
 // of its 3 x 3 neighbourhood; its box is centre - (e^d_l, e^d_t) .. centre + (e^d_r, e^d_b), the
 // log-distances clamped to [-2, 7] as in training; divided by the letterbox scale it is in image
 // pixels. Confidence sigmoid(logit) is compared as logit >= log(p / (1 - p)).
@@ -172,6 +176,7 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
     output = network_->net.forward().clone();
   }
   const int classes = static_cast<int>(options_.classes.size());
+  const bool box_per_class = output.size[1] == 5 * classes && classes > 1;
   const int rows = output.size[2];
   const int cols = output.size[3];
   const auto map = [&](int channel) {
@@ -185,6 +190,7 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
                    1e-6, 1.0 - 1e-6);
     const float min_logit = static_cast<float>(std::log(p / (1.0 - p)));
     const float* logits = map(c);
+    const int group = box_per_class ? c : 0;
     std::vector<BoxDetection> found;
     for (int i = 0; i < rows; ++i) {
       for (int j = 0; j < cols; ++j) {
@@ -203,7 +209,8 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
         const double cv = (i + 0.5) * options_.stride;
         const auto side = [&](int k) {
           return std::exp(
-              std::clamp(static_cast<double>(map(classes + k)[i * cols + j]), -2.0, 7.0));
+              std::clamp(static_cast<double>(map(classes + 4 * group + k)[i * cols + j]), -2.0,
+                         7.0));
         };
         BoxDetection box;
         box.type = options_.classes[static_cast<std::size_t>(c)];

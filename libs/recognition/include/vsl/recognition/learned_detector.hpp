@@ -66,7 +66,8 @@ double box_iou(const BoxDetection& a, const BoxDetection& b);
 class LearnedDetector {
  public:
   // Loads the network; throws config::Error "<model>: what" when OpenCV cannot read it or its
-  // output does not have classes + 4 channels at the stated stride.
+  // output does not have classes + 4 (box shared by the classes) or 5 x classes (a box per class)
+  // channels at the stated stride.
   explicit LearnedDetector(LearnedDetectorOptions options);
   ~LearnedDetector();
   LearnedDetector(const LearnedDetector&) = delete;
