@@ -28,7 +28,7 @@ def write_description(path, args, figures, command, counts, seconds, date):
         "  # and whether each class regresses its own box.",
         f"  architecture: {{deep: [{args.deep[0]}, {args.deep[1]}], deep_blocks: [{args.deep_blocks[0]}, "
         f"{args.deep_blocks[1]}], box_per_class: {str(args.box_per_class).lower()}}}",
-        f"  iterations: {args.iterations}",
+        f"  iterations: {args.iterations}" + (f"  # stopped after {args.stop_after}" if args.stop_after else ""),
         f"  batch: {args.batch}",
         f"  training_minutes: {seconds / 60:.1f}",
         f"  threads: {args.threads}",

@@ -49,7 +49,8 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
     smoothed = None
     interactive = sys.stderr.isatty()
     net.train()
-    for step in range(args.iterations):
+    steps = min(args.iterations, args.stop_after or args.iterations)
+    for step in range(steps):
         for group in optimizer.param_groups:
             group["lr"] = learning_rate(step, args)
         images, heat, box_target, weight = make_batch(real, sim, args, rng, stride)
@@ -64,18 +65,18 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
         value = float(loss)
         smoothed = value if smoothed is None else 0.98 * smoothed + 0.02 * value
         now = time.time()
-        if (step + 1) % 1000 == 0 or step + 1 == args.iterations:
+        if (step + 1) % 1000 == 0 or step + 1 == steps:
             torch.save({"weights": net.state_dict(), "width": args.width, "deep": args.deep,
                         "deep_blocks": args.deep_blocks, "box_per_class": args.box_per_class,
                         "step": step + 1}, checkpoint_path)
-        if monitor and (step + 1) % 2000 == 0 and step + 1 < args.iterations:
+        if monitor and (step + 1) % 2000 == 0 and step + 1 < steps:
             net.eval()
             log(monitor(step + 1))
             net.train()
-        if now - last_report > (1 if interactive else 60) or step + 1 == args.iterations:
+        if now - last_report > (1 if interactive else 60) or step + 1 == steps:
             rate = (step + 1) / (now - started)
-            left = (args.iterations - step - 1) / rate
-            log_line = (f"step {step + 1}/{args.iterations}  loss {smoothed:.3f} (centre {float(loss_centre):.3f}, "
+            left = (steps - step - 1) / rate
+            log_line = (f"step {step + 1}/{steps}  loss {smoothed:.3f} (centre {float(loss_centre):.3f}, "
                         f"box {float(loss_box):.3f})  {rate:.2f} steps/s  {left / 60:.0f} min left")
             if interactive:
                 sys.stderr.write("\r" + log_line + "\033[K")

@@ -144,6 +144,11 @@ TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
                                   "--out", (dir / "m").string()});
   EXPECT_EQ(input.exit_code, 2);
   EXPECT_NE(input.err.find("multiples of 32"), std::string::npos) << input.err;
+  const auto stop = run_command({VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--iterations", "10",
+                                 "--stop-after", "11", "--out", (dir / "m").string()});
+  EXPECT_EQ(stop.exit_code, 2);
+  EXPECT_NE(stop.err.find("--stop-after must be in [1, --iterations]"), std::string::npos)
+      << stop.err;
   const auto deep = run_command({VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--deep", "192",
                                  "--out", (dir / "m").string()});
   EXPECT_EQ(deep.exit_code, 2);
