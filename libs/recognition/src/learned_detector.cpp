@@ -110,8 +110,8 @@ LearnedDetector::LearnedDetector(LearnedDetectorOptions options)
       (output.size[1] != classes + 4 && output.size[1] != classes + 4 * classes) ||
       output.size[2] != options_.input_height / options_.stride ||
       output.size[3] != options_.input_width / options_.stride) {
-    throw config::Error(options_.model_path + ": the output is not " +
-                        std::to_string(classes + 4) + " or " + std::to_string(5 * classes) +
+    throw config::Error(options_.model_path + ": the output is not " + std::to_string(classes + 4) +
+                        " or " + std::to_string(5 * classes) +
                         " maps (classes + 4 box sides, shared or per class) at stride " +
                         std::to_string(options_.stride));
   }
@@ -208,9 +208,8 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
         const double cu = (j + 0.5) * options_.stride;
         const double cv = (i + 0.5) * options_.stride;
         const auto side = [&](int k) {
-          return std::exp(
-              std::clamp(static_cast<double>(map(classes + 4 * group + k)[i * cols + j]), -2.0,
-                         7.0));
+          return std::exp(std::clamp(
+              static_cast<double>(map(classes + 4 * group + k)[i * cols + j]), -2.0, 7.0));
         };
         BoxDetection box;
         box.type = options_.classes[static_cast<std::size_t>(c)];
