@@ -107,6 +107,9 @@ def load_state(net, weights):
             weights = dict(weights)
             shared = old[net.num_classes:]
             weights[name] = torch.cat([old[: net.num_classes]] + [shared] * net.box_groups)
+    dropped = [name for name in weights if name not in own]
+    if dropped:
+        raise RuntimeError(f"{dropped[0]}: not in the network (fewer blocks than the weights' cannot grow)")
     grown = {}
     for name, value in own.items():
         if name not in weights:

@@ -134,6 +134,13 @@ TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
                   600.0);
   EXPECT_EQ(shrunk.exit_code, 2);
   EXPECT_NE(shrunk.err.find("cannot grow into"), std::string::npos) << shrunk.err;
+  const auto fewer =
+      run_command({VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(),
+                   "--init", (dir / "grown" / "door_handle.pt").string(), "--deep-blocks", "3,2",
+                   "--iterations", "0", "--out", (dir / "fewer").string()},
+                  600.0);
+  EXPECT_EQ(fewer.exit_code, 2);
+  EXPECT_NE(fewer.err.find("not in the network"), std::string::npos) << fewer.err;
 }
 
 TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
