@@ -55,7 +55,7 @@ class DoorHandleDetector(nn.Module):
         # shared box, a drawer front whose centre is its handle's is given the handle's box.
         self.box_groups = num_classes if box_per_class else 1
         c = [int(round(v * width)) for v in (16, 32, 64, *deep)]
-        self.num_classes = num_classes
+        self.num_classes, self.width = num_classes, width
         self.deep, self.deep_blocks = tuple(deep), tuple(deep_blocks)
         # stride 4: a full 3x3 convolution, then a separable one (a full one here costs 3x)
         self.stem = nn.Sequential(conv_bn(3, c[0], 3, 2), conv_bn(c[0], c[0], 3, 2, groups=c[0]),
@@ -84,6 +84,13 @@ class DoorHandleDetector(nn.Module):
         p16 = self.smooth16(self.lat16(x16) + up(self.lat32(x32)))
         p8 = self.smooth8(self.lat8(x8) + up(p16))
         return self.head(self.lat4(x4) + up(p8))
+
+
+def checkpoint(net, **extra):
+    """What a .pt file holds: the weights and the shape they fill (load_state reads them into a
+    network of that shape or a larger one)."""
+    return {"weights": net.state_dict(), "width": net.width, "deep": net.deep,
+            "deep_blocks": net.deep_blocks, "box_per_class": net.box_groups > 1, **extra}
 
 
 def load_state(net, weights):

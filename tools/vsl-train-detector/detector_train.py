@@ -10,6 +10,7 @@ import torch
 
 import detector_data as data
 from detector_eval import cross_validated_thresholds, detect
+from detector_model import checkpoint
 from detector_targets import build_targets, decode_boxes, focal_loss, giou_loss
 
 GIOU_WEIGHT = 5.0  # TTFNet's balance of the box loss against the centre-ness loss
@@ -66,9 +67,7 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
         smoothed = value if smoothed is None else 0.98 * smoothed + 0.02 * value
         now = time.time()
         if (step + 1) % 1000 == 0 or step + 1 == steps:
-            torch.save({"weights": net.state_dict(), "width": args.width, "deep": args.deep,
-                        "deep_blocks": args.deep_blocks, "box_per_class": args.box_per_class,
-                        "step": step + 1}, checkpoint_path)
+            torch.save(checkpoint(net, step=step + 1), checkpoint_path)
         if monitor and (step + 1) % 2000 == 0 and step + 1 < steps:
             net.eval()
             log(monitor(step + 1))
