@@ -1,7 +1,7 @@
 // vsl-recognition: STEREO_FRAME -> PERCEPTS (paper §2.1). Segments both raw images, runs the
 // class-specific recognizers (doors, handles), cross-matches left and right, triangulates and
 // registers the percepts into the ego frame through the head kinematics at capture time; always on
-// the newest frame, dropping stale ones. Config: config/recognition.yaml; messages:
+// the newest frame, dropping stale ones. Config: config/recognition_paper.yaml; messages:
 // docs/messages.md.
 #include "vsl/runtime/main.hpp"
 #include "recognition_daemon.hpp"
@@ -16,8 +16,8 @@ int main(int argc, char** argv) {
       "capture time. Works on the newest frame only: frames that arrive while one is being\n"
       "recognized replace each other and are counted as dropped. Optionally publishes a debug\n"
       "image (recognition.debug_image) with the blobs, detections and percepts drawn.\n"
-      "Config: config/recognition.yaml (head, class models, segmentation:, stereo:);\n"
-      "config/recognition_learned.yaml runs the learned detector (detector:, box_stereo:).",
+      "Config: config/recognition_paper.yaml (head, class models, segmentation:, stereo:);\n"
+      "config/recognition.yaml runs the learned detector (detector:, box_stereo:).",
       true};
   return vsl::runtime::daemon_main(
       argc, argv, program, [](vsl::runtime::Daemon& daemon, const vsl::config::Node& config) {

@@ -1,4 +1,4 @@
-// config/recognition.yaml -> RecognitionConfig, every key validated.
+// config/recognition_paper.yaml -> RecognitionConfig, every key validated.
 #include "recognition_config.hpp"
 
 #include <array>

@@ -1,4 +1,4 @@
-// The configuration of vsl-recognition (config/recognition.yaml): the head (kinematics and
+// The configuration of vsl-recognition (config/recognition_paper.yaml): the head (kinematics and
 // calibration), the class model files, the segmentation and stereo options of the library, the
 // optional debug image and the status period. Every key is validated; a bad value throws
 // vsl::config::Error with one line "file:line: key.path: what".

@@ -182,7 +182,7 @@ std::vector<Target> all_targets(const std::string& source_dir) {
                   [](const config::Node& root) { localization::localizer_options_from(root); }));
   targets.push_back(yaml_target(
       "recognition_config",
-      {file("config/recognition.yaml"), file("config/recognition_learned.yaml")},
+      {file("config/recognition_paper.yaml"), file("config/recognition.yaml")},
       [](const config::Node& root) { recognition_daemon::read_recognition_config(root); }));
   // The head file names its calibration by a path; the shipped one stands in for it.
   const head::StereoCalibration calibration =

@@ -77,21 +77,34 @@ struct OtherWorld {
   std::string recognition_config;
 };
 
+// The recognizer and the realism of the images it gets.
+struct Recognition {
+  std::string config;
+  vsl::render::RealismLevel realism;
+};
+// The paper's recognizer on the flat images it is tuned on.
+const Recognition kPaperRecognition{"config/recognition_paper.yaml",
+                                    vsl::render::RealismLevel::off};
+// As shipped (config/sim_head.yaml, tools/demo): the learned detector on images as varied as a
+// real camera's.
+const Recognition kShippedRecognition{"config/recognition.yaml", vsl::render::RealismLevel::full};
+
 // The four daemons and a requester on one simulated clock.
 class LockstepPipeline {
  public:
   LockstepPipeline(const std::optional<std::array<double, 4>>& pose,
                    const std::string& localizer_config,
-                   const std::optional<OtherWorld>& other = std::nullopt)
+                   const std::optional<OtherWorld>& other = std::nullopt,
+                   const Recognition& recognizer = kPaperRecognition)
       : clock_(kStartUtime), hub_(clock_) {
     sim_head::SimHeadOverrides overrides;
     overrides.pose = pose;
+    overrides.realism_level = recognizer.realism;
     if (other) overrides.world_path = other->world_path;
     Daemon& sim = add("vsl-sim-head", "config/sim_head.yaml");
     sim_head_ = std::make_unique<sim_head::SimHeadDaemon>(
         sim, sim_head::load_sim_head(config("config/sim_head.yaml"), overrides));
-    const std::string recognition_config =
-        other ? other->recognition_config : "config/recognition.yaml";
+    const std::string recognition_config = other ? other->recognition_config : recognizer.config;
     Daemon& recognition = add("vsl-recognition", recognition_config);
     recognition_ = std::make_unique<recognition_daemon::RecognitionDaemon>(
         recognition,
@@ -232,6 +245,26 @@ INSTANTIATE_TEST_SUITE_P(
         PoseCase{"south_east_facing_north_west", std::array<double, 4>{3.645, 0.602, 0, 132.4}}),
     [](const ::testing::TestParamInfo<PoseCase>& info) { return std::string(info.param.name); });
 
+// As shipped: the learned detector on images at full realism, from the default pose and two of
+// the others.
+class ShippedRecognizerTest : public ::testing::TestWithParam<PoseCase> {};
+
+TEST_P(ShippedRecognizerTest, LocalizesWithinFiveCentimetresAndTwoDegrees) {
+  LockstepPipeline pipeline(GetParam().pose, "config/vsl-localizer.yaml", std::nullopt,
+                            kShippedRecognition);
+  expect_localized_near_truth(pipeline.run());
+}
+
+INSTANTIATE_TEST_SUITE_P(Kitchen, ShippedRecognizerTest,
+                         ::testing::Values(PoseCase{"default", std::nullopt},
+                                           PoseCase{"north_east_facing_west",
+                                                    std::array<double, 4>{3.799, 2.945, 0, -165.3}},
+                                           PoseCase{"south_east_facing_north_west",
+                                                    std::array<double, 4>{3.645, 0.602, 0, 132.4}}),
+                         [](const ::testing::TestParamInfo<PoseCase>& info) {
+                           return std::string(info.param.name);
+                         });
+
 // The same inputs give the same pose: lock step leaves nothing to timing.
 TEST(LockstepPipeline, SameInputsGiveTheSamePose) {
   const Outcome first = LockstepPipeline(std::nullopt, "config/vsl-localizer.yaml").run();
@@ -303,7 +336,8 @@ TEST(LockstepPipeline, AnotherLookLocalizesWithClassModelsTrainedOnItsWorld) {
   const std::array<double, 4> pose{1.981, 1.428, 0, 112.4};
 
   const Outcome shipped =
-      LockstepPipeline(pose, localizer_config, OtherWorld{world, "config/recognition.yaml"}).run();
+      LockstepPipeline(pose, localizer_config, OtherWorld{world, "config/recognition_paper.yaml"})
+          .run();
   ASSERT_TRUE(shipped.pose.has_value()) << shipped.log;
   EXPECT_NE(shipped.pose->status, vsl::pose_estimate_t::LOCALIZED);
 

@@ -192,9 +192,11 @@ vsl::stereo_frame_t grey_frame(std::int64_t frame_id) {
   return frame;
 }
 
-// The kitchen from the simulated head at its typical pose (config/sim_head.yaml): every percept
-// list belongs to a frame the head published, carries the left camera's pose at capture, and its
-// percepts are doors and handles near the world's reference points of such objects.
+// The kitchen from the simulated head at its typical pose, both daemons as shipped
+// (config/sim_head.yaml at full realism, the learned recognizer of config/recognition.yaml):
+// every percept list belongs to a frame the head published, carries the left camera's pose at
+// capture, and its percepts are doors and handles near the world's reference points of such
+// objects.
 TEST_F(recognition_process, KitchenFramesBecomePerceptsNearTheGroundTruth) {
   constexpr int kPort = 17641;
   Listener listener(kPort);
@@ -375,7 +377,7 @@ TEST_F(recognition_process, StaleFramesAreDroppedNotQueued) {
   // which counted them as lists after the flood (14 > 12, about 1 run in 10 on a loaded machine).
   Listener listener(kPort, false, false);
   ChildProcess recognition(
-      {VSL_RECOGNITION, "--config", "config/recognition.yaml", "--lcm-url", udpm_url(kPort)});
+      {VSL_RECOGNITION, "--config", "config/recognition_paper.yaml", "--lcm-url", udpm_url(kPort)});
   ASSERT_TRUE(listener.until([&] { return !listener.beats.empty(); }, 60s)) << recognition.err();
   // How long one frame takes here (sanitizers, a shared machine): wait for its list.
   kitchen.frame_id = 0;

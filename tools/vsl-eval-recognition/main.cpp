@@ -64,7 +64,7 @@ options:
   --views N             robot poses (default 100)
   --seed S              seed of the poses and the sensor noise (default 2; training uses 1)
   --config FILE         recognition config: head, model files, segmentation and stereo options
-                        (default config/recognition.yaml; config/recognition_learned.yaml
+                        (default config/recognition_paper.yaml; config/recognition.yaml
                         runs the learned detector)
   --models LIST         comma-separated model files instead of the config's (paper's recognizer)
   --realism LEVEL       the rendered frames' realism: off (default), materials or full
@@ -123,7 +123,7 @@ struct Options {
   std::uint64_t views_per_look = 0;  // --looks K; 0: the world's own look
   std::uint64_t views = 100;
   std::uint64_t seed = 2;
-  std::string config_file = "config/recognition.yaml";
+  std::string config_file = "config/recognition_paper.yaml";
   std::vector<std::string> model_files;
   double max_distance_m = 4.0;
   double max_target_distance_m = 4.0;

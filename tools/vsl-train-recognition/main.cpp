@@ -51,7 +51,7 @@ options:
   --seed S              seed of the poses and the sensor noise (default 1)
   --types LIST          comma-separated classes to train (default door,handle)
   --config FILE         recognition config whose segmentation options and head are used
-                        (default config/recognition.yaml)
+                        (default config/recognition_paper.yaml)
   -o, --output-dir DIR  where the model files go (default config/recognition); an existing
                         <type>.yaml there keeps its recognizer parameters, only the model changes
   --keep FRACTION       the threshold is the smallest squared Mahalanobis distance that keeps
@@ -98,7 +98,7 @@ struct Options {
   std::uint64_t views = 200;
   std::uint64_t seed = 1;
   std::vector<std::string> types{"door", "handle"};
-  std::string config_file = "config/recognition.yaml";
+  std::string config_file = "config/recognition_paper.yaml";
   std::string output_dir = "config/recognition";
   double keep = 0.98;                     // for a class not in keep_of
   std::map<std::string, double> keep_of;  // --keep TYPE=FRACTION,...

@@ -1,4 +1,4 @@
-// Reads the parts of config/recognition.yaml the recognition tools need
+// Reads the parts of config/recognition_paper.yaml the recognition tools need
 // (recognition_config.hpp).
 #include "recognition_config.hpp"
 

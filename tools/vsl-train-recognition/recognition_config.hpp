@@ -1,4 +1,4 @@
-// What the recognition tools take from a vsl-recognition config (config/recognition.yaml):
+// What the recognition tools take from a vsl-recognition config (config/recognition_paper.yaml):
 // the head, the recognizer (the paper's model files and options, or the learned detector), so that
 // training and evaluation segment and match exactly as the daemon does. Only these keys of the
 // `recognition:` section are read (the daemon validates the whole file); paths are relative to the

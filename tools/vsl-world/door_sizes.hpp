@@ -1,5 +1,5 @@
 // The sizes of a world's objects of one type (vsl/world/object_sizes.hpp), printed as the
-// recognizer's class entry wants them (config/recognition.yaml, stereo.door_classes).
+// recognizer's class entry wants them (config/recognition_paper.yaml, stereo.door_classes).
 #pragma once
 
 #include <ostream>

@@ -29,7 +29,7 @@ Validates a vsl world-model file (format: docs/world-model.md).
   stats   primitives by kind, mesh triangles, objects by type, world-graph links (paper
           Eq. 6) and the bounding box of all geometry (world frame, metres)
   door-sizes  the sizes of the world's doors (or --type TYPE) as the recognizer's class entry
-          wants them (config/recognition.yaml, stereo.door_classes; docs/recognition.md): every
+          wants them (config/recognition_paper.yaml, stereo.door_classes; docs/recognition.md): every
           height, the RMS of the heights about the most common, the most common width and the
           RMS of the widths about it, metres; exit 2 when no such object has a size
 options:

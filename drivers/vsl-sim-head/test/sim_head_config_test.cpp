@@ -71,9 +71,9 @@ TEST(SimHeadConfig, CommandLineOverridesWorldAndPose) {
   EXPECT_TRUE(setup.config.world_T_ego.linear().col(0).isApprox(-Eigen::Vector3d::UnitX()));
 }
 
-TEST(SimHeadConfig, ShippedConfigKeepsRealismOffButSpellsOutItsKeys) {
+TEST(SimHeadConfig, ShippedConfigRendersAtFullRealismAndSpellsOutItsKeys) {
   const SimHeadSetup setup = load_sim_head(config::Node::load_file("config/sim_head.yaml"));
-  EXPECT_EQ(setup.config.render.realism.level, render::RealismLevel::off);
+  EXPECT_EQ(setup.config.render.realism.level, render::RealismLevel::full);
   // Every other key is there, commented, with the library's default: uncommented, the file
   // must load and change nothing.
   std::ifstream in("config/sim_head.yaml");

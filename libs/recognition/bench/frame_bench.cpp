@@ -1,5 +1,5 @@
 // BM_FrameRecognizer: the whole pipeline (segmentation of both images, door and handle
-// recognizers with the shipped models and the shipped options of config/recognition.yaml, cross
+// recognizers with the shipped models and the shipped options of config/recognition_paper.yaml, cross
 // match with its door-side correlation, triangulation, registration) per 640x480
 // stereo pair of the kitchen (issue 5: at most 20 ms on one core). Counters: the stages' mean
 // wall times (FrameResult) and the percepts found. No main here: the fragments share one.
@@ -29,7 +29,7 @@ void BM_FrameRecognizer(benchmark::State& state) {
   const test::StereoViews& views = kitchen();
   const test::StereoView view = views.fixed_view(static_cast<int>(state.range(0)), 1);
   const FrameRecognizerOptions options = frame_recognizer_options_from(
-      config::Node::load_file(kSource + "/config/recognition.yaml").at("recognition"));
+      config::Node::load_file(kSource + "/config/recognition_paper.yaml").at("recognition"));
   const FrameRecognizer recognizer(options, views.head(),
                                    load_recognizers({kSource + "/config/recognition/door.yaml",
                                                      kSource + "/config/recognition/handle.yaml"}));

@@ -1,5 +1,5 @@
 // The learned recognizer on rendered kitchen frames (the shipped detector and the box stereo
-// options of config/recognition_learned.yaml): its percepts land on the world model's reference
+// options of config/recognition.yaml): its percepts land on the world model's reference
 // points of doors and handles, and frames of the wrong size are refused.
 #include "vsl/recognition/learned_stereo_recognizer.hpp"
 
@@ -20,7 +20,7 @@ namespace {
 
 LearnedStereoRecognizer shipped(const head::HeadKinematics& head) {
   const config::Node section =
-      config::Node::load_file("config/recognition_learned.yaml").at("recognition");
+      config::Node::load_file("config/recognition.yaml").at("recognition");
   return LearnedStereoRecognizer(std::make_shared<const LearnedDetector>(read_learned_detector_file(
                                      "config/recognition/detector/door_handle.yaml")),
                                  box_stereo_options_from(section.at("box_stereo")), head);

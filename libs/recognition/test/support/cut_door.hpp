@@ -3,7 +3,7 @@
 // to row 199, for the border-cut tests and BM_BorderCutPair. Over a bright wall (190) with the
 // door dark (70), a pair at u = 160 (left) and 135 (right) is a door 2 m ahead on the simulated
 // head (25 px of disparity). `cut_door_options` gives a door class's sizes as the shipped config
-// sets them (config/recognition.yaml), by name.
+// sets them (config/recognition_paper.yaml), by name.
 #pragma once
 
 #include <utility>
