@@ -2,7 +2,7 @@
 
 Backbone: a 3x3 stem and depthwise-separable residual stages down to stride 32 (the receptive
 field a whole door needs); a feature pyramid merges the stages back to stride 4 (a handle 10 px
-long in a 640 px image is 6 px at the 384 px input, under two output cells at stride 4). The head
+long in a 640 px image is 7 px at the 448 px input, under two output cells at stride 4). The head
 predicts, per output cell, one logit per class (a Gaussian "centre-ness" map, TTFNet) and four
 log-distances from the cell's centre to the box's left, top, right and bottom sides in input
 pixels. Only operators OpenCV's dnn runs fast on one core (Conv, BatchNorm folded at export,
