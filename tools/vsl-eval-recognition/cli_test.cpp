@@ -80,8 +80,8 @@ TEST(VslEvalRecognition, SeveralWorldsTogetherAndTheLearnedRecognizersDump) {
   const auto result =
       run_command({VSL_EVAL_RECOGNITION_BIN, "--world",
                    "config/worlds/kitchen.yaml,config/worlds/kitchen_galley.yaml", "--views", "2",
-                   "--config", "config/recognition.yaml", "--realism", "full",
-                   "--target-distance", "6", "--dump", dir.string()},
+                   "--config", "config/recognition.yaml", "--realism", "full", "--target-distance",
+                   "6", "--dump", dir.string()},
                   300.0);
   ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
   for (const char* text : {"4 stereo frames", "what became of the left detections",

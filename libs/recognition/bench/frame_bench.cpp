@@ -1,8 +1,8 @@
 // BM_FrameRecognizer: the whole pipeline (segmentation of both images, door and handle
-// recognizers with the shipped models and the shipped options of config/recognition_paper.yaml, cross
-// match with its door-side correlation, triangulation, registration) per 640x480
-// stereo pair of the kitchen (issue 5: at most 20 ms on one core). Counters: the stages' mean
-// wall times (FrameResult) and the percepts found. No main here: the fragments share one.
+// recognizers with the shipped models and the shipped options of config/recognition_paper.yaml,
+// cross match with its door-side correlation, triangulation, registration) per 640x480 stereo pair
+// of the kitchen (issue 5: at most 20 ms on one core). Counters: the stages' mean wall times
+// (FrameResult) and the percepts found. No main here: the fragments share one.
 //   taskset -c 0 /tmp/b/libs/recognition/vsl_recognition_bench --benchmark_filter=BM_Frame
 #include <benchmark/benchmark.h>
 

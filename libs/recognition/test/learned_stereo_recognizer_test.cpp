@@ -19,8 +19,7 @@ namespace vsl::recognition {
 namespace {
 
 LearnedStereoRecognizer shipped(const head::HeadKinematics& head) {
-  const config::Node section =
-      config::Node::load_file("config/recognition.yaml").at("recognition");
+  const config::Node section = config::Node::load_file("config/recognition.yaml").at("recognition");
   return LearnedStereoRecognizer(std::make_shared<const LearnedDetector>(read_learned_detector_file(
                                      "config/recognition/detector/door_handle.yaml")),
                                  box_stereo_options_from(section.at("box_stereo")), head);

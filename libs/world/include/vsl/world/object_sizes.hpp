@@ -1,6 +1,6 @@
 // The sizes of a world's objects of one type (doors) as the recognizer's class entry wants them
-// (StereoMatchOptions::DoorClass, config/recognition_paper.yaml door_classes): the prior of the door
-// fit for what neither image shows (docs/recognition.md).
+// (StereoMatchOptions::DoorClass, config/recognition_paper.yaml door_classes): the prior of the
+// door fit for what neither image shows (docs/recognition.md).
 #pragma once
 
 #include <string>
