@@ -10,22 +10,14 @@ from detector_targets import decode_boxes
 
 
 def detect(net, images, stride, min_score=0.02, max_per_class=100, nms_iou=0.6):
-    """images: B x 3 x H x W tensor -> per image a list of (class, score, x0, y0, x1, y1).
-    Objects are the peaks of the centre-ness; a detection's score is its centre-ness, or with
-    quality maps the geometric mean of centre-ness and quality."""
+    """images: B x 3 x H x W tensor -> per image a list of (class, score, x0, y0, x1, y1)."""
     with torch.no_grad():
         maps = net(images)
     num_classes = net.num_classes
-    boxes_end = num_classes + 4 * net.box_groups
-    centre = torch.sigmoid(maps[:, :num_classes])
-    peaks = centre == F.max_pool2d(centre, 3, 1, 1)
-    scores = centre
-    if net.quality:
-        quality = torch.sigmoid(maps[:, boxes_end:])
-        scores = torch.sqrt(centre * (quality if net.box_groups > 1 else quality.expand_as(centre)))
-    peaks = scores * peaks
-    boxes = decode_boxes(maps[:, num_classes:boxes_end], stride)
-    per_class = net.box_groups > 1
+    scores = torch.sigmoid(maps[:, :num_classes])
+    peaks = scores * (scores == F.max_pool2d(scores, 3, 1, 1))
+    boxes = decode_boxes(maps[:, num_classes:], stride)
+    per_class = boxes.shape[1] == 4 * num_classes and num_classes > 1
     out = []
     for b in range(maps.shape[0]):
         found = []

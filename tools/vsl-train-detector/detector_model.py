@@ -3,12 +3,9 @@
 Backbone: a 3x3 stem and depthwise-separable residual stages down to stride 32 (the receptive
 field a whole door needs); a feature pyramid merges the stages back to stride 4 (a handle 10 px
 long in a 640 px image is 7 px at the 448 px input, under two output cells at stride 4). The head
-predicts, per output cell, one logit per class (a Gaussian "centre-ness" map, TTFNet), four
+predicts, per output cell, one logit per class (a Gaussian "centre-ness" map, TTFNet) and four
 log-distances from the cell's centre to the box's left, top, right and bottom sides in input
-pixels (one box per class, or one shared), and optionally, per box, a logit of that box's IoU with
-the object's (the "quality": a detection's score is the geometric mean of its centre-ness and its
-quality, so that a well placed box outranks a loose one; IoU-aware scoring, as in Wu et al.,
-"IoU-aware single-stage object detector", 2020). Only operators OpenCV's dnn runs fast on one core (Conv, BatchNorm folded at export,
+pixels. Only operators OpenCV's dnn runs fast on one core (Conv, BatchNorm folded at export,
 ReLU, Add, nearest Resize).
 """
 import torch
@@ -52,15 +49,11 @@ DEEP_BLOCKS = (3, 2)
 
 class DoorHandleDetector(nn.Module):
     def __init__(self, num_classes=2, width=1.0, deep=DEEP, deep_blocks=DEEP_BLOCKS,
-                 box_per_class=False, quality=False):
+                 box_per_class=False):
         super().__init__()
         # One box per class at each cell, or one shared by the classes (the older models): with a
         # shared box, a drawer front whose centre is its handle's is given the handle's box.
         self.box_groups = num_classes if box_per_class else 1
-        # Output channels: centre-ness per class, then 4 sides per box, then (with quality) one
-        # IoU logit per box.
-        self.quality = quality
-        outputs = num_classes + 4 * self.box_groups + (self.box_groups if quality else 0)
         c = [int(round(v * width)) for v in (16, 32, 64, *deep)]
         self.num_classes, self.width = num_classes, width
         self.deep, self.deep_blocks = tuple(deep), tuple(deep_blocks)
@@ -78,11 +71,9 @@ class DoorHandleDetector(nn.Module):
         self.smooth8 = nn.Sequential(SeparableBlock(f, f), conv_bn(f, f4, 1))
         self.lat4 = conv_bn(c[1], f4, 1)
         self.head = nn.Sequential(conv_bn(f4, f4, 3, groups=f4), conv_bn(f4, f4, 1),
-                                  nn.Conv2d(f4, outputs, 1))
-        boxes_end = num_classes + 4 * self.box_groups
+                                  nn.Conv2d(f4, num_classes + 4 * self.box_groups, 1))
         nn.init.constant_(self.head[-1].bias[:num_classes], -4.6)  # initial centre-ness 0.01
-        nn.init.constant_(self.head[-1].bias[num_classes:boxes_end], 2.0)  # sides ~7 px away
-        nn.init.constant_(self.head[-1].bias[boxes_end:], 0.0)  # quality 0.5
+        nn.init.constant_(self.head[-1].bias[num_classes:], 2.0)   # sides ~7 px away
 
     def forward(self, x):
         x4 = self.stem(x)
@@ -99,8 +90,7 @@ def checkpoint(net, **extra):
     """What a .pt file holds: the weights and the shape they fill (load_state reads them into a
     network of that shape or a larger one)."""
     return {"weights": net.state_dict(), "width": net.width, "deep": net.deep,
-            "deep_blocks": net.deep_blocks, "box_per_class": net.box_groups > 1,
-            "quality": net.quality, **extra}
+            "deep_blocks": net.deep_blocks, "box_per_class": net.box_groups > 1, **extra}
 
 
 def load_state(net, weights):
@@ -111,16 +101,15 @@ def load_state(net, weights):
     channels carry does not reach the old outputs until training makes it; a new residual block
     starts with its last batch norm's scale at zero, so it passes its input through unchanged.
     A network with a box per class grown from one with a shared box starts with the shared box's
-    maps for every class. Quality maps added to a network without them start at 0.5 for every
-    box (zero weights and bias), so the scores keep their order until training.
+    maps for every class.
     New output channels keep their random initialization: the zero weights reading them still
     receive gradients."""
     own = net.state_dict()
-    head = "head.2."  # the last convolution: classes' centre-ness, 4 box sides per group, quality
+    head = "head.2."  # the last convolution: classes' centre-ness, then 4 box sides per group
     for name in (head + "weight", head + "bias"):
         old, new = weights.get(name), own.get(name)
         if old is not None and new is not None and old.shape[0] == net.num_classes + 4 and \
-                net.box_groups > 1:
+                new.shape[0] > old.shape[0]:
             # A box per class from the shared one: each class starts with the shared box's maps.
             weights = dict(weights)
             shared = old[net.num_classes:]
@@ -149,8 +138,4 @@ def load_state(net, weights):
             value[old.shape[0]:] = 0.0
         value[tuple(slice(0, n) for n in old.shape)] = old
         grown[name] = value
-    boxes_end = net.num_classes + 4 * net.box_groups
-    if net.quality and weights.get(head + "bias") is not None and weights[head + "bias"].shape[0] <= boxes_end:
-        for name in (head + "weight", head + "bias"):  # new quality maps: 0.5 everywhere
-            grown[name][boxes_end:] = 0.0
     net.load_state_dict(grown)

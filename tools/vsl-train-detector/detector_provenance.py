@@ -25,10 +25,9 @@ def write_description(path, args, figures, command, counts, seconds, date):
         f"  split_seed: {args.split_seed}",
         f"  init: \"{os.path.basename(args.init) if args.init else 'random'}\"",
         "  # The network (detector_model.py): the stride-16 and stride-32 stages' channels and blocks,",
-        "  # whether each class regresses its own box, and whether each box predicts its IoU.",
+        "  # and whether each class regresses its own box.",
         f"  architecture: {{deep: [{args.deep[0]}, {args.deep[1]}], deep_blocks: [{args.deep_blocks[0]}, "
-        f"{args.deep_blocks[1]}], box_per_class: {str(args.box_per_class).lower()}, "
-        f"quality: {str(args.quality).lower()}}}",
+        f"{args.deep_blocks[1]}], box_per_class: {str(args.box_per_class).lower()}}}",
         f"  iterations: {args.iterations}" + (f"  # stopped after {args.stop_after}" if args.stop_after else ""),
         f"  batch: {args.batch}",
         f"  training_minutes: {seconds / 60:.1f}",

@@ -14,11 +14,6 @@ do not drown small ones (TTFNet Eq. 5). Smaller boxes are drawn last and own sha
 box per class (box_groups = the number of classes) each class's boxes are drawn in maps of their
 own: a drawer front and its handle share a centre, and with one shared box the front's cells
 belong to the handle, so the door class learns the handle's box there.
-
-With quality maps, each box's quality logit q is trained where its box is, towards the IoU of the
-predicted box with the target (a constant to it: the box is not pulled towards what makes its IoU
-easy to predict), by binary cross-entropy with the same weights
-    L_q = sum w (-IoU log s(q) - (1 - IoU) log(1 - s(q))) / sum w.
 """
 import math
 
@@ -83,39 +78,16 @@ def focal_loss(logits, heat):
     return -(pos_loss + neg_loss) / positive.sum().clamp(min=1)
 
 
-def _boxes_at_weights(pred, target, weight):
-    """The predicted and target boxes (N x 4) and weights (N) of the cells with a weight."""
+def giou_loss(pred, target, weight):
+    """pred, target: B x 4G x h x w boxes; weight: B x G x h x w."""
     b, g, h, w_ = weight.shape
     pred, target, weight = pred.reshape(b * g, 4, h, w_), target.reshape(b * g, 4, h, w_), weight.reshape(b * g, h, w_)
     mask = weight > 0
-    return pred.permute(0, 2, 3, 1)[mask], target.permute(0, 2, 3, 1)[mask], weight[mask], mask
-
-
-def _iou(p, t):
-    area_p = (p[:, 2] - p[:, 0]) * (p[:, 3] - p[:, 1])
-    area_t = (t[:, 2] - t[:, 0]) * (t[:, 3] - t[:, 1])
-    iw = (torch.min(p[:, 2], t[:, 2]) - torch.max(p[:, 0], t[:, 0])).clamp(min=0)
-    ih = (torch.min(p[:, 3], t[:, 3]) - torch.max(p[:, 1], t[:, 1])).clamp(min=0)
-    inter = iw * ih
-    return inter / (area_p + area_t - inter).clamp(min=1e-6)
-
-
-def quality_loss(logits, pred, target, weight):
-    """logits: B x G x h x w quality logits; pred, target: B x 4G x h x w boxes; weight: B x G x h x w."""
-    p, t, w, mask = _boxes_at_weights(pred, target, weight)
-    if w.numel() == 0:
-        return logits.sum() * 0
-    q = logits.reshape(mask.shape)[mask]
-    goal = _iou(p.detach(), t)
-    bce = torch.nn.functional.binary_cross_entropy_with_logits(q, goal, reduction="none")
-    return (bce * w).sum() / w.sum().clamp(min=1e-6)
-
-
-def giou_loss(pred, target, weight):
-    """pred, target: B x 4G x h x w boxes; weight: B x G x h x w."""
-    p, t, w, _ = _boxes_at_weights(pred, target, weight)
-    if w.numel() == 0:
+    if not mask.any():
         return pred.sum() * 0
+    p = pred.permute(0, 2, 3, 1)[mask]
+    t = target.permute(0, 2, 3, 1)[mask]
+    w = weight[mask]
     area_p = (p[:, 2] - p[:, 0]) * (p[:, 3] - p[:, 1])
     area_t = (t[:, 2] - t[:, 0]) * (t[:, 3] - t[:, 1])
     iw = (torch.min(p[:, 2], t[:, 2]) - torch.max(p[:, 0], t[:, 0])).clamp(min=0)

@@ -11,7 +11,7 @@ import torch
 import detector_data as data
 from detector_eval import cross_validated_thresholds, detect
 from detector_model import checkpoint
-from detector_targets import build_targets, decode_boxes, focal_loss, giou_loss, quality_loss
+from detector_targets import build_targets, decode_boxes, focal_loss, giou_loss
 
 GIOU_WEIGHT = 5.0  # TTFNet's balance of the box loss against the centre-ness loss
 
@@ -56,13 +56,9 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
             group["lr"] = learning_rate(step, args)
         images, heat, box_target, weight = make_batch(real, sim, args, rng, stride)
         maps = net(images)
-        boxes_end = num_classes + 4 * net.box_groups
         loss_centre = focal_loss(maps[:, :num_classes], heat)
-        boxes = decode_boxes(maps[:, num_classes:boxes_end], stride)
-        loss_box = giou_loss(boxes, box_target, weight)
+        loss_box = giou_loss(decode_boxes(maps[:, num_classes:], stride), box_target, weight)
         loss = loss_centre + GIOU_WEIGHT * loss_box
-        if net.quality:
-            loss = loss + quality_loss(maps[:, boxes_end:], boxes, box_target, weight)
         optimizer.zero_grad()
         loss.backward()
         torch.nn.utils.clip_grad_norm_(net.parameters(), 10.0)

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
-#include <optional>
 #include <stdexcept>
 
 #include "vsl/config/node.hpp"
@@ -19,30 +18,6 @@ struct LearnedDetector::Network {
   std::mutex mutex;
   cv::dnn::Net net;
 };
-
-namespace {
-
-// What the network's output channels hold after the C centre-ness maps: 4 box sides per box
-// group (one group shared by the classes, or one per class), then optionally one quality (IoU)
-// logit per group. The four layouts have different channel counts for C >= 2 (C + 4, 5 C,
-// C + 5, 6 C); for C = 1 a shared box and a box per class are the same thing.
-struct OutputLayout {
-  int box_groups = 1;
-  bool quality = false;
-};
-
-std::optional<OutputLayout> output_layout(int channels, int classes) {
-  for (const int groups : {1, classes}) {
-    for (const bool quality : {false, true}) {
-      if (channels == classes + 4 * groups + (quality ? groups : 0)) {
-        return OutputLayout{groups, quality};
-      }
-    }
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 LearnedDetectorOptions learned_detector_options_from(const config::Node& root) {
   root.expect_keys({"detector", "provenance"});
@@ -131,14 +106,13 @@ LearnedDetector::LearnedDetector(LearnedDetectorOptions options)
                         std::to_string(options_.input_height) + " input (" + e.err + ")");
   }
   const int classes = static_cast<int>(options_.classes.size());
-  if (output.dims != 4 || !output_layout(output.size[1], classes) ||
+  if (output.dims != 4 ||
+      (output.size[1] != classes + 4 && output.size[1] != classes + 4 * classes) ||
       output.size[2] != options_.input_height / options_.stride ||
       output.size[3] != options_.input_width / options_.stride) {
     throw config::Error(options_.model_path + ": the output is not " + std::to_string(classes + 4) +
-                        ", " + std::to_string(5 * classes) + ", " + std::to_string(classes + 5) +
-                        " or " + std::to_string(6 * classes) +
-                        " maps (classes + 4 box sides, shared or per class, + their quality) at "
-                        "stride " +
+                        " or " + std::to_string(5 * classes) +
+                        " maps (classes + 4 box sides, shared or per class) at stride " +
                         std::to_string(options_.stride));
   }
 }
@@ -172,13 +146,10 @@ void suppress_overlaps(std::vector<BoxDetection>& boxes, double iou) {
 // class c's centre-ness, channels C + 4g .. C + 4g + 3 the log-distances (d_l, d_t, d_r, d_b) from
 // the cell centre to the box's sides in input pixels, g = 0 for every class (C + 4 channels) or
 // g = c (5 C channels: each class regresses its own box, so a drawer front whose centre is its
-// handle's does not take the handle's box); with quality maps, channel C + 4 G + g holds the logit
-// of box g's predicted IoU with its object. An object is a cell whose centre-ness is a maximum
+// handle's does not take the handle's box). An object is a cell whose centre-ness is a maximum
 // of its 3 x 3 neighbourhood; its box is centre - (e^d_l, e^d_t) .. centre + (e^d_r, e^d_b), the
 // log-distances clamped to [-2, 7] as in training; divided by the letterbox scale it is in image
-// pixels. Its confidence is the centre-ness sigmoid(logit), or with quality maps the geometric
-// mean sqrt(sigmoid(logit) sigmoid(quality)); since the quality is at most 1, a confidence p
-// needs a centre-ness of at least p^2, which is compared first as logit >= log(p^2 / (1 - p^2)).
+// pixels. Confidence sigmoid(logit) is compared as logit >= log(p / (1 - p)).
 std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min_confidence) const {
   if (bgr.empty() || bgr.type() != CV_8UC3) {
     throw std::invalid_argument("LearnedDetector::detect: expected a CV_8UC3 BGR image");
@@ -205,7 +176,7 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
     output = network_->net.forward().clone();
   }
   const int classes = static_cast<int>(options_.classes.size());
-  const OutputLayout layout = *output_layout(output.size[1], classes);  // checked at load
+  const bool box_per_class = output.size[1] == 5 * classes && classes > 1;
   const int rows = output.size[2];
   const int cols = output.size[3];
   const auto map = [&](int channel) {
@@ -217,13 +188,9 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
         std::clamp(min_confidence >= 0.0 ? min_confidence
                                          : options_.min_confidence[static_cast<std::size_t>(c)],
                    1e-6, 1.0 - 1e-6);
-    const double min_centre = layout.quality ? p * p : p;
-    const float min_logit = static_cast<float>(std::log(min_centre / (1.0 - min_centre)));
+    const float min_logit = static_cast<float>(std::log(p / (1.0 - p)));
     const float* logits = map(c);
-    const int group = layout.box_groups > 1 ? c : 0;
-    const float* quality_logits =
-        layout.quality ? map(classes + 4 * layout.box_groups + group) : nullptr;
-    const auto sigmoid = [](double x) { return 1.0 / (1.0 + std::exp(-x)); };
+    const int group = box_per_class ? c : 0;
     std::vector<BoxDetection> found;
     for (int i = 0; i < rows; ++i) {
       for (int j = 0; j < cols; ++j) {
@@ -238,10 +205,6 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
           }
         }
         if (!peak) continue;
-        double confidence = sigmoid(value);
-        if (quality_logits)
-          confidence = std::sqrt(confidence * sigmoid(quality_logits[i * cols + j]));
-        if (confidence < p) continue;
         const double cu = (j + 0.5) * options_.stride;
         const double cv = (i + 0.5) * options_.stride;
         const auto side = [&](int k) {
@@ -251,7 +214,7 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
         BoxDetection box;
         box.type = options_.classes[static_cast<std::size_t>(c)];
         box.class_index = c;
-        box.confidence = static_cast<float>(confidence);
+        box.confidence = static_cast<float>(1.0 / (1.0 + std::exp(-static_cast<double>(value))));
         box.min_px =
             Eigen::Vector2d(std::max(0.0, cu - side(0)), std::max(0.0, cv - side(1))) / scale;
         box.max_px = Eigen::Vector2d(cu + side(2), cv + side(3)) / scale;

@@ -51,9 +51,7 @@ LearnedDetectorOptions read_learned_detector_file(const std::string& path);
 struct BoxDetection {
   std::string type;  // world-model type: the class's name
   int class_index = 0;
-  // 0 .. 1: the network's centre-ness at the box's peak, or with quality maps the geometric mean
-  // of centre-ness and the box's predicted IoU
-  float confidence = 0.0f;
+  float confidence = 0.0f;  // 0 .. 1, the network's centre-ness at the box's peak
   Eigen::Vector2d min_px = Eigen::Vector2d::Zero();
   Eigen::Vector2d max_px = Eigen::Vector2d::Zero();
 
@@ -69,7 +67,7 @@ class LearnedDetector {
  public:
   // Loads the network; throws config::Error "<model>: what" when OpenCV cannot read it or its
   // output does not have classes + 4 (box shared by the classes) or 5 x classes (a box per class)
-  // channels, or those + one quality map per box, at the stated stride.
+  // channels at the stated stride.
   explicit LearnedDetector(LearnedDetectorOptions options);
   ~LearnedDetector();
   LearnedDetector(const LearnedDetector&) = delete;
