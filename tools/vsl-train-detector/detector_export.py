@@ -31,3 +31,16 @@ def export_onnx(net, path, height, width):
     model = _inline_identities(onnx.load_from_string(buffer.getvalue()))
     onnx.checker.check_model(model)
     onnx.save(model, path)
+
+
+def export_refiner_onnx(refiner, path, crop):
+    """The handle refiner: input "crops" N x 3 x crop x crop (any N), output "sides" N x 4."""
+    refiner = refiner.eval()
+    buffer = io.BytesIO()
+    with torch.no_grad():
+        torch.onnx.export(refiner, torch.zeros(1, 3, crop, crop), buffer, opset_version=11,
+                          input_names=["crops"], output_names=["sides"], do_constant_folding=True,
+                          dynamic_axes={"crops": {0: "n"}, "sides": {0: "n"}})
+    model = _inline_identities(onnx.load_from_string(buffer.getvalue()))
+    onnx.checker.check_model(model)
+    onnx.save(model, path)

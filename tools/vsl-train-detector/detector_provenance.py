@@ -3,9 +3,10 @@ size, stride, classes, thresholds) and where it came from (data, seed, command, 
 import os
 
 import detector_data as data
+import detector_refiner
 
 
-def write_description(path, args, figures, command, counts, seconds, date):
+def write_description(path, args, figures, command, refined, counts, seconds, date):
     thresholds = {c: (f["threshold"] if figures else 0.3) for c, f in zip(data.CLASSES, figures or [{}] * 2)}
     lines = [
         "# The learned door and handle detector (libs/recognition/include/vsl/recognition/learned_detector.hpp),",
@@ -18,6 +19,19 @@ def write_description(path, args, figures, command, counts, seconds, date):
         f"  classes: [{', '.join(data.CLASSES)}]",
         "  # Per class, the confidence maximizing F1 on the held-out images (2-fold cross-validated below).",
         "  min_confidence: {" + ", ".join(f"{c}: {t:.3f}" for c, t in thresholds.items()) + "}",
+    ]
+    if refined:
+        lines += [
+            "  # A second network measures these classes' boxes again from crops of the image",
+            "  # (tools/vsl-train-detector/detector_refiner.py).",
+            "  refiner:",
+            "    model: box_refiner.onnx",
+            f"    classes: [{', '.join(detector_refiner.REFINED_CLASSES)}]",
+            f"    crop_px: {detector_refiner.CROP}",
+            f"    context: {detector_refiner.CONTEXT}",
+            f"    min_side_px: {detector_refiner.MIN_SIDE_PX:g}",
+        ]
+    lines += [
         "provenance:",
         f"  command: \"{command}\"",
         f"  date: {date}",
@@ -29,6 +43,7 @@ def write_description(path, args, figures, command, counts, seconds, date):
         f"  architecture: {{deep: [{args.deep[0]}, {args.deep[1]}], deep_blocks: [{args.deep_blocks[0]}, "
         f"{args.deep_blocks[1]}], box_per_class: {str(args.box_per_class).lower()}}}",
         f"  iterations: {args.iterations}" + (f"  # stopped after {args.stop_after}" if args.stop_after else ""),
+        f"  refiner_steps: {args.refiner_steps}",
         f"  batch: {args.batch}",
         f"  training_minutes: {seconds / 60:.1f}",
         f"  threads: {args.threads}",

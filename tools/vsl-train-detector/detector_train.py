@@ -11,6 +11,7 @@ import torch
 import detector_data as data
 from detector_eval import cross_validated_thresholds, detect
 from detector_model import checkpoint
+from detector_refiner import refine
 from detector_targets import build_targets, decode_boxes, focal_loss, giou_loss
 
 GIOU_WEIGHT = 5.0  # TTFNet's balance of the box loss against the centre-ness loss
@@ -88,16 +89,18 @@ def train(net, real, sim, args, stride, checkpoint_path, log, monitor=None):
     net.eval()
 
 
-def evaluate(net, samples, args, stride):
-    """Detections on the held-out images (letterboxed to the input as the C++ detector does), and
-    per class the 2-fold cross-validated thresholds and figures (detector_eval.py)."""
+def evaluate(net, samples, args, stride, refiner=None):
+    """Detections on the held-out images (letterboxed to the input as the C++ detector does; with a
+    box refiner, its classes' boxes measured again), and per class the 2-fold cross-validated
+    thresholds and figures (detector_eval.py)."""
     net.eval()
     detections, truths = [], []
     for sample in samples:
         image = sample.load()
         boxed, scale = data.letterbox(image, args.input_w, args.input_h)
         found = detect(net, torch.from_numpy(data.to_tensor_layout(boxed))[None], stride)[0]
-        detections.append([(c, s, x0 / scale, y0 / scale, x1 / scale, y1 / scale) for c, s, x0, y0, x1, y1 in found])
+        found = [(c, s, x0 / scale, y0 / scale, x1 / scale, y1 / scale) for c, s, x0, y0, x1, y1 in found]
+        detections.append(refine(refiner, image, found))
         truths.append((data.pixel_boxes(sample), sample.classes))
         sample.image = None
     return cross_validated_thresholds(detections, truths, len(data.CLASSES))

@@ -1,7 +1,7 @@
 // vsl-train-detector as a process: a user's labelled images (here a few rendered ones, as
-// box-label YAML) fine-tune the shipped model for a few steps; the tool writes the ONNX model, the
-// weights and a description with provenance that vsl-eval-recognition (C++, OpenCV's dnn) loads
-// and runs; bad input is one line and exit code 2.
+// box-label YAML) fine-tune the shipped model and its box refiner for a few steps; the tool
+// writes the ONNX models, the weights and a description with provenance that
+// vsl-eval-recognition (C++, OpenCV's dnn) loads and runs; bad input is one line and exit code 2.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,18 +39,21 @@ TEST(VslTrainDetector, FineTunesOnABoxLabelFileAndTheModelRunsInCpp) {
                    "--seed", "5", "--realism", "off", "--out", (dir / "data").string(), "-q"},
                   300.0);
   ASSERT_EQ(dataset.exit_code, 0) << dataset.err;
-  const auto trained = run_command(
-      {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--out",
-       (dir / "model").string(), "--iterations", "3", "--batch", "2", "--threads", "1", "-q"},
-      600.0);
+  const auto trained =
+      run_command({VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--out",
+                   (dir / "model").string(), "--iterations", "3", "--batch", "2", "--threads", "1",
+                   "--refiner-steps", "3", "-q"},
+                  600.0);
   ASSERT_EQ(trained.exit_code, 0) << trained.err;
-  for (const char* file : {"door_handle.onnx", "door_handle.pt", "door_handle.yaml"}) {
+  for (const char* file : {"door_handle.onnx", "door_handle.pt", "door_handle.yaml",
+                           "box_refiner.onnx", "box_refiner.pt"}) {
     EXPECT_TRUE(fs::exists(dir / "model" / file)) << file;
   }
   const std::string description = read(dir / "model" / "door_handle.yaml");
-  for (const char* text :
-       {"model: door_handle.onnx", "min_confidence: {door: ", "provenance:",
-        "command: \"vsl-train-detector --labels", "init: \"door_handle.pt\"", "held_out:"}) {
+  for (const char* text : {"model: door_handle.onnx",
+                           "min_confidence: {door: ", "refiner:\n    model: box_refiner.onnx",
+                           "provenance:", "command: \"vsl-train-detector --labels",
+                           "init: \"door_handle.pt\"", "refiner_steps: 3", "held_out:"}) {
     EXPECT_NE(description.find(text), std::string::npos) << text << "\n" << description;
   }
   // 12 images: 2 held out (0.2) for the thresholds.
@@ -172,6 +175,12 @@ TEST(VslTrainDetector, BadInputIsOneLineAndExitCodeTwo) {
   EXPECT_EQ(deep.exit_code, 2);
   EXPECT_NE(deep.err.find("--deep: '192' is not two positive integers A,B"), std::string::npos)
       << deep.err;
+  const auto refiner = run_command({VSL_TRAIN_DETECTOR, "--sim", dir.string(), "--no-refiner",
+                                    "--refiner-steps", "5", "--out", (dir / "m").string()});
+  EXPECT_EQ(refiner.exit_code, 2);
+  EXPECT_NE(refiner.err.find("--no-refiner and --refiner-steps exclude each other"),
+            std::string::npos)
+      << refiner.err;
 }
 
 // The training layouts' variants: each one a layout vsl-worldgen generates, the same files for the

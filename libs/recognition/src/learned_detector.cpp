@@ -9,6 +9,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "box_refiner.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/config/paths.hpp"
 
@@ -17,13 +18,43 @@ namespace vsl::recognition {
 struct LearnedDetector::Network {
   std::mutex mutex;
   cv::dnn::Net net;
+  std::optional<BoxRefiner> refiner;
 };
+
+namespace {
+
+BoxRefinerOptions box_refiner_options_from(const config::Node& section,
+                                           const std::vector<std::string>& detector_classes) {
+  section.expect_keys({"model", "classes", "crop_px", "context", "min_side_px"});
+  BoxRefinerOptions options;
+  options.model_path = config::path_relative_to_file(section.at("model"));
+  const config::Node classes = section.at("classes");
+  if (!classes.is_sequence() || classes.size() == 0) classes.fail("expected a list of types");
+  for (std::size_t i = 0; i < classes.size(); ++i) {
+    const std::string type = classes[i].as_string();
+    if (std::find(detector_classes.begin(), detector_classes.end(), type) ==
+        detector_classes.end()) {
+      classes[i].fail("not one of the detector's classes");
+    }
+    options.classes.push_back(type);
+  }
+  const config::Node crop = section.at("crop_px");
+  options.crop_px = static_cast<int>(crop.as_int());
+  if (options.crop_px < 16 || options.crop_px > 256 || options.crop_px % 8 != 0) {
+    crop.fail("must be a multiple of 8 in [16, 256]");
+  }
+  options.context = section.at("context").as_double_in(1.0, 8.0);
+  options.min_side_px = section.at("min_side_px").as_double_in(1.0, 256.0);
+  return options;
+}
+
+}  // namespace
 
 LearnedDetectorOptions learned_detector_options_from(const config::Node& root) {
   root.expect_keys({"detector", "provenance"});
   const config::Node section = root.at("detector");
   section.expect_keys({"model", "input_width", "input_height", "stride", "classes",
-                       "min_confidence", "nms_iou", "max_detections_per_class"});
+                       "min_confidence", "nms_iou", "max_detections_per_class", "refiner"});
   LearnedDetectorOptions options;
   options.model_path = config::path_relative_to_file(section.at("model"));
   auto multiple_of_32 = [](const config::Node& node) {
@@ -61,6 +92,9 @@ LearnedDetectorOptions learned_detector_options_from(const config::Node& root) {
     if (options.max_detections_per_class < 1 || options.max_detections_per_class > 10000) {
       node->fail("must be in [1, 10000]");
     }
+  }
+  if (const auto node = section.find("refiner")) {
+    options.refiner = box_refiner_options_from(*node, options.classes);
   }
   return options;
 }
@@ -115,6 +149,7 @@ LearnedDetector::LearnedDetector(LearnedDetectorOptions options)
                         " maps (classes + 4 box sides, shared or per class) at stride " +
                         std::to_string(options_.stride));
   }
+  if (options_.refiner) network_->refiner.emplace(*options_.refiner);
 }
 
 LearnedDetector::~LearnedDetector() = default;
@@ -227,6 +262,12 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
       found.resize(static_cast<std::size_t>(options_.max_detections_per_class));
     }
     all.insert(all.end(), found.begin(), found.end());
+  }
+  if (network_->refiner) {
+    const std::lock_guard lock(network_->mutex);
+    network_->refiner->refine(bgr, all);
+    std::erase_if(
+        all, [](const BoxDetection& b) { return b.width_px() <= 0.0 || b.height_px() <= 0.0; });
   }
   return all;
 }

@@ -12,6 +12,12 @@
 //     stride: 4                     # input pixels per output cell
 //     classes: [door, handle]       # output channels, in order; the world-model types
 //     min_confidence: {door: 0.3, handle: 0.3}
+//     refiner:                      # optional: a second network measuring these classes' boxes
+//       model: box_refiner.onnx     #   again from crops of the image (box_refiner.hpp)
+//       classes: [handle]
+//       crop_px: 32                 #   the crop's side, pixels (a multiple of 8)
+//       context: 2.0                #   the crop window's side / the box's, per axis
+//       min_side_px: 16             #   the window's smallest side, image pixels
 //   provenance: {...}               # free: how the model was made (data, seed, command, figures)
 //
 // Errors in the file are config::Error, one line "file:line: key: what".
@@ -20,6 +26,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +39,14 @@ class Node;
 
 namespace vsl::recognition {
 
+struct BoxRefinerOptions {
+  std::string model_path;            // the ONNX file, resolved
+  std::vector<std::string> classes;  // the detector classes whose boxes it measures again
+  int crop_px = 32;
+  double context = 2.0;
+  double min_side_px = 16.0;
+};
+
 struct LearnedDetectorOptions {
   std::string model_path;  // the ONNX file, resolved
   int input_width = 384;
@@ -41,6 +56,7 @@ struct LearnedDetectorOptions {
   std::vector<double> min_confidence;  // per class, 0 .. 1: detections below are dropped
   double nms_iou = 0.6;                // same-class boxes overlapping more are one object
   int max_detections_per_class = 100;
+  std::optional<BoxRefinerOptions> refiner;
 };
 
 LearnedDetectorOptions learned_detector_options_from(const config::Node& root);
@@ -74,7 +90,8 @@ class LearnedDetector {
   LearnedDetector& operator=(const LearnedDetector&) = delete;
 
   // The objects in one image (CV_8UC3 BGR, any size; throws std::invalid_argument otherwise)
-  // whose confidence reaches their class's min_confidence, strongest first within a class.
+  // whose confidence reaches their class's min_confidence, strongest first within a class; with a
+  // refiner, its classes' boxes measured again.
   // Thread-safe: calls are serialized (the network keeps its buffers between calls).
   std::vector<BoxDetection> detect(const cv::Mat& bgr) const;
   // The same with one threshold for every class (evaluation sweeps the whole curve).

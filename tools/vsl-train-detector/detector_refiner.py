@@ -1,0 +1,227 @@
+"""The box refiner (for handles): a second stage that measures a detected handle's box again, from a crop of
+the image at the image's own resolution.
+
+Why: the detector sees a 640 x 480 image at 448 x 352, and a handle there is a few output cells
+across. Its boxes regress to the mean size: on the held-out photographs a handle under 5 px
+across at the input comes out 1.75 times too thick, one over 20 px 0.8 times, and only 40 % of the
+handles it finds get a box of IoU >= 0.5 (median 0.45). The refiner looks at each handle box
+again in a crop of twice its size, scaled to CROP x CROP pixels whatever the handle's size and
+aspect (each axis by its own factor), and regresses the box's sides in the crop.
+
+Crop geometry (the C++ detector, libs/recognition/src/box_refiner.cpp, crops the same way): a
+box (x0, y0, x1, y1) in image pixels (continuous; pixel k covers [k, k + 1)) gives the window of
+width W = max(CONTEXT (x1 - x0), MIN_SIDE_PX) and height H likewise, centred on the box. Crop
+pixel i covers image x in [wx + i W / CROP, wx + (i + 1) W / CROP), sampled bilinearly at its
+centre, the image's edge pixels repeated outside it. The network's four outputs are the box's
+sides as fractions of the window: x0 = wx + t0 W, y0 = wy + t1 H, x1 = wx + t2 W, y1 = wy + t3 H.
+An untrained refiner returns the window's middle half (t = 0.25, 0.25, 0.75, 0.75): the box
+itself when it is at least MIN_SIDE_PX / CONTEXT wide and high.
+
+Training examples: every labelled handle of the training images, cropped around the detector's
+own boxes on it (IoU >= 0.2) and around boxes jittered from the label (centre by 15 % of the size,
+each side's length by a log-normal factor of sigma 0.3: the detector's errors measured on the
+photographs); the loss is 1 - GIoU of the refined box plus a smooth L1 on the four fractions.
+Rendered images make up REFINER_SIM_FRACTION of each batch: trained on renders alone it learns
+their exact silhouettes and moved the photographs' boxes away from their labels.
+"""
+import math
+import random
+import sys
+import time
+
+import cv2
+import numpy as np
+import torch
+from torch import nn
+import torch.nn.functional as F
+
+import detector_data as data
+from detector_eval import detect, iou
+from detector_model import conv_bn
+
+CROP = 48
+CONTEXT = 2.0
+MIN_SIDE_PX = 16.0
+REFINED_CLASSES = ("handle",)
+REFINER_SIM_FRACTION = 0.2
+MAX_SIM_IMAGES = 1500  # rendered images the examples are collected from (many handles each)
+
+
+class BoxRefiner(nn.Module):
+    """CROP x CROP RGB in [0, 1] -> the box's four sides as fractions of the crop window."""
+
+    def __init__(self):
+        super().__init__()
+
+        def separable(cin, cout, stride):
+            return nn.Sequential(conv_bn(cin, cin, 3, stride, groups=cin), conv_bn(cin, cout, 1))
+
+        self.body = nn.Sequential(conv_bn(3, 16, 3, 1), separable(16, 32, 2), separable(32, 32, 1),
+                                  separable(32, 64, 2), separable(64, 64, 1), separable(64, 64, 2))
+        self.sides = nn.Linear(64 * (CROP // 8) ** 2, 4)
+        nn.init.zeros_(self.sides.weight)
+        with torch.no_grad():
+            self.sides.bias.copy_(torch.tensor([0.25, 0.25, 0.75, 0.75]))
+
+    def forward(self, x):
+        return self.sides(self.body(x).flatten(1))
+
+
+def crop_window(box):
+    """(wx, wy, W, H) in image pixels around box (x0, y0, x1, y1)."""
+    x0, y0, x1, y1 = box
+    w = max(CONTEXT * (x1 - x0), MIN_SIDE_PX)
+    h = max(CONTEXT * (y1 - y0), MIN_SIDE_PX)
+    return (x0 + x1 - w) / 2, (y0 + y1 - h) / 2, w, h
+
+
+def crop(image, window):
+    wx, wy, ww, wh = window
+    sx, sy = CROP / ww, CROP / wh
+    # OpenCV indexes pixel centres: crop index i = sx (k + 0.5 - wx) - 0.5 for image index k.
+    m = np.array([[sx, 0, sx * (0.5 - wx) - 0.5], [0, sy, sy * (0.5 - wy) - 0.5]], np.float32)
+    return cv2.warpAffine(image, m, (CROP, CROP), flags=cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+
+
+def to_window(box, window):
+    wx, wy, ww, wh = window
+    return np.array([(box[0] - wx) / ww, (box[1] - wy) / wh, (box[2] - wx) / ww, (box[3] - wy) / wh], np.float32)
+
+
+def from_window(t, window):
+    wx, wy, ww, wh = window
+    return (wx + t[0] * ww, wy + t[1] * wh, wx + t[2] * ww, wy + t[3] * wh)
+
+
+def to_input(crops):
+    return torch.from_numpy(np.stack([data.to_tensor_layout(c) for c in crops]))
+
+
+def refine(refiner, image, detections):
+    """Detections (class, score, x0, y0, x1, y1) in image pixels -> the same with the refined
+    classes' boxes measured again in crops of `image`."""
+    if refiner is None:
+        return detections
+    refined_ids = [data.CLASSES.index(c) for c in REFINED_CLASSES]
+    chosen = [k for k, d in enumerate(detections) if d[0] in refined_ids]
+    if not chosen:
+        return detections
+    windows = [crop_window(detections[k][2:]) for k in chosen]
+    with torch.no_grad():
+        sides = refiner(to_input([crop(image, w) for w in windows])).numpy()
+    out = list(detections)
+    for k, t, w in zip(chosen, sides, windows):
+        out[k] = (*detections[k][:2], *from_window(t, w))
+    return out
+
+
+def collect_examples(detector, samples, input_w, input_h, stride, log):
+    """(sample, box to crop around or None, labelled box) for every labelled handle of the samples:
+    None stands for a box jittered from the label, drawn anew each time; the detector's own boxes
+    on the handle (IoU >= 0.2) come once each."""
+    handle = data.CLASSES.index("handle")
+    examples = []
+    started = time.time()
+    detector.eval()
+    for n, sample in enumerate(samples):
+        image = sample.load()
+        labels = data.pixel_boxes(sample)[sample.classes == handle]
+        if len(labels):
+            boxed, scale = data.letterbox(image, input_w, input_h)
+            found = detect(detector, torch.from_numpy(data.to_tensor_layout(boxed))[None], stride, min_score=0.05)[0]
+            for c, _, *box in found:
+                if c != handle:
+                    continue
+                box = np.array(box) / scale
+                overlaps = iou(box, labels)
+                k = int(np.argmax(overlaps))
+                if overlaps[k] >= 0.2:
+                    examples.append((sample, box, labels[k]))
+            examples += [(sample, None, label) for label in labels]
+        else:
+            sample.image = None
+        if time.time() - started > 60 and n % 200 == 0:
+            log(f"refiner examples: image {n + 1} of {len(samples)}")
+    return examples
+
+
+def _jittered(label, rng):
+    w, h = label[2] - label[0], label[3] - label[1]
+    cx = (label[0] + label[2]) / 2 + rng.gauss(0, 0.15) * w
+    cy = (label[1] + label[3]) / 2 + rng.gauss(0, 0.15) * h
+    w *= math.exp(rng.gauss(0.05, 0.3))
+    h *= math.exp(rng.gauss(0.05, 0.3))
+    return (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+
+
+def _training_example(example, rng):
+    sample, box, label = example
+    if box is None or rng.random() < 0.3:
+        box = _jittered(label, rng)
+    window = crop_window(box)
+    image, target = crop(sample.load(), window), to_window(label, window)
+    # A handle is a handle mirrored or turned by 90 degrees: flip x, transpose, or both.
+    turn = rng.randrange(4)
+    if turn & 1:
+        image, target = image[:, ::-1], np.array([1 - target[2], target[1], 1 - target[0], target[3]], np.float32)
+    if turn & 2:
+        image, target = image.transpose(1, 0, 2), target[[1, 0, 3, 2]]
+    return data.jitter_colours(np.ascontiguousarray(image), rng), target
+
+
+def _giou(p, t):
+    iw = (torch.min(p[:, 2], t[:, 2]) - torch.max(p[:, 0], t[:, 0])).clamp(min=0)
+    ih = (torch.min(p[:, 3], t[:, 3]) - torch.max(p[:, 1], t[:, 1])).clamp(min=0)
+    inter = iw * ih
+    area_p = (p[:, 2] - p[:, 0]).clamp(min=1e-4) * (p[:, 3] - p[:, 1]).clamp(min=1e-4)
+    area_t = (t[:, 2] - t[:, 0]) * (t[:, 3] - t[:, 1])
+    union = area_p + area_t - inter
+    enclosing = (torch.max(p[:, 2], t[:, 2]) - torch.min(p[:, 0], t[:, 0])) * \
+        (torch.max(p[:, 3], t[:, 3]) - torch.min(p[:, 1], t[:, 1]))
+    return inter / union.clamp(min=1e-6) - (enclosing - union) / enclosing.clamp(min=1e-6)
+
+
+def train_refiner(refiner, real_examples, sim_examples, steps, lr, seed, log, batch=128):
+    """AdamW with a cosine decay; a status line every minute (or second on a terminal)."""
+    if not real_examples and not sim_examples:
+        raise data.DataError("the handle refiner has no labelled handle to learn from")
+    rng = random.Random(seed)
+    optimizer = torch.optim.AdamW(refiner.parameters(), lr=lr, weight_decay=1e-4)
+    interactive = sys.stderr.isatty()
+    started = last = time.time()
+    refiner.train()
+    for step in range(steps):
+        for group in optimizer.param_groups:
+            group["lr"] = lr * 0.5 * (1 + math.cos(math.pi * step / steps))
+        pairs = [_training_example(rng.choice(
+            sim_examples if sim_examples and (not real_examples or rng.random() < REFINER_SIM_FRACTION)
+            else real_examples), rng) for _ in range(batch)]
+        predicted = refiner(to_input([p[0] for p in pairs]))
+        target = torch.from_numpy(np.stack([p[1] for p in pairs]))
+        loss = (1 - _giou(predicted, target)).mean() + F.smooth_l1_loss(predicted, target, beta=0.05)
+        optimizer.zero_grad()
+        loss.backward()
+        optimizer.step()
+        now = time.time()
+        if now - last > (1 if interactive else 60) or step + 1 == steps:
+            line = f"refiner step {step + 1}/{steps}  loss {float(loss):.3f}  {(step + 1) / (now - started):.1f} steps/s"
+            if interactive:
+                sys.stderr.write("\r" + line + "\033[K" + ("\n" if step + 1 == steps else ""))
+                sys.stderr.flush()
+            else:
+                log(line)
+            last = now
+    refiner.eval()
+
+
+def refiner_checkpoint(refiner):
+    return {"weights": refiner.state_dict(), "crop": CROP, "classes": list(REFINED_CLASSES)}
+
+
+def load_refiner(path):
+    state = torch.load(path, map_location="cpu")
+    if state.get("crop") != CROP:
+        raise data.DataError(f"{path}: a refiner of {state.get('crop')} px crops, this tool trains {CROP} px ones")
+    refiner = BoxRefiner()
+    refiner.load_state_dict(state["weights"])
+    return refiner.eval()
