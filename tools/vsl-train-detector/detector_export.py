@@ -34,7 +34,8 @@ def export_onnx(net, path, height, width):
 
 
 def export_refiner_onnx(refiner, path, crop):
-    """The handle refiner: input "crops" N x 3 x crop x crop (any N), output "sides" N x 4."""
+    """The box refiner: input "crops" N x 3 x crop x crop (any N), output "sides" N x 5 (four
+    sides and a logit)."""
     refiner = refiner.eval()
     buffer = io.BytesIO()
     with torch.no_grad():

@@ -22,7 +22,7 @@ def write_description(path, args, figures, command, refined, counts, seconds, da
     ]
     if refined:
         lines += [
-            "  # A second network measures these classes' boxes again from crops of the image",
+            "  # A second network measures and scores these classes' boxes again from crops of the image",
             "  # (tools/vsl-train-detector/detector_refiner.py).",
             "  refiner:",
             "    model: box_refiner.onnx",
@@ -30,6 +30,7 @@ def write_description(path, args, figures, command, refined, counts, seconds, da
             f"    crop_px: {detector_refiner.CROP}",
             f"    context: {detector_refiner.CONTEXT}",
             f"    min_side_px: {detector_refiner.MIN_SIDE_PX:g}",
+            f"    max_boxes: {detector_refiner.MAX_BOXES}",
         ]
     lines += [
         "provenance:",

@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "vsl/config/node.hpp"
@@ -52,9 +53,15 @@ BoxRefiner::BoxRefiner(const BoxRefinerOptions& options) : options_(options) {
     throw config::Error(options_.model_path + ": the refiner does not run on a " +
                         std::to_string(options_.crop_px) + " px crop (" + e.err + ")");
   }
-  if (sides.total() != 4) {
-    throw config::Error(options_.model_path + ": the refiner's output is not 4 box sides");
+  if (sides.total() != 5) {
+    throw config::Error(options_.model_path +
+                        ": the refiner's output is not 4 box sides and a logit");
   }
+}
+
+bool BoxRefiner::refines(const std::string& type) const {
+  return std::find(options_.classes.begin(), options_.classes.end(), type) !=
+         options_.classes.end();
 }
 
 void BoxRefiner::refine(const cv::Mat& bgr, std::vector<BoxDetection>& boxes) {
@@ -62,10 +69,7 @@ void BoxRefiner::refine(const cv::Mat& bgr, std::vector<BoxDetection>& boxes) {
   std::vector<RefinerWindow> windows;
   std::vector<cv::Mat> crops;
   for (std::size_t k = 0; k < boxes.size(); ++k) {
-    if (std::find(options_.classes.begin(), options_.classes.end(), boxes[k].type) ==
-        options_.classes.end()) {
-      continue;
-    }
+    if (!refines(boxes[k].type)) continue;
     chosen.push_back(k);
     windows.push_back(refiner_window(boxes[k], options_));
     crops.push_back(refiner_crop(bgr, windows.back(), options_.crop_px));
@@ -85,6 +89,8 @@ void BoxRefiner::refine(const cv::Mat& bgr, std::vector<BoxDetection>& boxes) {
     box.max_px = Eigen::Vector2d(w.x + t[2] * w.width, w.y + t[3] * w.height)
                      .cwiseMax(box.min_px)
                      .cwiseMin(image_size);
+    const double probability = 1.0 / (1.0 + std::exp(-static_cast<double>(t[4])));
+    box.confidence = static_cast<float>(std::sqrt(box.confidence * probability));
   }
 }
 

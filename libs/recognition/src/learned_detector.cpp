@@ -25,7 +25,7 @@ namespace {
 
 BoxRefinerOptions box_refiner_options_from(const config::Node& section,
                                            const std::vector<std::string>& detector_classes) {
-  section.expect_keys({"model", "classes", "crop_px", "context", "min_side_px"});
+  section.expect_keys({"model", "classes", "crop_px", "context", "min_side_px", "max_boxes"});
   BoxRefinerOptions options;
   options.model_path = config::path_relative_to_file(section.at("model"));
   const config::Node classes = section.at("classes");
@@ -45,6 +45,9 @@ BoxRefinerOptions box_refiner_options_from(const config::Node& section,
   }
   options.context = section.at("context").as_double_in(1.0, 8.0);
   options.min_side_px = section.at("min_side_px").as_double_in(1.0, 256.0);
+  const config::Node max_boxes = section.at("max_boxes");
+  options.max_boxes = static_cast<int>(max_boxes.as_int());
+  if (options.max_boxes < 1 || options.max_boxes > 1000) max_boxes.fail("must be in [1, 1000]");
   return options;
 }
 
@@ -223,7 +226,12 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
         std::clamp(min_confidence >= 0.0 ? min_confidence
                                          : options_.min_confidence[static_cast<std::size_t>(c)],
                    1e-6, 1.0 - 1e-6);
-    const float min_logit = static_cast<float>(std::log(p / (1.0 - p)));
+    // A refined class's confidence becomes sqrt(c q) <= sqrt(c) (box_refiner.hpp): its
+    // candidates need a centre-ness c of at least p^2.
+    const bool refined = network_->refiner &&
+                         network_->refiner->refines(options_.classes[static_cast<std::size_t>(c)]);
+    const double min_centre = refined ? p * p : p;
+    const float min_logit = static_cast<float>(std::log(min_centre / (1.0 - min_centre)));
     const float* logits = map(c);
     const int group = box_per_class ? c : 0;
     std::vector<BoxDetection> found;
@@ -261,13 +269,22 @@ std::vector<BoxDetection> LearnedDetector::detect(const cv::Mat& bgr, double min
     if (found.size() > static_cast<std::size_t>(options_.max_detections_per_class)) {
       found.resize(static_cast<std::size_t>(options_.max_detections_per_class));
     }
+    if (refined) {
+      // The refiner's budget: the strongest max_boxes candidates (suppress_overlaps sorted them).
+      if (found.size() > static_cast<std::size_t>(options_.refiner->max_boxes)) {
+        found.resize(static_cast<std::size_t>(options_.refiner->max_boxes));
+      }
+      {
+        const std::lock_guard lock(network_->mutex);
+        network_->refiner->refine(bgr, found);
+      }
+      std::erase_if(found, [p](const BoxDetection& b) {
+        return b.confidence < p || b.width_px() <= 0.0 || b.height_px() <= 0.0;
+      });
+      std::stable_sort(found.begin(), found.end(),
+                       [](const auto& a, const auto& b) { return a.confidence > b.confidence; });
+    }
     all.insert(all.end(), found.begin(), found.end());
-  }
-  if (network_->refiner) {
-    const std::lock_guard lock(network_->mutex);
-    network_->refiner->refine(bgr, all);
-    std::erase_if(
-        all, [](const BoxDetection& b) { return b.width_px() <= 0.0 || b.height_px() <= 0.0; });
   }
   return all;
 }

@@ -75,6 +75,53 @@ TEST(LearnedDetectorFile, RejectsBadValuesWithOneLine) {
       << error_of(three);
 }
 
+const char* kGoodWithRefiner = R"(detector:
+  model: door_handle.onnx
+  input_width: 384
+  input_height: 288
+  stride: 4
+  classes: [door, handle]
+  min_confidence: {door: 0.3, handle: 0.3}
+  refiner:
+    model: box_refiner.onnx
+    classes: [handle]
+    crop_px: 32
+    context: 2.0
+    min_side_px: 16
+    max_boxes: 32
+)";
+
+TEST(LearnedDetectorFile, ReadsTheRefinerAndRejectsItsBadValuesWithOneLine) {
+  const LearnedDetectorOptions shipped = read_learned_detector_file(kShipped);
+  ASSERT_TRUE(shipped.refiner.has_value());
+  EXPECT_EQ(shipped.refiner->classes, std::vector<std::string>{"handle"});
+  EXPECT_TRUE(std::filesystem::exists(shipped.refiner->model_path)) << shipped.refiner->model_path;
+  const std::string good = kGoodWithRefiner;
+  EXPECT_EQ(error_of(good), "");
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    return error_of(text);
+  };
+  EXPECT_EQ(with("classes: [handle]", "classes: [window]"),
+            "config/recognition/detector/d.yaml:10: detector.refiner.classes[0]: not one of the "
+            "detector's classes");
+  EXPECT_EQ(with("crop_px: 32", "crop_px: 30"),
+            "config/recognition/detector/d.yaml:11: detector.refiner.crop_px: must be a multiple "
+            "of 8 in [16, 256]");
+  EXPECT_EQ(with("max_boxes: 32", "max_boxes: 0"),
+            "config/recognition/detector/d.yaml:14: detector.refiner.max_boxes: must be in "
+            "[1, 1000]");
+  EXPECT_NE(with("    context: 2.0\n", "").find("detector.refiner.context: missing required key"),
+            std::string::npos)
+      << with("    context: 2.0\n", "");
+  // A network whose output is not 4 sides and a logit: the detector itself.
+  EXPECT_NE(with("model: box_refiner.onnx", "model: door_handle.onnx")
+                .find("door_handle.onnx: the refiner's output is not 4 box sides and a logit"),
+            std::string::npos)
+      << with("model: box_refiner.onnx", "model: door_handle.onnx");
+}
+
 TEST(LearnedDetector, RefusesImagesThatAreNotBgr) {
   const LearnedDetector detector(read_learned_detector_file(kShipped));
   EXPECT_THROW(detector.detect(cv::Mat(480, 640, CV_8UC1, cv::Scalar(0))), std::invalid_argument);

@@ -12,12 +12,13 @@
 //     stride: 4                     # input pixels per output cell
 //     classes: [door, handle]       # output channels, in order; the world-model types
 //     min_confidence: {door: 0.3, handle: 0.3}
-//     refiner:                      # optional: a second network measuring these classes' boxes
-//       model: box_refiner.onnx     #   again from crops of the image (box_refiner.hpp)
+//     refiner:                      # optional: a second network measuring and scoring these
+//       model: box_refiner.onnx     #   classes' boxes again from crops of the image
 //       classes: [handle]
 //       crop_px: 32                 #   the crop's side, pixels (a multiple of 8)
 //       context: 2.0                #   the crop window's side / the box's, per axis
 //       min_side_px: 16             #   the window's smallest side, image pixels
+//       max_boxes: 8                #   per image and class the strongest so many, others dropped
 //   provenance: {...}               # free: how the model was made (data, seed, command, figures)
 //
 // Errors in the file are config::Error, one line "file:line: key: what".
@@ -45,6 +46,7 @@ struct BoxRefinerOptions {
   int crop_px = 32;
   double context = 2.0;
   double min_side_px = 16.0;
+  int max_boxes = 8;  // per image and class: the candidates of highest centre-ness; the rest dropped
 };
 
 struct LearnedDetectorOptions {
@@ -67,7 +69,9 @@ LearnedDetectorOptions read_learned_detector_file(const std::string& path);
 struct BoxDetection {
   std::string type;  // world-model type: the class's name
   int class_index = 0;
-  float confidence = 0.0f;  // 0 .. 1, the network's centre-ness at the box's peak
+  // 0 .. 1: the network's centre-ness c at the box's peak; for a class the refiner looks at again,
+  // sqrt(c p) with p its probability of the object being in the box
+  float confidence = 0.0f;
   Eigen::Vector2d min_px = Eigen::Vector2d::Zero();
   Eigen::Vector2d max_px = Eigen::Vector2d::Zero();
 
@@ -91,7 +95,7 @@ class LearnedDetector {
 
   // The objects in one image (CV_8UC3 BGR, any size; throws std::invalid_argument otherwise)
   // whose confidence reaches their class's min_confidence, strongest first within a class; with a
-  // refiner, its classes' boxes measured again.
+  // refiner, its classes' boxes measured and scored again.
   // Thread-safe: calls are serialized (the network keeps its buffers between calls).
   std::vector<BoxDetection> detect(const cv::Mat& bgr) const;
   // The same with one threshold for every class (evaluation sweeps the whole curve).
