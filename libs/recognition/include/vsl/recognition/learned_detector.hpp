@@ -18,7 +18,7 @@
 //       crop_px: 32                 #   the crop's side, pixels (a multiple of 8)
 //       context: 2.0                #   the crop window's side / the box's, per axis
 //       min_side_px: 16             #   the window's smallest side, image pixels
-//       max_boxes: 8                #   per image and class the strongest so many, others dropped
+//       max_boxes: 32               #   per image and class the strongest so many, others dropped
 //   provenance: {...}               # free: how the model was made (data, seed, command, figures)
 //
 // Errors in the file are config::Error, one line "file:line: key: what".
@@ -46,7 +46,7 @@ struct BoxRefinerOptions {
   int crop_px = 32;
   double context = 2.0;
   double min_side_px = 16.0;
-  int max_boxes = 8;  // per image and class: the candidates of highest centre-ness; the rest dropped
+  int max_boxes = 32;  // per image and class: those of highest centre-ness; the rest dropped
 };
 
 struct LearnedDetectorOptions {
