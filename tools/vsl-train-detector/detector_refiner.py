@@ -25,11 +25,11 @@ own boxes on it (IoU >= 0.2) and around boxes jittered from the label (centre by
 each side's length by a log-normal factor of sigma 0.3: the detector's errors measured on the
 photographs); and as many of the detector's boxes that are on no handle (IoU < 0.1, confidence
 >= 0.05). The loss is 1 - GIoU of the refined box plus a smooth L1 on the four fractions on the
-handles, and half the binary cross-entropy of the logit on all. Rendered images make up the
-detector's --sim-fraction of each batch: with nine renders' handles to each photograph's, the
-refiner learned the renders' exact silhouettes and moved the photographs' boxes away from their
-labels; with too few, it scores the renders' handles low (per frame in the rendered kitchens,
-handle recall fell by up to 19 points with a fifth).
+handles, and half the binary cross-entropy of the logit on all. Rendered images make up
+--refiner-sim-fraction (a fifth) of each batch: with nine renders' handles to each photograph's,
+the refiner learned the renders' exact silhouettes and moved the photographs' boxes away from
+their labels; with two fifths, the photographs' handle precision at recall 0.3 fell from 0.57 to
+0.49; with a fifth it scores many rendered handles low (docs/learned-detector.md).
 """
 import math
 import random
