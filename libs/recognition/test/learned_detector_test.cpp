@@ -30,6 +30,12 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
+// `text` with its first `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
 const char* kGood = R"(detector:
   model: door_handle.onnx
   input_width: 384
@@ -49,9 +55,7 @@ TEST(LearnedDetectorFile, LoadsTheShippedDescription) {
 
 TEST(LearnedDetectorFile, RejectsBadValuesWithOneLine) {
   auto with = [](const std::string& from, const std::string& to) {
-    std::string text = kGood;
-    text.replace(text.find(from), from.size(), to);
-    return error_of(text);
+    return error_of(replaced(kGood, from, to));
   };
   EXPECT_EQ(with("input_width: 384", "input_width: 380"),
             "config/recognition/detector/d.yaml:3: detector.input_width: must be a multiple of 32 "
@@ -99,9 +103,7 @@ TEST(LearnedDetectorFile, ReadsTheRefinerAndRejectsItsBadValuesWithOneLine) {
   const std::string good = kGoodWithRefiner;
   EXPECT_EQ(error_of(good), "");
   auto with = [&](const std::string& from, const std::string& to) {
-    std::string text = good;
-    text.replace(text.find(from), from.size(), to);
-    return error_of(text);
+    return error_of(replaced(good, from, to));
   };
   EXPECT_EQ(with("classes: [handle]", "classes: [window]"),
             "config/recognition/detector/d.yaml:10: detector.refiner.classes[0]: not one of the "
