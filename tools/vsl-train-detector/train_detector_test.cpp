@@ -88,7 +88,8 @@ std::vector<double> curve_numbers(const std::string& json) {
 
 // A network grown from a smaller one (wider and deeper stride-16 and stride-32 stages, a box per
 // class where the smaller one shares one box) computes what the smaller one does until it is
-// trained: the same detections with the same confidences, in C++.
+// trained: the same detections with the same confidences, in C++. Narrowed back, it is the
+// smaller one again.
 TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
   const fs::path dir = scratch("grow");
   const auto dataset =
@@ -114,8 +115,19 @@ TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
             std::string::npos);
   EXPECT_GT(fs::file_size(dir / "grown" / "door_handle.onnx"),
             fs::file_size(dir / "small" / "door_handle.onnx"));
+  // Narrowed back to the small network's channels (its blocks kept), the grown one drops the
+  // channels it added, which nothing reads yet (detector_prune.py), and detects as the small one.
+  const auto narrowed = run_command(
+      {VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(), "--init",
+       (dir / "grown" / "door_handle.pt").string(), "--deep", "128,192", "--iterations", "0",
+       "--threads", "1", "--out", (dir / "narrowed").string(), "-q"},
+      600.0);
+  ASSERT_EQ(narrowed.exit_code, 0) << narrowed.err;
+  EXPECT_NE(read(dir / "narrowed" / "door_handle.yaml")
+                .find("architecture: {deep: [128, 192], deep_blocks: [4, 3], box_per_class: true}"),
+            std::string::npos);
   std::vector<std::vector<double>> curves;
-  for (const char* model : {"small", "grown"}) {
+  for (const char* model : {"small", "grown", "narrowed"}) {
     const auto evaluated =
         run_command({VSL_EVAL_RECOGNITION_BIN, "--images", (dir / "data" / "images").string(),
                      "--yolo-labels", (dir / "data" / "labels").string(), "--detector",
@@ -125,20 +137,19 @@ TEST(VslTrainDetector, GrowsTheNetworkKeepingWhatItDetects) {
     curves.push_back(curve_numbers(evaluated.out));
   }
   ASSERT_GT(curves[0].size(), 30u);  // detections to compare: at least ten
-  ASSERT_EQ(curves[1].size(), curves[0].size());
-  for (std::size_t i = 0; i < curves[0].size(); ++i) {
-    ASSERT_NEAR(curves[1][i], curves[0][i], 1e-4) << "number " << i;
+  for (std::size_t model = 1; model < curves.size(); ++model) {
+    ASSERT_EQ(curves[model].size(), curves[0].size()) << "model " << model;
+    for (std::size_t i = 0; i < curves[0].size(); ++i) {
+      ASSERT_NEAR(curves[model][i], curves[0][i], 1e-4) << "model " << model << ", number " << i;
+    }
   }
-  // Shrinking is not growing: fewer channels or fewer blocks are one line, exit code 2.
+  // Fewer blocks than the weights' are one line, exit code 2.
   const auto shrink = [&](const std::string& option, const std::string& value) {
     return run_command({VSL_TRAIN_DETECTOR, "--labels", (dir / "data" / "labels.yaml").string(),
                         "--init", (dir / "grown" / "door_handle.pt").string(), option, value,
                         "--iterations", "0", "--out", (dir / "shrunk").string()},
                        600.0);
   };
-  const auto narrower = shrink("--deep", "128,192");
-  EXPECT_EQ(narrower.exit_code, 2);
-  EXPECT_NE(narrower.err.find("cannot grow into"), std::string::npos) << narrower.err;
   const auto fewer = shrink("--deep-blocks", "3,2");
   EXPECT_EQ(fewer.exit_code, 2);
   EXPECT_NE(fewer.err.find("not in the network"), std::string::npos) << fewer.err;
