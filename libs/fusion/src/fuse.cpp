@@ -19,16 +19,76 @@ struct Member {
   const Percept* percept;
 };
 
-// E_i = Sigma_i - B of fuse.hpp, its eigenvalues kept at or above a floor: a recognizer whose
-// covariance is narrower than the shared part in some direction leaves its own part tiny there.
-Eigen::Matrix3d own_part(const Eigen::Matrix3d& covariance_m2, double shared_variance_m2) {
-  if (shared_variance_m2 <= 0.0) return covariance_m2;
+// E_i = Sigma_i - B of fuse.hpp as its eigen-decomposition, so that (E_i + tau2 I)^-1 is
+// axes diag(1 / (variances + tau2)) axes^T for any tau2. Its eigenvalues are kept at or above a
+// floor: a recognizer whose covariance is narrower than the shared part in some direction leaves
+// its own part tiny there.
+struct OwnPart {
+  Eigen::Matrix3d axes;
+  Eigen::Vector3d variances_m2;
+};
+
+OwnPart own_part(const Eigen::Matrix3d& covariance_m2, double shared_variance_m2) {
   constexpr double kMinOwnVarianceM2 = 1e-8;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
   eigen.computeDirect(0.5 * (covariance_m2 + covariance_m2.transpose()));
-  const Eigen::Vector3d own =
-      (eigen.eigenvalues().array() - shared_variance_m2).cwiseMax(kMinOwnVarianceM2);
-  return eigen.eigenvectors() * own.asDiagonal() * eigen.eigenvectors().transpose();
+  return {eigen.eigenvectors(), (eigen.eigenvalues().array() - std::max(0.0, shared_variance_m2))
+                                    .cwiseMax(kMinOwnVarianceM2)
+                                    .matrix()};
+}
+
+// The members' mean weighted by W_i = (E_i + tau2 I)^-1, its covariance (sum_i W_i)^-1 and the
+// chi-square of the members about it (fuse.hpp).
+struct WeightedMean {
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d covariance_m2 = Eigen::Matrix3d::Zero();
+  double chi2 = 0.0;
+};
+
+WeightedMean weighted_mean(const std::vector<OwnPart>& own,
+                           const std::vector<Eigen::Vector3d>& positions_m, double tau2_m2) {
+  std::vector<Eigen::Matrix3d> weights;
+  weights.reserve(own.size());
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d information_position = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    const Eigen::Vector3d inverse = (own[i].variances_m2.array() + tau2_m2).inverse().matrix();
+    weights.push_back(own[i].axes * inverse.asDiagonal() * own[i].axes.transpose());
+    information += weights.back();
+    information_position += weights.back() * positions_m[i];
+  }
+  WeightedMean out;
+  out.covariance_m2 = information.llt().solve(Eigen::Matrix3d::Identity());
+  out.position_m = out.covariance_m2 * information_position;
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    const Eigen::Vector3d r = positions_m[i] - out.position_m;
+    out.chi2 += r.dot(weights[i] * r);
+  }
+  return out;
+}
+
+// The Paule-Mandel excess variance of fuse.hpp: tau2 = 0 when chi2(0) <= 3 (n - 1), else the
+// root of chi2(tau2) = 3 (n - 1). chi2 falls monotonically in tau2 (its derivative is
+// -sum r_i^T W_i^2 r_i at the minimizing mean), and at tau2 = S / (3 (n - 1)), S the members'
+// squared distances from their plain mean, it is at most 3 (n - 1) (W_i <= I / tau2): bisection
+// between 0 and that bound.
+WeightedMean random_effects_mean(const std::vector<OwnPart>& own,
+                                 const std::vector<Eigen::Vector3d>& positions_m) {
+  WeightedMean fixed = weighted_mean(own, positions_m, 0.0);
+  const double dof = 3.0 * static_cast<double>(positions_m.size() - 1);
+  if (positions_m.size() < 2 || fixed.chi2 <= dof) return fixed;
+  Eigen::Vector3d plain = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& x : positions_m) plain += x;
+  plain /= static_cast<double>(positions_m.size());
+  double scatter_m2 = 0.0;
+  for (const Eigen::Vector3d& x : positions_m) scatter_m2 += (x - plain).squaredNorm();
+  double low = 0.0, high = scatter_m2 / dof;
+  constexpr int kBisections = 40;  // tau2 to 1e-12 of its bound
+  for (int k = 0; k < kBisections; ++k) {
+    const double middle = 0.5 * (low + high);
+    (weighted_mean(own, positions_m, middle).chi2 > dof ? low : high) = middle;
+  }
+  return weighted_mean(own, positions_m, high);
 }
 
 // The fused percept of one cluster (formula in fuse.hpp).
@@ -42,31 +102,17 @@ FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& me
   for (const Member& m : members)
     shared_sigma_m = std::min(shared_sigma_m, m.percept->shared_sigma_m);
   const double shared_variance_m2 = shared_sigma_m * shared_sigma_m;
-  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d information_position = Eigen::Vector3d::Zero();
-  std::vector<Eigen::Matrix3d> inverses;
-  inverses.reserve(members.size());
+  std::vector<OwnPart> own;
+  std::vector<Eigen::Vector3d> positions_m;
   std::set<std::size_t> supporting;
   for (const Member& m : members) {
-    const Eigen::Matrix3d inverse = own_part(m.percept->ego_covariance_m2, shared_variance_m2)
-                                        .llt()
-                                        .solve(Eigen::Matrix3d::Identity());
-    inverses.push_back(inverse);
-    information += inverse;
-    information_position += inverse * m.percept->ego_position_m;
+    own.push_back(own_part(m.percept->ego_covariance_m2, shared_variance_m2));
+    positions_m.push_back(m.percept->ego_position_m);
     supporting.insert(m.frame);
   }
-  Eigen::Matrix3d covariance = information.llt().solve(Eigen::Matrix3d::Identity());
-  out.ego_position_m = covariance * information_position;
-  if (members.size() > 1) {
-    double chi2 = 0.0;
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      const Eigen::Vector3d r = members[i].percept->ego_position_m - out.ego_position_m;
-      chi2 += r.dot(inverses[i] * r);
-    }
-    const double reduced = chi2 / (3.0 * static_cast<double>(members.size() - 1));
-    covariance *= std::max(1.0, reduced);
-  }
+  const WeightedMean mean = random_effects_mean(own, positions_m);
+  out.ego_position_m = mean.position_m;
+  Eigen::Matrix3d covariance = mean.covariance_m2;
   covariance += shared_variance_m2 * Eigen::Matrix3d::Identity();
   out.ego_covariance_m2 = 0.5 * (covariance + covariance.transpose());
   // C: frames, not percepts, so that C <= T_s (a frame sees an object once).

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <limits>
 
@@ -144,7 +146,8 @@ TEST(Fuse, RarelySeenModeFailsEq4AndIsReported) {
 }
 
 // The fused location weighs each percept by its information; the covariance is the combined
-// one, scaled up by the reduced chi-square when the percepts disagree.
+// one. Percepts that disagree by more than their covariances allow get an excess variance tau^2
+// each, in every direction, as large as makes the chi-square its expectation (fuse.hpp).
 TEST(Fuse, InformationWeightedMeanAndCovariance) {
   const Eigen::Vector3d camera(0.05, 0.045, 1.5);
   const Eigen::Vector3d at(2.0, 0.0, 1.0);
@@ -159,19 +162,63 @@ TEST(Fuse, InformationWeightedMeanAndCovariance) {
   const FusedPercept& fused = result.fused[0];
   EXPECT_NEAR(fused.ego_position_m.x(), 2.0 + 0.02 * 1.0 / 5.0, 1e-9);
   // Combined variance 1 / (1/1e-4 + 1/4e-4) = 8e-5; chi2 = (0.004^2/1e-4 + 0.016^2/4e-4) = 0.8,
-  // reduced 0.8 / 3 < 1: no scaling.
+  // within its expectation 3 (n - 1) = 3: no excess.
   EXPECT_NEAR(fused.ego_covariance_m2(0, 0), 8e-5, 1e-12);
   EXPECT_NEAR(fused.ego_covariance_m2(1, 1), 8e-5, 1e-12);
   EXPECT_NEAR(fused.ego_covariance_m2(0, 1), 0.0, 1e-15);
   EXPECT_EQ(fused.num_percepts, 2);
-  // Disagreeing by 10 cm (still one mode with a wide bandwidth): scaled by chi2 / 3.
+  // Disagreeing by d = 10 cm along x (still one mode with a wide bandwidth). For two percepts the
+  // chi-square about their weighted mean is d^2 / (v1 + v2), here with v_i = sigma_i^2 + tau^2:
+  // d^2 / (5e-4 + 2 tau^2) = 3 gives tau^2; the x variance is v1 v2 / (v1 + v2), the mean
+  // weighs them v2 : v1. Across x they agree: no excess there would be needed, but it is one
+  // tau^2 for every direction.
   frames[1].percepts[0].ego_position_m = at + Eigen::Vector3d(0.1, 0, 0);
   FusionOptions wide = options;
   wide.bandwidth_m = 0.2;
   const FusionResult scattered = fuse(frames, FieldOfView(head::CameraIntrinsics{}, wide), wide);
   ASSERT_EQ(scattered.fused.size(), 1u);
-  const double chi2 = 0.02 * 0.02 / 1e-4 + 0.08 * 0.08 / 4e-4;
-  EXPECT_NEAR(scattered.fused[0].ego_covariance_m2(0, 0), 8e-5 * chi2 / 3.0, 1e-10);
+  const double tau2 = (0.1 * 0.1 / 3.0 - 5e-4) / 2.0;
+  const double v1 = 1e-4 + tau2, v2 = 4e-4 + tau2;
+  EXPECT_NEAR(scattered.fused[0].ego_covariance_m2(0, 0), v1 * v2 / (v1 + v2), 1e-10);
+  EXPECT_NEAR(scattered.fused[0].ego_covariance_m2(1, 1), v1 * v2 / (v1 + v2), 1e-10);
+  EXPECT_NEAR(scattered.fused[0].ego_position_m.x(), 2.0 + 0.1 * v1 / (v1 + v2), 1e-9);
+}
+
+// A recognizer whose noise model puts all of a door's error across the ray into the shared part
+// (the learned one: door reference_px 0) leaves each percept an own part along its ray alone.
+// Frames from head stops a few centimetres apart see the door along slightly different rays, and
+// their percepts scatter across them by the box's jitter: taken at their word, the rays'
+// near-parallel constraints would meet metres from the door. The excess variance keeps the
+// fused door where the percepts are.
+TEST(Fuse, PerceptsKnownOnlyAlongTheirRaysStayWhereTheyWereSeen) {
+  const Eigen::Vector3d door(3.7, 0.0, 0.5);
+  const double shared_sigma_m = 0.022, along_sigma_m = 0.05;
+  std::vector<Frame> frames(6);
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const double k = static_cast<double>(f);
+    const Eigen::Vector3d camera(0.05 + 0.01 * k, -0.06 + 0.025 * k, 1.48 + 0.004 * k);
+    frames[f].ego_T_left_camera = look_at(camera, door);
+    const Eigen::Vector3d ray = (door - camera).normalized();
+    // 1 cm of jitter across the ray, alternating sides, and a little along it.
+    const Eigen::Vector3d across = ray.cross(Eigen::Vector3d::UnitZ()).normalized();
+    const double side = f % 2 == 0 ? 1.0 : -1.0;
+    const Eigen::Vector3d seen = door + 0.01 * side * across +
+                                 0.005 * side * Eigen::Vector3d::UnitZ() +
+                                 0.02 * (k - 2.5) / 2.5 * ray;
+    Percept p{"door", seen,
+              shared_sigma_m * shared_sigma_m * Eigen::Matrix3d::Identity() +
+                  along_sigma_m * along_sigma_m * ray * ray.transpose()};
+    p.shared_sigma_m = shared_sigma_m;
+    frames[f].percepts = {p};
+  }
+  FusionOptions options;
+  options.iota_frames = 4;
+  const FusionResult result = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  ASSERT_EQ(result.fused.size(), 1u);
+  EXPECT_LT((result.fused[0].ego_position_m - door).norm(), 0.02);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(result.fused[0].ego_covariance_m2);
+  EXPECT_LT(std::sqrt(eigen.eigenvalues().maxCoeff()), 0.05);
+  EXPECT_GE(std::sqrt(eigen.eigenvalues().minCoeff()), shared_sigma_m);
 }
 
 // Four frames of one door, each percept 2 cm per axis of which 1.5 cm is shared by the scan:

@@ -8,15 +8,19 @@
 // e_i of its own:
 //   x_i = x_true + b + e_i,   Sigma_i = B + E_i,   E_i = Sigma_i - B
 // (E_i's eigenvalues kept at or above 1e-8 m^2).
-// The best linear estimate of x_true + b weighs the percepts by E_i^-1; b stays in it:
-//   Sigma_e = (sum_i E_i^-1)^-1,   x = Sigma_e sum_i E_i^-1 x_i,   Sigma = Sigma_e + B,
-// Sigma_e scaled first by the reduced chi-square when the percepts scatter more than their own
-// parts say (b cancels in x_i - x):
-//   chi2 = sum_i (x_i - x)^T E_i^-1 (x_i - x),  Sigma_e *= max(1, chi2 / (3 (n - 1)))  (n > 1).
-// The percepts of consecutive frames are not independent (one calibration, one ego-mapping), so
-// the unscaled information sum would be overconfident whenever they disagree; the scale keeps the
-// covariance at least as large as the scatter of the mean. With B = 0 this is the
-// information-weighted mean of the Sigma_i.
+// The percepts of consecutive frames may scatter more than their own parts say (they share one
+// calibration and one ego-mapping; a noise model that gives a door's whole error across the ray
+// to b leaves E_i an error along the ray alone, while the box still jitters across it). That
+// excess is an error u_i of every percept's own, isotropic, of variance tau^2 estimated from the
+// mode's scatter (the Paule-Mandel estimator of random-effects meta-analysis):
+//   W_i = (E_i + tau^2 I)^-1,   Sigma_e = (sum_i W_i)^-1,   x = Sigma_e sum_i W_i x_i,
+//   chi2(tau^2) = sum_i (x_i - x)^T W_i (x_i - x)   (b cancels in x_i - x),
+//   tau^2 = 0 when chi2(0) <= 3 (n - 1), else the root of chi2(tau^2) = 3 (n - 1),
+//   Sigma = Sigma_e + B.
+// Without the excess, a door's percepts seen along rays a few centimetres apart would be
+// intersected as exact lines across them and meet metres along the ray; with it, the mean stays
+// among the percepts and the covariance covers their scatter. With B = 0 and consistent percepts
+// this is the information-weighted mean of the Sigma_i.
 #pragma once
 
 #include <cstddef>
