@@ -52,6 +52,27 @@ std::string shared_sigma_problem(double sigma_m, double smallest_m2) {
   return "";
 }
 
+// Why `ray_sigma_m` cannot be the shared part along the ray `ray` (from the frame's left camera to
+// the percept) of `covariance` beside the isotropic `sigma_m`, or "": both variances are part of
+// the covariance's along the ray, so their sum is at most that (to rounding).
+std::string shared_ray_sigma_problem(double ray_sigma_m, double sigma_m,
+                                     const Eigen::Matrix3d& covariance_m2,
+                                     const Eigen::Vector3d& ray) {
+  if (!std::isfinite(ray_sigma_m) || ray_sigma_m < 0.0 || ray_sigma_m > kMaxSharedSigma_m) {
+    return "shared_ray_sigma_m " + std::to_string(ray_sigma_m) + " is not in [0, 1] m";
+  }
+  if (ray_sigma_m == 0.0) return "";
+  if (ray.norm() == 0.0) return "shared_ray_sigma_m without a ray: the percept is at the camera";
+  const Eigen::Vector3d r = ray.normalized();
+  const double along_m2 = r.dot(covariance_m2 * r);
+  if (ray_sigma_m * ray_sigma_m + sigma_m * sigma_m > along_m2 * (1.0 + 1e-6)) {
+    return "shared_ray_sigma_m " + std::to_string(ray_sigma_m) +
+           " with shared_sigma_m exceeds the covariance's sigma along the ray " +
+           std::to_string(std::sqrt(along_m2));
+  }
+  return "";
+}
+
 }  // namespace
 
 std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& list) {
@@ -105,10 +126,17 @@ std::variant<fusion::Frame, std::string> frame_from(const vsl::percept_list_t& l
     fusion::Percept percept;
     percept.type = p.type;
     percept.shared_sigma_m = p.shared_sigma_m;
+    percept.shared_ray_sigma_m = p.shared_ray_sigma_m;
     percept.ego_position_m =
         Eigen::Vector3d(p.ego_position_m[0], p.ego_position_m[1], p.ego_position_m[2]);
     percept.ego_covariance_m2 =
         Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.ego_covariance_m2);
+    if (const std::string problem = shared_ray_sigma_problem(
+            p.shared_ray_sigma_m, p.shared_sigma_m, percept.ego_covariance_m2,
+            percept.ego_position_m - frame.ego_T_left_camera.translation());
+        !problem.empty()) {
+      return which + problem;
+    }
     frame.percepts.push_back(std::move(percept));
   }
   return frame;

@@ -44,6 +44,7 @@ vsl::percept_list_t percept_list_message(const recognition::FrameResult& result,
       p.right_pixel_uv[i] = percept.right_px(i);
     }
     p.shared_sigma_m = percept.shared_sigma_m;
+    p.shared_ray_sigma_m = percept.shared_ray_sigma_m;
     p.confidence = percept.confidence;
   }
   // The generated encoder trusts the count (docs/messages.md).

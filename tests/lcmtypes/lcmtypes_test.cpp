@@ -110,6 +110,7 @@ vsl::percept_t SamplePercept(int i) {
   Fill(p.ego_position_m, 1.5 + i, -0.75);
   Fill(p.ego_covariance_m2, 1e-4, 2.5e-5);
   p.shared_sigma_m = 0.0125;
+  p.shared_ray_sigma_m = 0.0375;
   Fill(p.ego_camera_position_m, 0.05, 0.1);
   p.left_pixel_uv[0] = 320.25 + i;
   p.left_pixel_uv[1] = 240.5;
@@ -362,6 +363,7 @@ void ExpectEq(const vsl::percept_t& a, const vsl::percept_t& b) {
   EXPECT_ARRAY(ego_position_m);
   EXPECT_ARRAY(ego_covariance_m2);
   EXPECT_FIELD(shared_sigma_m);
+  EXPECT_FIELD(shared_ray_sigma_m);
   EXPECT_ARRAY(ego_camera_position_m);
   EXPECT_ARRAY(left_pixel_uv);
   EXPECT_ARRAY(right_pixel_uv);

@@ -21,20 +21,32 @@ struct Member {
 
 // E_i = Sigma_i - B of fuse.hpp as its eigen-decomposition, so that (E_i + tau2 I)^-1 is
 // axes diag(1 / (variances + tau2)) axes^T for any tau2. Its eigenvalues are kept at or above a
-// floor: a recognizer whose covariance is narrower than the shared part in some direction leaves
+// floor: a recognizer whose covariance is no wider than the shared part in some direction leaves
 // its own part tiny there.
 struct OwnPart {
   Eigen::Matrix3d axes;
   Eigen::Vector3d variances_m2;
 };
 
-OwnPart own_part(const Eigen::Matrix3d& covariance_m2, double shared_variance_m2) {
+OwnPart own_part(const Eigen::Matrix3d& covariance_m2, const Eigen::Matrix3d& shared_m2) {
   constexpr double kMinOwnVarianceM2 = 1e-8;
+  const Eigen::Matrix3d own = covariance_m2 - shared_m2;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(0.5 * (covariance_m2 + covariance_m2.transpose()));
-  return {eigen.eigenvectors(), (eigen.eigenvalues().array() - std::max(0.0, shared_variance_m2))
-                                    .cwiseMax(kMinOwnVarianceM2)
-                                    .matrix()};
+  eigen.computeDirect(0.5 * (own + own.transpose()));
+  return {eigen.eigenvectors(), eigen.eigenvalues().cwiseMax(kMinOwnVarianceM2)};
+}
+
+// B_i of fuse.hpp: s^2 I + s_ray^2 r r^T, r the unit ray from the frame's left camera to the
+// percept.
+Eigen::Matrix3d shared_part(const Percept& percept, const Eigen::Vector3d& ego_camera_m) {
+  Eigen::Matrix3d shared =
+      percept.shared_sigma_m * percept.shared_sigma_m * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d ray = percept.ego_position_m - ego_camera_m;
+  if (percept.shared_ray_sigma_m > 0.0 && ray.norm() > 0.0) {
+    const Eigen::Vector3d r = ray.normalized();
+    shared += percept.shared_ray_sigma_m * percept.shared_ray_sigma_m * r * r.transpose();
+  }
+  return shared;
 }
 
 // The members' mean weighted by W_i = (E_i + tau2 I)^-1, its covariance (sum_i W_i)^-1 and the
@@ -97,23 +109,25 @@ FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& me
   FusedPercept out;
   out.type = type;
   out.num_percepts = static_cast<int>(members.size());
-  // B: the part every member shares is at most the smallest any of them claims.
-  double shared_sigma_m = members.front().percept->shared_sigma_m;
-  for (const Member& m : members)
-    shared_sigma_m = std::min(shared_sigma_m, m.percept->shared_sigma_m);
-  const double shared_variance_m2 = shared_sigma_m * shared_sigma_m;
+  // B: the part every member shares is at most the smallest any of them claims (least trace).
+  Eigen::Matrix3d shared_m2 = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const Eigen::Matrix3d b =
+        shared_part(*members[i].percept, frames[members[i].frame].ego_T_left_camera.translation());
+    if (i == 0 || b.trace() < shared_m2.trace()) shared_m2 = b;
+  }
   std::vector<OwnPart> own;
   std::vector<Eigen::Vector3d> positions_m;
   std::set<std::size_t> supporting;
   for (const Member& m : members) {
-    own.push_back(own_part(m.percept->ego_covariance_m2, shared_variance_m2));
+    own.push_back(own_part(m.percept->ego_covariance_m2, shared_m2));
     positions_m.push_back(m.percept->ego_position_m);
     supporting.insert(m.frame);
   }
   const WeightedMean mean = random_effects_mean(own, positions_m);
   out.ego_position_m = mean.position_m;
   Eigen::Matrix3d covariance = mean.covariance_m2;
-  covariance += shared_variance_m2 * Eigen::Matrix3d::Identity();
+  covariance += shared_m2;
   out.ego_covariance_m2 = 0.5 * (covariance + covariance.transpose());
   // C: frames, not percepts, so that C <= T_s (a frame sees an object once).
   out.support = static_cast<int>(supporting.size());

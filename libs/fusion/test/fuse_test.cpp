@@ -264,6 +264,37 @@ TEST(Fuse, SharedErrorIsNotAveragedDown) {
   EXPECT_NEAR(independent.fused[0].ego_covariance_m2(0, 0), 4e-4 / 4.0, 1e-12);
 }
 
+// Four frames of one handle from one camera, each percept 1 cm per axis own plus a shared
+// part: 1 cm in every direction and 4 cm along the ray (a disparity bias every frame of the scan
+// shares). The fused covariance keeps the whole shared part, the own one shrinks by the frames:
+// along the ray 1e-4 / 4 + 1e-4 + 16e-4, across it 1e-4 / 4 + 1e-4.
+TEST(Fuse, SharedPartAlongTheRayIsNotAveragedDown) {
+  const Eigen::Vector3d camera(0.05, 0.045, 1.5);
+  const Eigen::Vector3d at(3.0, 0.8, 0.9);
+  const Eigen::Vector3d ray = (at - camera).normalized();
+  std::vector<Frame> frames(4);
+  for (Frame& frame : frames) {
+    frame.ego_T_left_camera = look_at(camera, at);
+    Percept p{"handle", at,
+              2e-4 * Eigen::Matrix3d::Identity() + 0.04 * 0.04 * ray * ray.transpose()};
+    p.shared_sigma_m = 0.01;
+    p.shared_ray_sigma_m = 0.04;
+    frame.percepts = {p};
+  }
+  const FusionOptions options;
+  const FusionResult result = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  ASSERT_EQ(result.fused.size(), 1u);
+  const Eigen::Matrix3d& c = result.fused[0].ego_covariance_m2;
+  EXPECT_NEAR(ray.dot(c * ray), 1e-4 / 4.0 + 1e-4 + 16e-4, 1e-10);
+  const Eigen::Vector3d across = ray.cross(Eigen::Vector3d::UnitZ()).normalized();
+  EXPECT_NEAR(across.dot(c * across), 1e-4 / 4.0 + 1e-4, 1e-10);
+  // Without the ray part claimed, the 4 cm along the ray are the frames' own and shrink by 4.
+  for (Frame& frame : frames) frame.percepts[0].shared_ray_sigma_m = 0.0;
+  const FusionResult own = fuse(frames, FieldOfView(head::CameraIntrinsics{}, options), options);
+  ASSERT_EQ(own.fused.size(), 1u);
+  EXPECT_NEAR(ray.dot(own.fused[0].ego_covariance_m2 * ray), (1e-4 + 16e-4) / 4.0 + 1e-4, 1e-10);
+}
+
 TEST(Fuse, EmptyScan) {
   const FusionOptions options;
   const FusionResult result = fuse({}, FieldOfView(head::CameraIntrinsics{}, options), options);

@@ -65,16 +65,19 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   number("snap_min_band_px", out.snap_min_band_px, 0.0, 100.0);
   number("min_correlation", out.min_correlation, -1.0, 1.0);
   number("max_template_px", out.max_template_px, 16.0, 1e7);
-  // {type: {reference_px, disparity_px, floor_m}, ...} replacing the defaults.
+  // {type: {reference_px, disparity_px, floor_m, shared_disparity_px}, ...} replacing the
+  // defaults; shared_disparity_px optional (0).
   if (const auto noise = section.find("noise")) {
     noise->expect_map();
     out.noise.clear();
     for (const std::string& type : noise->keys()) {
       const config::Node model = noise->at(type);
-      model.expect_keys({"reference_px", "disparity_px", "floor_m"});
+      model.expect_keys({"reference_px", "disparity_px", "floor_m", "shared_disparity_px"});
+      const auto shared = model.find("shared_disparity_px");
       out.noise.push_back({type, model.at("reference_px").as_double_in(0.0, 100.0),
                            model.at("disparity_px").as_double_in(0.0, 100.0),
-                           model.at("floor_m").as_double_in(0.0, 10.0)});
+                           model.at("floor_m").as_double_in(0.0, 10.0),
+                           shared ? shared->as_double_in(0.0, 100.0) : 0.0});
       const BoxStereoOptions::Noise& n = out.noise.back();
       if (n.reference_px + n.disparity_px <= 0.0 && n.floor_m <= 0.0) {
         model.fail("a noise model of all zeros gives no covariance");

@@ -132,7 +132,9 @@ class PairPlacer {
   }
 
   // A triangulation's covariance from the class's noise model: the pixel pair's through the
-  // triangulation, plus the floor in every direction.
+  // triangulation, plus the floor in every direction, plus the shared disparity's part along the
+  // ray r: its variance there, r^T C_s r with C_s the shared disparity's covariance through the
+  // triangulation (nearly all of C_s lies along the ray), added as sigma^2 r r^T.
   std::optional<detail::Triangulation> triangulate_with_noise(const std::string& type,
                                                               const detail::IdealPixel& left,
                                                               const detail::IdealPixel& right,
@@ -141,8 +143,18 @@ class PairPlacer {
     auto t = triangulator_.triangulate(
         left, right, detail::reference_disparity_covariance(noise.reference_px, noise.disparity_px),
         offset_m);
-    if (t) {
-      t->left_camera_covariance_m2 += noise.floor_m * noise.floor_m * Eigen::Matrix3d::Identity();
+    if (!t) return t;
+    t->left_camera_covariance_m2 += noise.floor_m * noise.floor_m * Eigen::Matrix3d::Identity();
+    if (noise.shared_disparity_px > 0.0) {
+      const auto shared = triangulator_.triangulate(
+          left, right, detail::reference_disparity_covariance(0.0, noise.shared_disparity_px),
+          offset_m);
+      const Eigen::Vector3d r = t->left_camera_position_m.normalized();
+      if (shared) {
+        t->shared_ray_sigma_m = std::sqrt(r.dot(shared->left_camera_covariance_m2 * r));
+        t->left_camera_covariance_m2 +=
+            t->shared_ray_sigma_m * t->shared_ray_sigma_m * r * r.transpose();
+      }
     }
     return t;
   }
@@ -418,6 +430,7 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
     // The floor is where on the object the reference point falls from this robot pose: the same
     // in every frame of a scan (percept_t.shared_sigma_m).
     p.shared_sigma_m = noise_of(options_, left.type).floor_m;  // the covariance's model
+    p.shared_ray_sigma_m = placed->triangulation.shared_ray_sigma_m;
     p.left_px = placed->left_px;
     p.right_px = placed->right_px;
     p.confidence = std::sqrt(left.confidence * right.confidence);

@@ -19,6 +19,9 @@ namespace vsl::recognition::detail {
 struct Triangulation {
   Eigen::Vector3d left_camera_position_m = Eigen::Vector3d::Zero();
   Eigen::Matrix3d left_camera_covariance_m2 = Eigen::Matrix3d::Zero();
+  // The part along the ray that every frame of a scan shares, metres (FramePercept), inside the
+  // covariance; 0 when the caller claims none.
+  double shared_ray_sigma_m = 0.0;
 };
 
 // Midpoint triangulation. With left_T_right = (R, t), the left ray is X = s a with

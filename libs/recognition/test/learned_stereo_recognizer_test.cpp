@@ -47,6 +47,17 @@ TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
       const double smallest_m2 =
           Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.ego_covariance_m2).eigenvalues()(0);
       EXPECT_LE(p.shared_sigma_m * p.shared_sigma_m, smallest_m2 * (1.0 + 1e-9)) << p.type;
+      // The shared disparity's part along the ray: 0.2 px there, about z^2 / (f b) * 0.2 m, and
+      // inside the covariance along the ray beside the floor (percept_t.shared_ray_sigma_m).
+      const Eigen::Vector3d camera_m = result.ego_T_left_camera.translation();
+      const Eigen::Vector3d ray = (p.ego_position_m - camera_m).normalized();
+      const double range_m = (p.ego_position_m - camera_m).norm();
+      EXPECT_NEAR(p.shared_ray_sigma_m, range_m * range_m / (554.25626 * 0.09) * 0.2,
+                  0.15 * p.shared_ray_sigma_m)
+          << p.type << " at " << range_m << " m";
+      EXPECT_LE(p.shared_sigma_m * p.shared_sigma_m + p.shared_ray_sigma_m * p.shared_ray_sigma_m,
+                ray.dot(p.ego_covariance_m2 * ray) * (1.0 + 1e-9))
+          << p.type;
     }
   }
   ASSERT_GE(errors.size(), 10u);

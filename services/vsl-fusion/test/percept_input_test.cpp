@@ -24,6 +24,7 @@ vsl::percept_list_t good_list() {
   list.percepts = {p, p};
   list.percepts[1].type = "handle";
   list.percepts[1].shared_sigma_m = 0.008;
+  list.percepts[0].shared_ray_sigma_m = 0.009;
   list.num_percepts = 2;
   return list;
 }
@@ -44,6 +45,8 @@ TEST(PerceptInput, GoodListBecomesAFrame) {
   EXPECT_DOUBLE_EQ(frame.percepts[0].ego_covariance_m2(0, 1), 2e-5);
   EXPECT_DOUBLE_EQ(frame.percepts[0].shared_sigma_m, 0.0);
   EXPECT_DOUBLE_EQ(frame.percepts[1].shared_sigma_m, 0.008);
+  EXPECT_DOUBLE_EQ(frame.percepts[0].shared_ray_sigma_m, 0.009);
+  EXPECT_DOUBLE_EQ(frame.percepts[1].shared_ray_sigma_m, 0.0);
   EXPECT_DOUBLE_EQ(frame.ego_T_left_camera.translation().z(), 1.5);
 }
 
@@ -95,6 +98,20 @@ TEST(PerceptInput, MalformedListsAreOneLineProblems) {
   l = good_list();
   l.percepts[1].shared_sigma_m = nan;
   EXPECT_EQ(problem_of(l), "percept 1 (handle): shared_sigma_m nan is not in [0, 1] m");
+  // The shared part along the ray (from the camera at (0, 0, 1.5) to the door at (2, 0, 0),
+  // r = (0.8, 0, -0.6)) is inside the covariance's variance along it, r^T C r = 1e-4 here, with
+  // the isotropic shared part.
+  l = good_list();
+  l.percepts[0].shared_ray_sigma_m = 0.0101;
+  EXPECT_EQ(problem_of(l),
+            "percept 0 (door): shared_ray_sigma_m 0.010100 with shared_sigma_m exceeds the "
+            "covariance's sigma along the ray 0.010000");
+  l = good_list();
+  l.percepts[0].shared_ray_sigma_m = nan;
+  EXPECT_EQ(problem_of(l), "percept 0 (door): shared_ray_sigma_m nan is not in [0, 1] m");
+  l = good_list();
+  l.percepts[0].shared_ray_sigma_m = -0.001;
+  EXPECT_EQ(problem_of(l), "percept 0 (door): shared_ray_sigma_m -0.001000 is not in [0, 1] m");
   l = good_list();
   l.percepts[1].frame_id = 5;
   EXPECT_EQ(problem_of(l), "percept 1 (handle): frame_id 5, the list's is 4");

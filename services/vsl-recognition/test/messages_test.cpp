@@ -20,6 +20,7 @@ recognition::FrameResult two_percepts() {
   door.right_px = Eigen::Vector2d(80.5, 200.0);
   door.confidence = 0.75f;
   door.shared_sigma_m = 0.02;
+  door.shared_ray_sigma_m = 0.03;
   recognition::FramePercept handle = door;
   handle.type = "handle";
   handle.ego_position_m = Eigen::Vector3d(1.9, 0.2, 1.0);
@@ -53,6 +54,7 @@ TEST(RecognitionMessages, PerceptListCarriesTheFrameAndEveryPercept) {
   EXPECT_EQ(door.right_pixel_uv[0], 80.5);
   EXPECT_EQ(door.confidence, 0.75f);
   EXPECT_EQ(door.shared_sigma_m, 0.02);
+  EXPECT_EQ(door.shared_ray_sigma_m, 0.03);
   EXPECT_EQ(list.percepts[1].type, "handle");
   // It encodes (the counts agree with the arrays).
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(list.getEncodedSize()));

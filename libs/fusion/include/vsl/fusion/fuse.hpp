@@ -3,9 +3,11 @@
 // confidence criterion Eq. 4, and the fused percepts H_f.
 //
 // Fused location and covariance of a mode with supporting percepts (x_i, Sigma_i), i = 1..n.
-// Each percept's error is a part b shared by every frame of the scan (covariance B = s^2 I, s the
-// smallest Percept::shared_sigma_m of the mode's percepts, which the recognizer sets) and a part
-// e_i of its own:
+// Each percept's error is a part b shared by every frame of the scan and a part e_i of its own.
+// The recognizer sets the shared part of each: B_i = s^2 I + s_ray^2 r r^T (Percept::
+// shared_sigma_m and shared_ray_sigma_m, r the unit ray from the frame's left camera to the
+// percept: a disparity bias acts along it); the mode's B is the B_i of least trace (what all of
+// them share is at most what the least of them claims):
 //   x_i = x_true + b + e_i,   Sigma_i = B + E_i,   E_i = Sigma_i - B
 // (E_i's eigenvalues kept at or above 1e-8 m^2).
 // The percepts of consecutive frames may scatter more than their own parts say (they share one

@@ -20,6 +20,9 @@ struct Percept {
   // sigma of the error part every frame of the scan shares, m, isotropic, inside the covariance
   // (percept_t.shared_sigma_m; fuse.hpp)
   double shared_sigma_m = 0.0;
+  // sigma of a further shared part along the ray from the frame's left camera to the percept, m,
+  // inside the covariance (percept_t.shared_ray_sigma_m; fuse.hpp)
+  double shared_ray_sigma_m = 0.0;
 };
 
 // One stereo frame of the scan, also when nothing was recognized in it: its camera pose still

@@ -21,6 +21,10 @@ struct FramePercept {
   // The part of the error every frame of a scan shares (percept_t.shared_sigma_m), metres,
   // isotropic; its variance is inside ego_covariance_m2.
   double shared_sigma_m = 0.0;
+  // A further shared part along the ray from the left camera to the percept
+  // (percept_t.shared_ray_sigma_m), metres: the stereo match's bias for this object from this
+  // robot pose; its variance is inside ego_covariance_m2 along the ray.
+  double shared_ray_sigma_m = 0.0;
   Eigen::Vector2d left_px = Eigen::Vector2d::Zero();   // reference point, raw left image
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();  // reference point, raw right image
   // 0 .. 1: sqrt(c_left c_right) of the two detections (stereo_match.hpp says why); for a

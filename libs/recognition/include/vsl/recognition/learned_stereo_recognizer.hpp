@@ -58,14 +58,18 @@ struct BoxStereoOptions {
   // (pixels; triangulation.hpp, reference_disparity_covariance), and a floor in every direction
   // that does not shrink with the range (metres: where on the object the reference point is
   // taken). Fitted to simulation's ground truth by vsl-eval-recognition ("noise model of the
-  // true positives"). Classes not listed: 1 px, 1 px, no floor.
+  // true positives"). Beside them, the part of the disparity's error that every frame of a scan
+  // shares (pixels): the same object seen from one robot pose gives the match the same bias in
+  // every frame, so fusion must not average it down (percept_t.shared_ray_sigma_m); it is added
+  // to the covariance along the ray. Classes not listed: 1 px, 1 px, no floor, none shared.
   struct Noise {
     std::string type;
     double reference_px = 1.0;
     double disparity_px = 1.0;
     double floor_m = 0.0;
+    double shared_disparity_px = 0.0;
   };
-  std::vector<Noise> noise{{"door", 0.0, 0.18, 0.022}, {"handle", 1.8, 0.10, 0.012}};
+  std::vector<Noise> noise{{"door", 0.0, 0.18, 0.022, 0.2}, {"handle", 1.8, 0.10, 0.012, 0.2}};
   // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
   std::vector<std::string> rectangle_types{"door"};
   // Candidate pairs are also scored by how well the boxes' surroundings correlate at the pair's
