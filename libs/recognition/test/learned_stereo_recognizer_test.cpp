@@ -111,11 +111,19 @@ TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
   EXPECT_EQ(o.noise[0].reference_px, 2.5);
   EXPECT_EQ(o.noise[0].disparity_px, 0.1);
   EXPECT_EQ(o.noise[0].floor_m, 0.01);
+  EXPECT_EQ(o.noise[0].shared_disparity_px, 0.0);  // optional: none claimed
+  EXPECT_EQ(options("  noise: {door: {reference_px: 0, disparity_px: 0.2, floor_m: 0.02, "
+                    "shared_disparity_px: 0.25}}\n")
+                .noise[0]
+                .shared_disparity_px,
+            0.25);
   ASSERT_EQ(o.thickness_range_m.size(), 1u);
   EXPECT_EQ(o.thickness_range_m[0].max_m, 0.08);
   for (const std::string bad :
        {"  noise: {handle: {reference_px: -1, disparity_px: 0.1, floor_m: 0}}\n",
         "  noise: {handle: {reference_px: 1, disparity_px: 0.1}}\n",
+        "  noise: {handle: {reference_px: 1, disparity_px: 0.1, floor_m: 0, shared_disparity_px: "
+        "-0.1}}\n",
         "  thickness_range_m: {handle: [0.1, 0.05]}\n"}) {
     try {
       options(bad);
