@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
+#include <vector>
 
+#include "command_line.hpp"
 #include "lockstep_pipeline.hpp"
+#include "vsl/runtime/command_line.hpp"
 
 namespace {
 
@@ -44,46 +46,34 @@ exit codes: 0 localized, 1 not (failed, ambiguous or no answer), 2 bad usage or 
   std::exit(2);
 }
 
-std::array<double, 4> parse_pose(const std::string& text) {
-  std::array<double, 4> pose{};
-  std::stringstream in(text);
-  std::string part;
-  std::size_t n = 0;
-  while (std::getline(in, part, ',')) {
-    if (n == 4) usage_error("--pose wants X,Y,Z,YAW_DEG, got '" + text + "'");
-    char* end = nullptr;
-    pose[n] = std::strtod(part.c_str(), &end);
-    if (part.empty() || *end != '\0' || !std::isfinite(pose[n])) {
-      usage_error("--pose wants X,Y,Z,YAW_DEG, got '" + text + "'");
-    }
-    ++n;
-  }
-  if (n != 4) usage_error("--pose wants X,Y,Z,YAW_DEG, got '" + text + "'");
-  return pose;
-}
-
+// --world, --pose and --realism as vsl-sim-head reads them (sim_head::split_command_line), the
+// rest here.
 vsl::lockstep::PipelineInputs parse(int argc, char** argv, std::string& log_path) {
+  vsl::sim_head::SplitCommandLine split;
+  try {
+    split = vsl::sim_head::split_command_line(argc, argv);
+  } catch (const vsl::runtime::UsageError& e) {
+    usage_error(e.what());
+  }
   vsl::lockstep::PipelineInputs inputs;
+  inputs.pose = split.overrides.pose;
+  inputs.world_path = split.overrides.world_path;
+  if (inputs.world_path && !std::filesystem::is_regular_file(*inputs.world_path)) {
+    usage_error("--world: no such file '" + *inputs.world_path + "'");
+  }
   inputs.recognition_config = "config/recognition.yaml";
   inputs.realism = vsl::render::RealismLevel::full;
   std::optional<std::string> recognition_config;
-  std::optional<vsl::render::RealismLevel> realism;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
+  const std::vector<std::string>& rest = split.rest;
+  for (std::size_t i = 1; i < rest.size(); ++i) {
+    const std::string& arg = rest[i];
     const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usage_error(arg + " needs a value");
-      return argv[++i];
+      if (i + 1 >= rest.size()) usage_error(arg + " needs a value");
+      return rest[++i];
     };
     if (arg == "-h" || arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
-    } else if (arg == "--pose") {
-      inputs.pose = parse_pose(value());
-    } else if (arg == "--world") {
-      inputs.world_path = value();
-      if (!std::filesystem::is_regular_file(*inputs.world_path)) {
-        usage_error("--world: no such file '" + *inputs.world_path + "'");
-      }
     } else if (arg == "--recognizer") {
       const std::string name = value();
       if (name == "paper") {
@@ -97,10 +87,6 @@ vsl::lockstep::PipelineInputs parse(int argc, char** argv, std::string& log_path
       if (!std::filesystem::is_regular_file(*recognition_config)) {
         usage_error("--recognition-config: no such file '" + *recognition_config + "'");
       }
-    } else if (arg == "--realism") {
-      const std::string name = value();
-      realism = vsl::render::realism_level_from_name(name);
-      if (!realism) usage_error("--realism wants off, materials or full, got '" + name + "'");
     } else if (arg == "--record-percepts") {
       inputs.record_percepts_dir = value();
       std::filesystem::create_directories(inputs.record_percepts_dir);
@@ -111,7 +97,7 @@ vsl::lockstep::PipelineInputs parse(int argc, char** argv, std::string& log_path
     }
   }
   if (recognition_config) inputs.recognition_config = *recognition_config;
-  if (realism) inputs.realism = *realism;
+  if (split.overrides.realism_level) inputs.realism = *split.overrides.realism_level;
   return inputs;
 }
 
