@@ -159,6 +159,16 @@ class Pipeline {
     return err;
   }
   void start_localizer() { restart("vsl-localizer"); }
+  // Each running daemon's stderr so far, for a failure message.
+  std::string daemon_logs() {
+    std::string logs;
+    for (auto& [name, process] : processes_) {
+      if (!process) continue;
+      process->read_available();
+      logs += "--- " + name + " stderr:\n" + process->err() + "\n";
+    }
+    return logs;
+  }
   // Starts a daemon again with the arguments it first had.
   void restart(const std::string& name) { start(name, argv_.at(name)); }
   // Sends `signal` to a running daemon (SIGSTOP, SIGCONT: it stays in the pipeline).
@@ -362,6 +372,7 @@ class RecordedSession : public ::testing::Test {
       Pipeline pipeline(Pipeline::live(port));
       const auto request = pipeline.request();
       live_ = Pipeline::finish(*request);
+      live_request_log_ = describe(*request);
     }
     std::this_thread::sleep_for(500ms);  // the last messages reach the log
     ::kill(logger.pid(), SIGINT);
@@ -375,6 +386,7 @@ class RecordedSession : public ::testing::Test {
   std::filesystem::path dir_;
   std::string log_;
   std::optional<RequestResult> live_;
+  std::string live_request_log_;  // the live vsl-request's output
 };
 
 TEST_F(RecordedSession, ReplayIntoAPassiveLocalizerReproducesThePose) {
@@ -393,7 +405,9 @@ TEST_F(RecordedSession, ReplayIntoAPassiveLocalizerReproducesThePose) {
   const std::optional<RequestResult> replayed = Pipeline::finish(*follower);
   player.wait(120s);
   ASSERT_TRUE(replayed.has_value());
-  ASSERT_EQ(replayed->status, "LOCALIZED");
+  ASSERT_EQ(replayed->status, "LOCALIZED") << describe(*follower) << "\n"
+                                           << replay.daemon_logs() << "--- the recorded run:\n"
+                                           << live_request_log_;
   // Issue 6: the replay reproduces the pose within 1 cm and 0.5 degrees.
   const double dx = replayed->values.at("x_m") - live_->values.at("x_m");
   const double dy = replayed->values.at("y_m") - live_->values.at("y_m");

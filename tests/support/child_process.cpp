@@ -82,6 +82,14 @@ ChildProcess::~ChildProcess() {
   ::close(err_fd_);
 }
 
+void ChildProcess::read_available() {
+  std::size_t before = 0;
+  do {
+    before = out_.size() + err_.size();
+    pump(0);
+  } while (out_.size() + err_.size() > before);
+}
+
 void ChildProcess::pump(int timeout_ms) {
   pollfd fds[2] = {{out_fd_, POLLIN, 0}, {err_fd_, POLLIN, 0}};
   if (::poll(fds, 2, timeout_ms) <= 0) return;

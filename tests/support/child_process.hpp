@@ -24,6 +24,8 @@ class ChildProcess {
   bool wait_for_stdout(const std::string& text, std::chrono::milliseconds timeout);
   // Waits for the child to exit and returns its wait status; nullopt on timeout.
   std::optional<int> wait(std::chrono::milliseconds timeout);
+  // Reads what the pipes hold now, without waiting (for a look at a running child's output).
+  void read_available();
   // Output so far (all of it once wait() returned a status).
   const std::string& out() const { return out_; }
   const std::string& err() const { return err_; }

@@ -3,10 +3,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "run_command.hpp"
+#include "scan_frames.hpp"
 
 namespace {
 
@@ -25,8 +27,10 @@ std::string fresh_dir(const std::string& name) {
 // recorded for vsl-localize.
 TEST(VslLockstepCli, LocalizesTheSameWayEveryRun) {
   const std::string dir = fresh_dir("lockstep_percepts");
-  const std::vector<std::string> argv{VSL_LOCKSTEP_BIN, "--recognizer", "paper",
-                                      "--record-percepts", dir};
+  const std::string frames = ::testing::TempDir() + "/lockstep_frames.yaml";
+  const std::vector<std::string> argv{
+      VSL_LOCKSTEP_BIN,  "--recognizer", "paper", "--record-percepts", dir,
+      "--record-frames", frames};
   const auto first = run_command(argv, 300.0);
   ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
   EXPECT_NE(first.out.find("result: status=LOCALIZED"), std::string::npos) << first.out;
@@ -34,6 +38,13 @@ TEST(VslLockstepCli, LocalizesTheSameWayEveryRun) {
             std::string::npos)
       << first.out;
   EXPECT_TRUE(fs::exists(dir + "/request_4242_1.yaml"));
+  // Every frame's percepts (five gazes, two frames or more each) with the simulator's pose.
+  const vsl::scan_noise::ScanFrames scan = vsl::scan_noise::load_scan_frames(frames);
+  EXPECT_NEAR(scan.world_T_ego.translation().x(), 4.4, 1e-9);
+  std::set<std::int64_t> frame_ids;
+  for (const auto& p : scan.percepts) frame_ids.insert(p.frame_id);
+  EXPECT_GE(frame_ids.size(), 10u);
+  EXPECT_GT(scan.percepts.size(), 100u);
   const auto second = run_command(argv, 300.0);
   EXPECT_EQ(second.exit_code, 0);
   EXPECT_EQ(first.out, second.out);

@@ -82,6 +82,9 @@ struct Pipeline::Impl {
                                              [this](const ground_truth_pose_t& m, std::int64_t) {
                                                outcome.world_T_ego_truth = isometry(m.world_T_ego);
                                              });
+    requester.subscribe<percept_list_t>(ch.percepts, [this](const percept_list_t& m, std::int64_t) {
+      if (requested) outcome.percept_lists.push_back(m);
+    });
     requester.subscribe<localizer_status_t>(
         ch.localizer_status, [this](const localizer_status_t& m, std::int64_t) {
           if (m.request_id != kRequestId) return;
@@ -104,7 +107,6 @@ struct Pipeline::Impl {
   Outcome run() {
     std::vector<runtime::Daemon*> all;
     for (const auto& daemon : daemons) all.push_back(daemon.get());
-    bool requested = false;
     while (!outcome.pose && clock.utime() < kStartUtime + kGiveUpAfterUs) {
       runtime::settle(all);
       if (!requested && clock.utime() >= kStartUtime + kRequestAfterUs) {
@@ -135,6 +137,7 @@ struct Pipeline::Impl {
   std::unique_ptr<fusion_daemon::FusionDaemon> fusion;
   std::unique_ptr<localizer_daemon::LocalizerDaemon> localizer;
   Outcome outcome;
+  bool requested = false;
 };
 
 Pipeline::Pipeline(const PipelineInputs& inputs) : impl_(std::make_unique<Impl>(inputs)) {}

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "vsl/percept_list_t.hpp"
 #include "vsl/pose_estimate_t.hpp"
 #include "vsl/render/renderer.hpp"
 
@@ -39,7 +40,8 @@ struct PipelineInputs {
 struct Outcome {
   std::optional<pose_estimate_t> pose;  // the request's POSE_ESTIMATE
   std::optional<Eigen::Isometry3d> world_T_ego_truth;
-  std::vector<int> states;           // LOCALIZER_STATUS state changes of the request
+  std::vector<int> states;                    // LOCALIZER_STATUS state changes of the request
+  std::vector<percept_list_t> percept_lists;  // every PERCEPTS list after the request, in order
   std::vector<std::string> stopped;  // daemons that stopped on their own (none when healthy)
   std::string log;                   // every daemon's log lines
   double simulated_s = 0.0;

@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "command_line.hpp"
 #include "lockstep_pipeline.hpp"
+#include "scan_frames.hpp"
 #include "vsl/runtime/command_line.hpp"
 
 namespace {
@@ -36,6 +38,8 @@ options:
   --realism LEVEL             the simulated cameras' realism: off, materials or full
   --record-percepts DIR       write each fused set the localizer localizes from into DIR
                               (request_<id>_<n>.yaml; vsl-localize --percepts replays one)
+  --record-frames FILE        write every frame's percepts of the request (PERCEPTS) with the
+                              simulator's pose, for vsl-scan-noise
   --log FILE                  every daemon's log lines
   -h, --help                  this text
 exit codes: 0 localized, 1 not (failed, ambiguous or no answer), 2 bad usage or input file
@@ -48,7 +52,12 @@ exit codes: 0 localized, 1 not (failed, ambiguous or no answer), 2 bad usage or 
 
 // --world, --pose and --realism as vsl-sim-head reads them (sim_head::split_command_line), the
 // rest here.
-vsl::lockstep::PipelineInputs parse(int argc, char** argv, std::string& log_path) {
+struct OutputPaths {
+  std::string log;
+  std::string frames;
+};
+
+vsl::lockstep::PipelineInputs parse(int argc, char** argv, OutputPaths& outputs) {
   vsl::sim_head::SplitCommandLine split;
   try {
     split = vsl::sim_head::split_command_line(argc, argv);
@@ -90,8 +99,10 @@ vsl::lockstep::PipelineInputs parse(int argc, char** argv, std::string& log_path
     } else if (arg == "--record-percepts") {
       inputs.record_percepts_dir = value();
       std::filesystem::create_directories(inputs.record_percepts_dir);
+    } else if (arg == "--record-frames") {
+      outputs.frames = value();
     } else if (arg == "--log") {
-      log_path = value();
+      outputs.log = value();
     } else {
       usage_error("unknown argument '" + arg + "'");
     }
@@ -117,11 +128,33 @@ double yaw_deg(const Eigen::Isometry3d& world_T_ego) {
   return std::atan2(x.y(), x.x()) * 180.0 / M_PI;
 }
 
+// The request's PERCEPTS lists as a scan frames file (tools/vsl-scan-noise/scan_frames.hpp).
+void write_frames(const vsl::lockstep::Outcome& outcome, const std::string& path) {
+  if (!outcome.world_T_ego_truth) throw std::runtime_error("no GROUND_TRUTH_POSE: no scan frames");
+  vsl::scan_noise::ScanFrames scan;
+  scan.world_T_ego = *outcome.world_T_ego_truth;
+  for (const vsl::percept_list_t& list : outcome.percept_lists) {
+    for (const vsl::percept_t& p : list.percepts) {
+      vsl::scan_noise::FramePerceptRecord r;
+      r.frame_id = list.frame_id;
+      r.type = p.type;
+      r.ego_position_m = Eigen::Map<const Eigen::Vector3d>(p.ego_position_m);
+      r.ego_covariance_m2 =
+          Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.ego_covariance_m2);
+      r.ego_camera_position_m = Eigen::Map<const Eigen::Vector3d>(p.ego_camera_position_m);
+      r.shared_sigma_m = p.shared_sigma_m;
+      r.shared_ray_sigma_m = p.shared_ray_sigma_m;
+      scan.percepts.push_back(std::move(r));
+    }
+  }
+  vsl::scan_noise::write_scan_frames(scan, path);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string log_path;
-  const vsl::lockstep::PipelineInputs inputs = parse(argc, argv, log_path);
+  OutputPaths outputs;
+  const vsl::lockstep::PipelineInputs inputs = parse(argc, argv, outputs);
   vsl::lockstep::Outcome outcome;
   try {
     vsl::lockstep::Pipeline pipeline(inputs);
@@ -130,7 +163,15 @@ int main(int argc, char** argv) {
     std::cerr << "vsl-lockstep: " << e.what() << "\n";
     return 2;
   }
-  if (!log_path.empty()) std::ofstream(log_path) << outcome.log;
+  if (!outputs.log.empty()) std::ofstream(outputs.log) << outcome.log;
+  if (!outputs.frames.empty()) {
+    try {
+      write_frames(outcome, outputs.frames);
+    } catch (const std::exception& e) {
+      std::cerr << "vsl-lockstep: " << e.what() << "\n";
+      return 2;
+    }
+  }
   for (const std::string& daemon : outcome.stopped) {
     std::cerr << "vsl-lockstep: " << daemon << " stopped (its log: --log)\n";
   }

@@ -14,40 +14,18 @@ namespace {
 using config::as_vector3;
 using config::Node;
 
-// A covariance must be symmetric positive definite to whiten residuals with it.
-Eigen::Matrix3d covariance(const Node& node) {
-  const auto v = node.as_array<9>();
-  Eigen::Matrix3d c;
-  c << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
-  if (!c.isApprox(c.transpose(), 1e-9) && (c - c.transpose()).cwiseAbs().maxCoeff() > 1e-12) {
-    node.fail("must be symmetric");
-  }
-  const Eigen::LLT<Eigen::Matrix3d> llt(c);
-  if (llt.info() != Eigen::Success) node.fail("must be positive definite");
-  return c;
-}
-
 FusedPercept percept(const Node& node) {
   node.expect_keys({"type", "position", "covariance", "support"});
   FusedPercept out;
   out.type = node.at("type").as_string();
   out.ego_position_m = as_vector3(node.at("position"));
-  if (const auto c = node.find("covariance")) out.ego_covariance_m2 = covariance(*c);
+  if (const auto c = node.find("covariance")) out.ego_covariance_m2 = config::as_covariance3(*c);
   if (const auto support = node.find("support")) {
     const std::int64_t frames = support->as_int();
     if (frames < 1 || frames > 1000000) support->fail("must be a frame count >= 1");
     out.support = static_cast<int>(frames);
   }
   return out;
-}
-
-Eigen::Isometry3d ground_truth(const Node& node) {
-  node.expect_keys({"position", "quaternion"});
-  const Eigen::Quaterniond rotation = config::as_unit_quaternion(node.at("quaternion"));
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = rotation.toRotationMatrix();
-  pose.translation() = as_vector3(node.at("position"));
-  return pose;
 }
 
 PerceptFile from(const Node& root) {
@@ -57,7 +35,7 @@ PerceptFile from(const Node& root) {
   const Node list = root.at("percepts");
   for (std::size_t i = 0; i < list.size(); ++i) file.percepts.push_back(percept(list[i]));
   if (const auto truth = root.find("ground_truth"))
-    file.ground_truth_world_T_ego = ground_truth(*truth);
+    file.ground_truth_world_T_ego = config::as_pose(*truth);
   return file;
 }
 
@@ -90,12 +68,7 @@ std::string percept_file_text(const PerceptFile& file) {
   }
   if (file.percepts.empty()) out.seekp(-1, std::ios::cur), out << " []\n";
   if (file.ground_truth_world_T_ego) {
-    const Eigen::Isometry3d& pose = *file.ground_truth_world_T_ego;
-    Eigen::Quaterniond q(pose.rotation());
-    if (q.w() < 0) q.coeffs() *= -1.0;
-    out << "ground_truth: {position: [" << pose.translation().x() << ", " << pose.translation().y()
-        << ", " << pose.translation().z() << "], quaternion: [" << q.w() << ", " << q.x() << ", "
-        << q.y() << ", " << q.z() << "]}\n";
+    out << "ground_truth: " << config::pose_text(*file.ground_truth_world_T_ego) << "\n";
   }
   return out.str();
 }

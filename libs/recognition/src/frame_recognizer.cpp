@@ -12,10 +12,45 @@
 #include <utility>
 
 #include "frame_capture.hpp"
+#include "triangulation.hpp"
 
 namespace vsl::recognition {
 using detail::Clock;
 using detail::elapsed_ms;
+
+namespace {
+
+// A stereo percept registered into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T,
+// with the class's shared part (StereoMatchOptions::shared_noise) on top of the stereo's own
+// covariance: s^2 I + s_r^2 r r^T, r the unit ray and s_r the shared disparity's sigma along it.
+FramePercept register_percept(const StereoPercept& s, const std::string& type,
+                              const Eigen::Isometry3d& ego_T_left_camera,
+                              const std::vector<StereoMatchOptions::SharedNoise>& shared_noise,
+                              const detail::Triangulator& triangulator) {
+  FramePercept p;
+  p.type = type;
+  p.ego_position_m = ego_T_left_camera * s.left_camera_position_m;
+  Eigen::Matrix3d left_covariance_m2 = s.left_camera_covariance_m2;
+  for (const StereoMatchOptions::SharedNoise& noise : shared_noise) {
+    if (noise.type != type) continue;
+    const Eigen::Vector3d ray = s.left_camera_position_m.normalized();
+    p.shared_sigma_m = noise.floor_m;
+    p.shared_ray_sigma_m =
+        triangulator.ray_sigma_of_disparity(s.left_camera_position_m, noise.shared_disparity_px);
+    left_covariance_m2 += p.shared_sigma_m * p.shared_sigma_m * Eigen::Matrix3d::Identity() +
+                          p.shared_ray_sigma_m * p.shared_ray_sigma_m * ray * ray.transpose();
+  }
+  const Eigen::Matrix3d ego_R_left = ego_T_left_camera.linear();
+  p.ego_covariance_m2 = ego_R_left * left_covariance_m2 * ego_R_left.transpose();
+  p.left_px = s.left_px;
+  p.right_px = s.right_px;
+  p.confidence = s.confidence;
+  p.left_detection = s.left_detection;
+  p.right_detection = s.right_detection;
+  return p;
+}
+
+}  // namespace
 
 FrameRecognizer::FrameRecognizer(FrameRecognizerOptions options, head::HeadKinematics head,
                                  std::vector<std::unique_ptr<ClassRecognizer>> recognizers)
@@ -71,23 +106,14 @@ FrameResult FrameRecognizer::recognize(const cv::Mat& left_bgr, const cv::Mat& r
       left_T_right, options_.stereo,
       // The ego frame's z is up (head_kinematics.hpp).
       result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ(), nullptr, images);
-  // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
-  const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
+  const detail::Triangulator triangulator(calibration.left, calibration.right, left_T_right);
   result.percepts.reserve(stereo.size());
   for (const StereoPercept& s : stereo) {
     // A single-view percept has a detection in one image only (stereo_match.hpp).
     const Detection& detection = s.left_detection >= 0 ? result.left_detections[s.left_detection]
                                                        : result.right_detections[s.right_detection];
-    FramePercept p;
-    p.type = detection.type;
-    p.ego_position_m = result.ego_T_left_camera * s.left_camera_position_m;
-    p.ego_covariance_m2 = ego_R_left * s.left_camera_covariance_m2 * ego_R_left.transpose();
-    p.left_px = s.left_px;
-    p.right_px = s.right_px;
-    p.confidence = s.confidence;
-    p.left_detection = s.left_detection;
-    p.right_detection = s.right_detection;
-    result.percepts.push_back(std::move(p));
+    result.percepts.push_back(register_percept(s, detection.type, result.ego_T_left_camera,
+                                               options_.stereo.shared_noise, triangulator));
   }
   const Clock::time_point matched = Clock::now();
 

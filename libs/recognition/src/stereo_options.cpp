@@ -128,12 +128,26 @@ constexpr NumberKey kNumberKeys[] = {
 StereoMatchOptions stereo_match_options_from(const config::Node& section) {
   StereoMatchOptions out;
   section.expect_map();
-  section.expect_keys(
-      {"max_epipolar_distance_px", "min_depth_m", "max_depth_m", "max_area_ratio",
-       "max_orientation_difference_rad", "min_elongation_for_orientation", "pixel_sigma_px",
-       "reference_depth_offset_m", "major_extent_range_m", "height_range_m", "max_side_tilt_rad",
-       "bar_types", "min_side_correlation", "min_single_view_correlation", "min_peak_margin",
-       "single_view_min_separation_m", "max_bar_height_spread", "door_classes", "cut_bars"});
+  section.expect_keys({"max_epipolar_distance_px",
+                       "min_depth_m",
+                       "max_depth_m",
+                       "max_area_ratio",
+                       "max_orientation_difference_rad",
+                       "min_elongation_for_orientation",
+                       "pixel_sigma_px",
+                       "reference_depth_offset_m",
+                       "major_extent_range_m",
+                       "height_range_m",
+                       "max_side_tilt_rad",
+                       "bar_types",
+                       "min_side_correlation",
+                       "min_single_view_correlation",
+                       "min_peak_margin",
+                       "single_view_min_separation_m",
+                       "max_bar_height_spread",
+                       "door_classes",
+                       "cut_bars",
+                       "shared_noise"});
   for (const NumberKey& number : kNumberKeys) {
     if (const auto v = section.find(number.key)) {
       out.*number.member = v->as_double_in(number.lo, number.hi);
@@ -171,6 +185,21 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     }
   }
   read_cut_bars(section, out);
+  if (const auto noise = section.find("shared_noise")) {
+    noise->expect_map();
+    for (const std::string& type : noise->keys()) {
+      const config::Node model = noise->at(type);
+      model.expect_map();
+      model.expect_keys({"floor_m", "shared_disparity_px"});
+      StereoMatchOptions::SharedNoise n{type, 0.0, 0.0};
+      // A decimetre shared by every frame is no percept; five pixels of disparity bias neither.
+      if (const auto v = model.find("floor_m")) n.floor_m = v->as_double_in(0.0, 0.1);
+      if (const auto v = model.find("shared_disparity_px")) {
+        n.shared_disparity_px = v->as_double_in(0.0, 5.0);
+      }
+      out.shared_noise.push_back(n);
+    }
+  }
   return out;
 }
 

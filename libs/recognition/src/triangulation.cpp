@@ -5,6 +5,7 @@
 #include <utility>
 
 namespace vsl::recognition::detail {
+
 namespace {
 
 // sin^2 of the smallest angle between the rays that still counts as an intersection.
@@ -30,6 +31,19 @@ std::optional<Eigen::Vector2d> Triangulator::project_right(const Eigen::Vector3d
   const Eigen::Vector3d h = right_k_from_left_ * (point_m - right_centre_m_);
   if (!(h.z() > 0.0)) return std::nullopt;
   return h.hnormalized();
+}
+
+double Triangulator::ray_sigma_of_disparity(const Eigen::Vector3d& point_m,
+                                            double disparity_sigma_px) const {
+  const auto left = project_left(point_m);
+  const auto right = project_right(point_m);
+  if (!left || !right || !(disparity_sigma_px > 0.0)) return 0.0;
+  const auto t = triangulate(IdealPixel{*left, Eigen::Matrix2d::Identity()},
+                             IdealPixel{*right, Eigen::Matrix2d::Identity()},
+                             reference_disparity_covariance(0.0, disparity_sigma_px), 0.0);
+  if (!t) return 0.0;
+  const Eigen::Vector3d ray = point_m.normalized();
+  return std::sqrt(ray.dot(t->left_camera_covariance_m2 * ray));
 }
 
 namespace {

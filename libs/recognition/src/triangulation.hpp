@@ -88,6 +88,13 @@ class Triangulator {
   std::optional<Eigen::Vector2d> project_left(const Eigen::Vector3d& point_m) const;
   std::optional<Eigen::Vector2d> project_right(const Eigen::Vector3d& point_m) const;
 
+  // The standard deviation along the left viewing ray to `point_m` (left camera frame, metres)
+  // that a disparity error of `disparity_sigma_px` (the right image's u, ideal pixels) gives:
+  // r^T C r with C the covariance through the triangulation of (0, disparity_sigma_px)
+  // (reference_disparity_covariance) and r the unit ray. 0 when the point is not in front of
+  // both cameras.
+  double ray_sigma_of_disparity(const Eigen::Vector3d& point_m, double disparity_sigma_px) const;
+
   // The midpoint with its covariance, then moved `reference_depth_offset_m` further along the
   // left viewing ray (the class's reference point lies behind the visible surface).
   //

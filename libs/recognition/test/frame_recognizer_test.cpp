@@ -112,11 +112,12 @@ FrameRecognizerOptions kitchen_options() {
   return options;
 }
 
-FrameRecognizer oracle_recognizer(const StereoViews& views, const StereoView& view) {
+FrameRecognizer oracle_recognizer(const StereoViews& views, const StereoView& view,
+                                  const FrameRecognizerOptions& options = kitchen_options()) {
   std::vector<std::unique_ptr<ClassRecognizer>> recognizers;
   recognizers.push_back(std::make_unique<OracleRecognizer>("door", views.world(), view));
   recognizers.push_back(std::make_unique<OracleRecognizer>("handle", views.world(), view));
-  return FrameRecognizer(kitchen_options(), views.head(), std::move(recognizers));
+  return FrameRecognizer(options, views.head(), std::move(recognizers));
 }
 
 struct PerceptErrors {
@@ -226,6 +227,49 @@ TEST(FrameRecognizerTest, OraclePerceptsLandOnTheWorldObjects) {
   // The blob centroids' noise is about the configured 0.7 px: chi^2(3) has median 2.4; measured
   // 6.6, as handle blobs still lose a standoff or an end cap now and then.
   EXPECT_LT(median(nees), 8.0);
+}
+
+// A class's shared noise (StereoMatchOptions::shared_noise) is claimed with each of its percepts
+// and added to the covariance: s^2 I plus s_r^2 along the ray from the left camera, s_r the
+// shared disparity's sigma there (a depth z along the optical axis moves by z^2 / (f B) per pixel,
+// the range along the ray by range / z times that); other classes claim none.
+TEST(FrameRecognizerTest, SharedNoiseIsClaimedAndInTheCovariance) {
+  const StereoViews& views = StereoViews::kitchen();
+  const StereoView view = views.fixed_view(0, 3);
+  FrameRecognizerOptions options = kitchen_options();
+  options.stereo.shared_noise = {{"handle", 0.004, 0.1}};
+  const FrameResult plain =
+      oracle_recognizer(views, view).recognize(view.left.image, view.right.image, view.joints);
+  const FrameResult shared = oracle_recognizer(views, view, options)
+                                 .recognize(view.left.image, view.right.image, view.joints);
+  ASSERT_EQ(plain.percepts.size(), shared.percepts.size());
+  const head::StereoCalibration& calibration = views.head().calibration();
+  const double fb = calibration.left.fx_px * calibration.baseline_m();
+  int handles = 0;
+  for (std::size_t i = 0; i < shared.percepts.size(); ++i) {
+    const FramePercept& a = plain.percepts[i];
+    const FramePercept& b = shared.percepts[i];
+    EXPECT_EQ(a.ego_position_m, b.ego_position_m);
+    EXPECT_EQ(a.shared_sigma_m, 0.0);
+    EXPECT_EQ(a.shared_ray_sigma_m, 0.0);
+    if (b.type != "handle") {
+      EXPECT_EQ(b.shared_sigma_m, 0.0);
+      EXPECT_EQ(a.ego_covariance_m2, b.ego_covariance_m2);
+      continue;
+    }
+    ++handles;
+    const Eigen::Vector3d from_camera = b.ego_position_m - shared.ego_T_left_camera.translation();
+    const double range_m = from_camera.norm();
+    const Eigen::Vector3d ray = from_camera / range_m;
+    EXPECT_EQ(b.shared_sigma_m, 0.004);
+    const double depth_m = (shared.ego_T_left_camera.inverse() * b.ego_position_m).z();
+    EXPECT_NEAR(b.shared_ray_sigma_m, 0.1 * depth_m * range_m / fb, 0.03 * b.shared_ray_sigma_m);
+    const Eigen::Matrix3d added =
+        0.004 * 0.004 * Eigen::Matrix3d::Identity() +
+        b.shared_ray_sigma_m * b.shared_ray_sigma_m * ray * ray.transpose();
+    EXPECT_LT((b.ego_covariance_m2 - a.ego_covariance_m2 - added).norm(), 1e-12);
+  }
+  EXPECT_GE(handles, 2);
 }
 
 TEST(FrameRecognizerTest, VergedEyesAreRegisteredThroughTheKinematics) {

@@ -645,6 +645,7 @@ stereo:
     door: {typical_heights_m: [0.7, 1.2], height_sigma_m: 0.1, min_width_m: 0.3, max_width_m: 1.0,
            typical_width_m: 0.45, width_sigma_m: 0.08}
   cut_bars: {handle: {typical_length_m: 0.16, length_sigma_m: 0.03}}
+  shared_noise: {door: {floor_m: 0.01, shared_disparity_px: 0.1}, handle: {floor_m: 0.0035}}
 )",
                                               "stereo.yaml");
   const StereoMatchOptions o = stereo_match_options_from(root.at("stereo"));
@@ -685,6 +686,12 @@ stereo:
   EXPECT_EQ(o.cut_bars[0].typical_length_m, 0.16);
   EXPECT_EQ(o.cut_bars[0].length_sigma_m, 0.03);
   EXPECT_EQ(o.door_classes[0].width_sigma_m, 0.08);
+  ASSERT_EQ(o.shared_noise.size(), 2u);
+  EXPECT_EQ(o.shared_noise[0].type, "door");
+  EXPECT_EQ(o.shared_noise[0].floor_m, 0.01);
+  EXPECT_EQ(o.shared_noise[0].shared_disparity_px, 0.1);
+  EXPECT_EQ(o.shared_noise[1].floor_m, 0.0035);
+  EXPECT_EQ(o.shared_noise[1].shared_disparity_px, 0.0);  // optional
 }
 
 std::string stereo_error(const std::string& body) {
@@ -697,6 +704,15 @@ std::string stereo_error(const std::string& body) {
 }
 
 TEST(StereoOptionsTest, RejectsBadValuesInOneLine) {
+  EXPECT_NE(stereo_error("  shared_noise: {door: {floor_m: 0.5}}\n")
+                .find("s.yaml:2: stereo.shared_noise.door.floor_m"),
+            std::string::npos)
+      << stereo_error("  shared_noise: {door: {floor_m: 0.5}}\n");
+  EXPECT_NE(stereo_error("  shared_noise: {door: {floor: 0.01}}\n").find("unknown key"),
+            std::string::npos);
+  EXPECT_NE(stereo_error("  shared_noise: {door: {shared_disparity_px: -1}}\n")
+                .find("shared_disparity_px"),
+            std::string::npos);
   EXPECT_EQ(stereo_error("  max_epipolar_distanse_px: 2\n").rfind("s.yaml:", 0), 0u)
       << stereo_error("  max_epipolar_distanse_px: 2\n");
   EXPECT_NE(stereo_error("  max_epipolar_distanse_px: 2\n").find("unknown key"), std::string::npos);

@@ -196,6 +196,21 @@ TEST_F(TriangulationTest, CovarianceGrowsWithTheSquareOfTheDepth) {
   }
 }
 
+// The shared disparity's part along the ray (a recognizer's shared_disparity_px): seen straight
+// ahead it is the depth's sigma z^2 / (f B) per pixel of disparity; nothing for a point behind.
+TEST_F(TriangulationTest, RaySigmaOfADisparityIsTheDepthsSigmaStraightAhead) {
+  const detail::Triangulator triangulator(calibration_.left, calibration_.right, left_T_right_);
+  const double f = calibration_.left.fx_px, b = calibration_.baseline_m();
+  for (const double z : {1.0, 2.0, 4.0}) {
+    const double expected = z * z / (f * b) * 0.2;
+    EXPECT_NEAR(triangulator.ray_sigma_of_disparity(Eigen::Vector3d(0.0, 0.0, z), 0.2), expected,
+                0.02 * expected)
+        << z;
+  }
+  EXPECT_EQ(triangulator.ray_sigma_of_disparity(Eigen::Vector3d(0.0, 0.0, 2.0), 0.0), 0.0);
+  EXPECT_EQ(triangulator.ray_sigma_of_disparity(Eigen::Vector3d(0.0, 0.0, -2.0), 0.2), 0.0);
+}
+
 }  // namespace
 }  // namespace vsl::recognition
 

@@ -113,6 +113,17 @@ struct StereoMatchOptions {
     double length_sigma_m = 0.0;
   };
   std::vector<CutBar> cut_bars;
+  // Per class: the part of a percept's error that every frame of one scan shares, which fusion
+  // must keep out of its average (percept_t.shared_sigma_m, shared_ray_sigma_m): floor_m in every
+  // direction (where on the object the reference point falls from this robot pose) and a
+  // disparity bias of shared_disparity_px along the viewing ray. Both are added to the
+  // covariance. Measured with vsl-scan-noise on recorded scans; a class not listed claims none.
+  struct SharedNoise {
+    std::string type;
+    double floor_m = 0.0;
+    double shared_disparity_px = 0.0;
+  };
+  std::vector<SharedNoise> shared_noise;
 };
 
 // The frame's grey images (CV_8UC1, raw pixels, the intrinsics' size), for the gates that look
@@ -124,7 +135,8 @@ struct StereoImages {
 };
 
 // Reads the `stereo:` section (every key optional, defaults above; reference_depth_offset_m maps
-// a type to metres, major_extent_range_m a type to [min_m, max_m], bar_types is a list of types).
+// a type to metres, major_extent_range_m a type to [min_m, max_m], bar_types is a list of types,
+// shared_noise a type to {floor_m, shared_disparity_px}).
 // Unknown keys, non-finite or out-of-range values are errors: vsl::config::Error "file:line: key:
 // what".
 StereoMatchOptions stereo_match_options_from(const config::Node& section);
