@@ -61,6 +61,7 @@ TEST(VslLockstepCli, BadUsageIsOneLineAndExitCode2) {
                                              {"--realism", "ultra"},
                                              {"--recognition-config", broken},
                                              {"--bogus"},
+                                             {"--record-frames", "no/such/dir/frames.yaml"},
                                              {"--pose"}}) {
     std::vector<std::string> argv{VSL_LOCKSTEP_BIN};
     argv.insert(argv.end(), args.begin(), args.end());

@@ -101,6 +101,11 @@ vsl::lockstep::PipelineInputs parse(int argc, char** argv, OutputPaths& outputs)
       std::filesystem::create_directories(inputs.record_percepts_dir);
     } else if (arg == "--record-frames") {
       outputs.frames = value();
+      // Checked before the run, not after it: a minute's scan must not be lost to a typo.
+      const std::filesystem::path parent = std::filesystem::absolute(outputs.frames).parent_path();
+      if (!std::filesystem::is_directory(parent)) {
+        usage_error("--record-frames: no directory '" + parent.string() + "'");
+      }
     } else if (arg == "--log") {
       outputs.log = value();
     } else {

@@ -75,7 +75,8 @@ TEST(VslScanNoiseCli, BadUsageOrInputIsOneLineAndExitCode2) {
            {"--world", "no/such/world.yaml", files.scan},
            {"--world", files.world, "no/such/scan.yaml"},
            {"--world", files.world, files.broken},
-           {"--world", files.world, files.scan, "--match-distance", "-1"},
+           {"--world", files.world, files.scan, "--match-across", "-1"},
+           {"--world", files.world, files.scan, "--match-along", "x"},
            {"--world", files.world, files.scan, "--min-percepts", "1"},
            {"--world", files.world, files.scan, "--bogus"},
            {"--world"}}) {

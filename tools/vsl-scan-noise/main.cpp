@@ -30,7 +30,8 @@ tools/vsl-scan-noise/shared_noise_fit.hpp.
 options:
   --world FILE            the world the following scans were recorded in
   --head FILE             the stereo head, for f and B (default config/heads/armar3.yaml)
-  --match-distance M      a percept is its type's nearest object within M metres (default 0.15)
+  --match-across M        a percept's gate about an object of its type: M metres across the ray
+  --match-along M         ... and M along it (defaults 0.06 and 0.3; shared_noise_fit.hpp)
   --min-percepts N        percepts of one object in one scan to count it (default 3)
   -h, --help              this text
 exit codes: 0 fitted, 2 bad usage or input file
@@ -87,8 +88,10 @@ int main(int argc, char** argv) {
       worlds.push_back({value(), {}});
     } else if (arg == "--head") {
       head_path = value();
-    } else if (arg == "--match-distance") {
-      options.match_distance_m = positive(arg, value());
+    } else if (arg == "--match-across") {
+      options.match_across_m = positive(arg, value());
+    } else if (arg == "--match-along") {
+      options.match_along_m = positive(arg, value());
     } else if (arg == "--min-percepts") {
       const double n = positive(arg, value());
       if (n != static_cast<int>(n) || n < 2) usage_error("--min-percepts wants a count >= 2");
@@ -122,7 +125,8 @@ int main(int argc, char** argv) {
     }
     std::cout << scans << " scans in " << worlds.size()
               << " world(s); f B = " << options.focal_px * options.baseline_m
-              << " px m, match distance " << options.match_distance_m << " m\n";
+              << " px m, match gate " << options.match_across_m << " m across the ray, "
+              << options.match_along_m << " m along it\n";
     vsl::scan_noise::print_fits(vsl::scan_noise::fit_shared_noise(sets, options), std::cout);
   } catch (const std::exception& e) {
     std::cerr << "vsl-scan-noise: " << e.what() << "\n";

@@ -128,15 +128,21 @@ void tally_scans(const ScanSet& set, const FitOptions& o, double fb,
     const Eigen::Isometry3d ego_T_world = scan.world_T_ego.inverse();
     std::map<std::pair<std::string, std::size_t>, std::vector<Matched>> groups;
     for (const FramePerceptRecord& p : scan.percepts) {
-      const Eigen::Vector3d world_position_m = scan.world_T_ego * p.ego_position_m;
+      // The gate (shared_noise_fit.hpp), in the ego frame along the ray from the camera.
       std::size_t nearest = world.objects.size();
-      double nearest_m = std::numeric_limits<double>::infinity();
+      double nearest_gate = std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < world.objects.size(); ++k) {
         if (world.objects[k].type != p.type) continue;
-        const double d = (world.objects[k].world_position_m - world_position_m).norm();
-        if (d < nearest_m) nearest_m = d, nearest = k;
+        const Eigen::Vector3d object_m = ego_T_world * world.objects[k].world_position_m;
+        const Eigen::Vector3d ray = (object_m - p.ego_camera_position_m).normalized();
+        const Eigen::Vector3d error_m = p.ego_position_m - object_m;
+        const double along_m = error_m.dot(ray);
+        const double across_m = (error_m - along_m * ray).norm();
+        const double gate =
+            std::pow(across_m / o.match_across_m, 2) + std::pow(along_m / o.match_along_m, 2);
+        if (gate < nearest_gate) nearest_gate = gate, nearest = k;
       }
-      if (nearest_m > o.match_distance_m) {
+      if (nearest_gate > 1.0) {
         ++tallies[p.type].fit.unmatched;
         continue;
       }
@@ -168,10 +174,10 @@ void tally_scans(const ScanSet& set, const FitOptions& o, double fb,
 
 std::map<std::string, ClassFit> fit_shared_noise(const std::vector<ScanSet>& sets,
                                                  const FitOptions& o) {
-  if (!(o.focal_px > 0.0) || !(o.baseline_m > 0.0) || !(o.match_distance_m > 0.0) ||
-      o.min_percepts < 2) {
+  if (!(o.focal_px > 0.0) || !(o.baseline_m > 0.0) || !(o.match_across_m > 0.0) ||
+      !(o.match_along_m > 0.0) || o.min_percepts < 2) {
     throw std::invalid_argument(
-        "fit_shared_noise: focal length, baseline and match distance must be positive and "
+        "fit_shared_noise: focal length, baseline and match gate must be positive and "
         "min_percepts at least 2");
   }
   const double fb = o.focal_px * o.baseline_m;
@@ -192,8 +198,8 @@ void print_fits(const std::map<std::string, ClassFit>& fits, std::ostream& out) 
   char line[512];
   for (const auto& [type, f] : fits) {
     std::snprintf(line, sizeof line,
-                  "%s: %d groups (object x scan) in %d scans, %d percepts; %d beyond the match "
-                  "distance\n",
+                  "%s: %d groups (object x scan) in %d scans, %d percepts; %d outside every "
+                  "object's gate\n",
                   type.c_str(), f.groups, f.scans, f.percepts, f.unmatched);
     out << line;
     if (f.groups == 0) continue;

@@ -25,8 +25,12 @@
 // robust figures take the medians instead: |a| of a 2D Gaussian has the median 1.1774 s, |delta|
 // of a 1D one 0.6745 s_d; they say whether a few groups carry the mean.
 //
-// Each percept is the nearest object of its type under the true pose within match_distance_m;
-// farther ones are false positives and left out (counted).
+// Each percept is matched to an object of its type under the true pose through a gate shaped
+// like stereo's errors, long along the ray from its camera and narrow across it: the object
+// with the least (across / match_across_m)^2 + (along / match_along_m)^2, when that is at most
+// 1. A round gate either cuts the far objects' tails along the ray (the estimate comes out low)
+// or takes a neighbour's percepts across it. Percepts outside every gate are false positives
+// and left out (counted).
 #pragma once
 
 #include <map>
@@ -40,10 +44,11 @@
 namespace vsl::scan_noise {
 
 struct FitOptions {
-  double focal_px = 554.3;   // f: the left camera's focal length
-  double baseline_m = 0.09;  // B
-  double match_distance_m = 0.15;
-  int min_percepts = 3;  // per (scan, object) group
+  double focal_px = 554.3;       // f: the left camera's focal length
+  double baseline_m = 0.09;      // B
+  double match_across_m = 0.06;  // the gate across the ray
+  double match_along_m = 0.3;    // ... and along it
+  int min_percepts = 3;          // per (scan, object) group
 };
 
 struct ClassFit {

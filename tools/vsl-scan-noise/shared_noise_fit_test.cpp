@@ -79,10 +79,12 @@ std::vector<ScanFrames> synthetic_scans(const world::WorldModel& world, const Tr
   return out;
 }
 
+// The doors are 0.6 m apart: a gate 15 cm across the ray keeps every percept of these draws.
 ClassFit fit(const world::WorldModel& world, const std::vector<ScanFrames>& scans) {
   FitOptions options;
   options.focal_px = kFocalPx;
   options.baseline_m = kBaselineM;
+  options.match_across_m = 0.15;
   const auto fits = fit_shared_noise({ScanSet{&world, scans}}, options);
   EXPECT_EQ(fits.size(), 1u);
   return fits.at("door");
@@ -94,10 +96,9 @@ TEST(SharedNoiseFit, RecoversTheFloorAndTheSharedDisparity) {
   truth.floor_m = 0.02;
   truth.shared_disparity_px = 0.25;
   const ClassFit f = fit(world, synthetic_scans(world, truth, 40, 7));
-  // The far tails pass the 15 cm match distance (the shared disparity is 4 cm along the ray at
-  // 3 m): a few per cent of the percepts, and the groups they leave too small.
-  EXPECT_GE(f.groups, 0.97 * 40 * 24);
-  EXPECT_LT(f.unmatched, 0.03 * 40 * 24 * 8);
+  EXPECT_EQ(f.groups, 40 * 24);
+  EXPECT_EQ(f.percepts, 40 * 24 * 8);
+  EXPECT_EQ(f.unmatched, 0);
   EXPECT_NEAR(f.floor_m, 0.02, 0.002);
   EXPECT_NEAR(f.shared_disparity_px, 0.25, 0.025);
   EXPECT_NEAR(f.floor_robust_m, 0.02, 0.003);
@@ -147,7 +148,7 @@ TEST(SharedNoiseFit, LeavesOutPerceptsFarFromEveryObjectAndSmallGroups) {
 TEST(SharedNoiseFit, RefusesOptionsOutOfRange) {
   const world::WorldModel world = wall_of_doors();
   FitOptions options;
-  options.match_distance_m = 0.0;
+  options.match_along_m = 0.0;
   EXPECT_THROW(fit_shared_noise({ScanSet{&world, {}}}, options), std::invalid_argument);
   EXPECT_THROW(fit_shared_noise({ScanSet{nullptr, {}}}, FitOptions{}), std::invalid_argument);
 }

@@ -28,7 +28,10 @@
 //    hypothesis when one of its location hypotheses is where that pose puts the ego centre,
 //    within both uncertainties (the location's from the spheres' Fisher information: ranges from
 //    objects on one wall fix the ego centre well across the wall and poorly along it, and only
-//    across it does the mirror location differ). With gravity a tilted pose is dropped.
+//    across it does the mirror location differ), or when the spheres fit that centre within
+//    gate^2 of their chi^2 at the best location (the same test as a likelihood ratio, exact where
+//    the spheres' chi^2 is a flat valley and the linearization at its minimum is not). With
+//    gravity a tilted pose is dropped.
 // 4. Duplicates (within same_position_m and same_angle_rad, or indistinguishable by their
 //    uncertainty) are merged by the caller.
 #pragma once
