@@ -97,6 +97,25 @@ void read_cut_bars(const config::Node& section, StereoMatchOptions& out) {
 }
 
 // The section's plain numbers: key, member, allowed range.
+// shared_noise: {type: {floor_m, shared_disparity_px}}, both optional (0).
+void read_shared_noise(const config::Node& section, StereoMatchOptions& out) {
+  const auto noise = section.find("shared_noise");
+  if (!noise) return;
+  noise->expect_map();
+  for (const std::string& type : noise->keys()) {
+    const config::Node model = noise->at(type);
+    model.expect_map();
+    model.expect_keys({"floor_m", "shared_disparity_px"});
+    StereoMatchOptions::SharedNoise n{type, 0.0, 0.0};
+    // A decimetre shared by every frame is no percept; five pixels of disparity bias neither.
+    if (const auto v = model.find("floor_m")) n.floor_m = v->as_double_in(0.0, 0.1);
+    if (const auto v = model.find("shared_disparity_px")) {
+      n.shared_disparity_px = v->as_double_in(0.0, 5.0);
+    }
+    out.shared_noise.push_back(n);
+  }
+}
+
 struct NumberKey {
   const char* key;
   double StereoMatchOptions::*member;
@@ -185,21 +204,7 @@ StereoMatchOptions stereo_match_options_from(const config::Node& section) {
     }
   }
   read_cut_bars(section, out);
-  if (const auto noise = section.find("shared_noise")) {
-    noise->expect_map();
-    for (const std::string& type : noise->keys()) {
-      const config::Node model = noise->at(type);
-      model.expect_map();
-      model.expect_keys({"floor_m", "shared_disparity_px"});
-      StereoMatchOptions::SharedNoise n{type, 0.0, 0.0};
-      // A decimetre shared by every frame is no percept; five pixels of disparity bias neither.
-      if (const auto v = model.find("floor_m")) n.floor_m = v->as_double_in(0.0, 0.1);
-      if (const auto v = model.find("shared_disparity_px")) {
-        n.shared_disparity_px = v->as_double_in(0.0, 5.0);
-      }
-      out.shared_noise.push_back(n);
-    }
-  }
+  read_shared_noise(section, out);
   return out;
 }
 
