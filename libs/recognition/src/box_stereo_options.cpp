@@ -22,6 +22,14 @@ std::vector<BoxStereoOptions::Range> ranges_from(const config::Node& ranges) {
   return out;
 }
 
+// [type, ...]
+std::vector<std::string> types_from(const config::Node& types) {
+  if (!types.is_sequence()) types.fail("expected a list of object types, e.g. [door]");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < types.size(); ++i) out.push_back(types[i].as_string());
+  return out;
+}
+
 }  // namespace
 
 BoxStereoOptions box_stereo_options_from(const config::Node& section) {
@@ -45,7 +53,12 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
                        "retype_by_height_m",
                        "width_range_m",
                        "length_range_m",
-                       "thickness_range_m"});
+                       "thickness_range_m",
+                       "bar_types",
+                       "bar_min_contrast",
+                       "bar_end_patch_px",
+                       "bar_end_noise",
+                       "same_bar_m"});
   BoxStereoOptions out;
   const auto number = [&](const char* key, double& value, double min, double max) {
     if (const auto v = section.find(key)) value = v->as_double_in(min, max);
@@ -84,13 +97,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
       }
     }
   }
-  if (const auto types = section.find("rectangle_types")) {
-    if (!types->is_sequence()) types->fail("expected a list of object types, e.g. [door]");
-    out.rectangle_types.clear();
-    for (std::size_t i = 0; i < types->size(); ++i) {
-      out.rectangle_types.push_back((*types)[i].as_string());
-    }
-  }
+  if (const auto types = section.find("rectangle_types")) out.rectangle_types = types_from(*types);
   if (const auto v = section.find("fit_rectangle")) out.fit_rectangle = v->as_bool();
   if (const auto v = section.find("pair_by_surroundings")) out.pair_by_surroundings = v->as_bool();
   if (const auto offsets = section.find("reference_depth_offset_m")) {
@@ -114,6 +121,22 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   }
   if (const auto r = section.find("length_range_m")) out.length_range_m = ranges_from(*r);
   if (const auto r = section.find("thickness_range_m")) out.thickness_range_m = ranges_from(*r);
+  if (const auto types = section.find("bar_types")) out.bar_types = types_from(*types);
+  number("bar_min_contrast", out.bar_min_contrast, 0.0, 765.0);
+  number("bar_end_patch_px", out.bar_end_patch_px, 2.0, 100.0);
+  number("same_bar_m", out.same_bar_m, 0.0, 10.0);
+  if (const auto noise = section.find("bar_end_noise")) {
+    noise->expect_keys({"reference_px", "disparity_px"});
+    if (const auto v = noise->find("reference_px")) {
+      out.bar_end_noise.reference_px = v->as_double_in(0.0, 100.0);
+    }
+    if (const auto v = noise->find("disparity_px")) {
+      out.bar_end_noise.disparity_px = v->as_double_in(0.0, 100.0);
+    }
+    if (out.bar_end_noise.reference_px + out.bar_end_noise.disparity_px <= 0.0) {
+      noise->fail("a bar end's noise of all zeros gives no covariance");
+    }
+  }
   return out;
 }
 

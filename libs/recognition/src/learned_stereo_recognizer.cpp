@@ -12,6 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "bar_trace.hpp"
 #include "box_stereo.hpp"
 #include "door_rectangle_fit.hpp"
 #include "frame_capture.hpp"
@@ -21,6 +22,9 @@ namespace {
 
 using detail::Clock;
 using detail::elapsed_ms;
+
+// Why a bar's ends did not place it when the right image does not show one of them again.
+constexpr const char* kEndNotFound = "bar: end not found in the right image";
 
 // A box as the pipeline's Detection (raw pixel-centre coordinates: pixel (u, v)'s centre at
 // (u, v), so a box's continuous corners move by half a pixel).
@@ -78,6 +82,7 @@ struct Placed {
   detail::Triangulation triangulation;
   Eigen::Vector2d left_px = Eigen::Vector2d::Zero();
   Eigen::Vector2d right_px = Eigen::Vector2d::Zero();
+  bool from_bar = false;  // placed by its bar's ends (BoxStereoOptions::bar_types)
 };
 
 class PairPlacer {
@@ -85,11 +90,12 @@ class PairPlacer {
   // `ideal_greys`: both images undistorted (the rectangle fit's pinhole images); `up_in_left`:
   // the world's vertical in the left camera frame.
   PairPlacer(const head::StereoCalibration& calibration, const Eigen::Isometry3d& left_T_right,
-             const cv::Mat& left_grey, const cv::Mat& right_grey,
-             const std::array<cv::Mat, 2>& ideal_greys, const Eigen::Vector3d& up_in_left,
-             const BoxStereoOptions& options)
+             const std::array<cv::Mat, 2>& bgrs, const cv::Mat& left_grey,
+             const cv::Mat& right_grey, const std::array<cv::Mat, 2>& ideal_greys,
+             const Eigen::Vector3d& up_in_left, const BoxStereoOptions& options)
       : calibration_(calibration),
         triangulator_(calibration.left, calibration.right, left_T_right),
+        bgrs_(bgrs),
         left_grey_(left_grey),
         right_grey_(right_grey),
         up_in_left_(up_in_left),
@@ -121,8 +127,27 @@ class PairPlacer {
     const bool rectangle =
         std::find(options_.rectangle_types.begin(), options_.rectangle_types.end(), left.type) !=
         options_.rectangle_types.end();
-    return rectangle ? place_rectangle(left, whole->shift_px, left_boxes, refusal)
-                     : place_point(left, whole->shift_px, refusal);
+    if (rectangle) return place_rectangle(left, whole->shift_px, left_boxes, refusal);
+    const bool bar = std::find(options_.bar_types.begin(), options_.bar_types.end(), left.type) !=
+                     options_.bar_types.end();
+    if (bar) {
+      // The box may hold a piece of a bar: placed by the bar's ends, traced in both images. A box
+      // that shows no bar (a knob, a bar too faint) is placed by its pixels, and so is a bar whose
+      // ends the right image does not show again; a bar cut by the border or longer than any of
+      // the class is not placed (the box is a piece of it, and its middle is not the object's).
+      const double max_length_px = std::max(left_grey_.cols, left_grey_.rows);
+      const auto left_bar =
+          detail::trace_bar(bgrs_[0], left, max_length_px, options_.bar_min_contrast);
+      const auto right_bar =
+          left_bar ? detail::trace_bar(bgrs_[1], right, max_length_px, options_.bar_min_contrast)
+                   : std::nullopt;
+      if (left_bar && right_bar) {
+        if (auto placed = place_bar(left.type, *left_bar, *right_bar, refusal)) return placed;
+        if (refusal != kEndNotFound) return std::nullopt;
+        refusal.clear();
+      }
+    }
+    return place_point(left, whole->shift_px, refusal);
   }
 
  private:
@@ -143,20 +168,23 @@ class PairPlacer {
     auto t = triangulator_.triangulate(
         left, right, detail::reference_disparity_covariance(noise.reference_px, noise.disparity_px),
         offset_m);
-    if (!t) return t;
-    t->left_camera_covariance_m2 += noise.floor_m * noise.floor_m * Eigen::Matrix3d::Identity();
-    if (noise.shared_disparity_px > 0.0) {
-      const auto shared = triangulator_.triangulate(
-          left, right, detail::reference_disparity_covariance(0.0, noise.shared_disparity_px),
-          offset_m);
-      const Eigen::Vector3d r = t->left_camera_position_m.normalized();
-      if (shared) {
-        t->shared_ray_sigma_m = std::sqrt(r.dot(shared->left_camera_covariance_m2 * r));
-        t->left_camera_covariance_m2 +=
-            t->shared_ray_sigma_m * t->shared_ray_sigma_m * r * r.transpose();
-      }
-    }
+    if (t) add_floor_and_shared(type, *t);
     return t;
+  }
+
+  // The class's floor in every direction and its shared disparity's part along the ray
+  // (ray_sigma_of_disparity: nearly all of a disparity's covariance lies along the ray), added
+  // to a placed point's covariance.
+  void add_floor_and_shared(const std::string& type, detail::Triangulation& t) const {
+    const BoxStereoOptions::Noise noise = noise_of(options_, type);
+    t.left_camera_covariance_m2 += noise.floor_m * noise.floor_m * Eigen::Matrix3d::Identity();
+    if (noise.shared_disparity_px > 0.0) {
+      const Eigen::Vector3d& x = t.left_camera_position_m;
+      t.shared_ray_sigma_m = triangulator_.ray_sigma_of_disparity(x, noise.shared_disparity_px);
+      const Eigen::Vector3d r = x.normalized();
+      t.left_camera_covariance_m2 +=
+          t.shared_ray_sigma_m * t.shared_ray_sigma_m * r * r.transpose();
+    }
   }
 
   // A left camera point's ideal pixel in camera k (0 left, 1 right).
@@ -200,6 +228,72 @@ class PairPlacer {
       return std::nullopt;
     }
     placed.triangulation = *t;
+    return placed;
+  }
+
+  // A bar placed at the middle of its ends. Each end's disparity is measured by correlating the
+  // patch around it (the end and the background beyond it: a point both images agree on, unlike
+  // any point along the bar) within a few pixels of where the right image's trace puts it; each
+  // end triangulated with the covariance of BoxStereoOptions::bar_end_noise, and the middle's is
+  // the mean's, (C_0 + C_1) / 4, plus the class's floor and shared part. Refused when the border
+  // cuts an end in either image, an end's patch is not found again (kEndNotFound), or the bar is
+  // not of the class's length.
+  std::optional<Placed> place_bar(const std::string& type, const detail::TracedBar& left_bar,
+                                  detail::TracedBar right_bar, std::string& refusal) const {
+    if (left_bar.cut[0] || left_bar.cut[1] || right_bar.cut[0] || right_bar.cut[1]) {
+      refusal = "bar: cut";
+      return std::nullopt;
+    }
+    if ((right_bar.ends_px[1] - right_bar.ends_px[0])
+            .dot(left_bar.ends_px[1] - left_bar.ends_px[0]) < 0.0) {
+      std::swap(right_bar.ends_px[0], right_bar.ends_px[1]);
+    }
+    const double half = options_.bar_end_patch_px;  // half the patch's side
+    std::array<detail::Triangulation, 2> ends;
+    const Eigen::Matrix4d end_covariance = detail::reference_disparity_covariance(
+        options_.bar_end_noise.reference_px, options_.bar_end_noise.disparity_px);
+    for (std::size_t e = 0; e < 2; ++e) {
+      const Eigen::Vector2d& at = left_bar.ends_px[e];
+      const auto match =
+          detail::find_in_right_image(left_grey_, right_grey_, at - Eigen::Vector2d(half, half),
+                                      at + Eigen::Vector2d(half, half), right_bar.ends_px[e] - at,
+                                      Eigen::Vector2d(3.0, 2.0), options_.max_template_px);
+      if (!match || match->correlation < options_.min_correlation) {
+        refusal = kEndNotFound;
+        return std::nullopt;
+      }
+      const auto l = detail::undistort({raw(at)}, calibration_.left);
+      const auto r = detail::undistort({raw(at + match->shift_px)}, calibration_.right);
+      const auto end = triangulator_.triangulate(l.front(), r.front(), end_covariance, 0.0);
+      if (!end) {
+        refusal = "depth";
+        return std::nullopt;
+      }
+      ends[e] = *end;
+    }
+    // The middle of the ends, with the covariance of the mean of two independent points.
+    detail::Triangulation t;
+    t.left_camera_position_m =
+        0.5 * (ends[0].left_camera_position_m + ends[1].left_camera_position_m);
+    t.left_camera_covariance_m2 =
+        0.25 * (ends[0].left_camera_covariance_m2 + ends[1].left_camera_covariance_m2);
+    add_floor_and_shared(type, t);
+    const Eigen::Vector3d& centre = t.left_camera_position_m;
+    if (centre.z() < options_.min_depth_m || centre.z() > options_.max_depth_m) {
+      refusal = "depth";
+      return std::nullopt;
+    }
+    if (!in_range(options_.length_range_m, type,
+                  (ends[1].left_camera_position_m - ends[0].left_camera_position_m).norm())) {
+      refusal = "bar: length";
+      return std::nullopt;
+    }
+    Placed placed;
+    placed.type = type;
+    placed.from_bar = true;
+    placed.triangulation = t;
+    placed.left_px = raw(0.5 * (left_bar.ends_px[0] + left_bar.ends_px[1]));
+    placed.right_px = raw(0.5 * (right_bar.ends_px[0] + right_bar.ends_px[1]));
     return placed;
   }
 
@@ -318,6 +412,7 @@ class PairPlacer {
 
   const head::StereoCalibration& calibration_;
   detail::Triangulator triangulator_;
+  const std::array<cv::Mat, 2>& bgrs_;
   const cv::Mat& left_grey_;
   const cv::Mat& right_grey_;
   Eigen::Vector3d up_in_left_;
@@ -389,8 +484,9 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
   // The ego frame's z axis is the world's vertical (the robot stands on a level floor).
   const Eigen::Vector3d up_in_left =
       result.ego_T_left_camera.linear().transpose() * Eigen::Vector3d::UnitZ();
-  const PairPlacer placer(calibration, left_T_right, left_grey, right_grey, ideal_greys, up_in_left,
-                          options_);
+  const std::array<cv::Mat, 2> bgrs{left_bgr, right_bgr};
+  const PairPlacer placer(calibration, left_T_right, bgrs, left_grey, right_grey, ideal_greys,
+                          up_in_left, options_);
   const detail::EpipolarGeometry epipolar(calibration.left, calibration.right, left_T_right);
   // The surroundings of a box: the box grown by its larger side (at least 16 px) each way.
   const auto surroundings = [&](int l, int r) {
@@ -413,6 +509,8 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
                                     : std::function<double(int, int)>());
   // Registration into ego: p_ego = ego_T_left p_left, Sigma_ego = R Sigma_left R^T.
   const Eigen::Matrix3d ego_R_left = result.ego_T_left_camera.linear();
+  // Boxes around pieces of one bar place it once each: the bar is kept once.
+  std::vector<Eigen::Vector3d> bars_placed;
   for (const detail::BoxPair& pair : pairs) {
     const BoxDetection& left = left_boxes[static_cast<std::size_t>(pair.left)];
     const BoxDetection& right = right_boxes[static_cast<std::size_t>(pair.right)];
@@ -421,6 +519,16 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
     if (!placed) {
       result.stereo_refusals.push_back({pair.left, pair.right, std::move(refusal)});
       continue;
+    }
+    if (placed->from_bar) {
+      const Eigen::Vector3d& at = placed->triangulation.left_camera_position_m;
+      if (std::any_of(bars_placed.begin(), bars_placed.end(), [&](const Eigen::Vector3d& other) {
+            return (other - at).norm() < options_.same_bar_m;
+          })) {
+        result.stereo_refusals.push_back({pair.left, pair.right, "bar: placed already"});
+        continue;
+      }
+      bars_placed.push_back(at);
     }
     FramePercept p;
     p.type = placed->type;

@@ -134,6 +134,37 @@ TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
   }
 }
 
+// The bar model's options: which classes are bars, the trace's contrast, the ends' patch and
+// noise, and when two bars are one; bad values are one line naming the key.
+TEST(BoxStereoOptions, BarOptionsAreReadAndChecked) {
+  const auto options = [](const std::string& body) {
+    return box_stereo_options_from(
+        config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
+  };
+  const BoxStereoOptions defaults = options("  min_correlation: 0.5\n");
+  EXPECT_EQ(defaults.bar_types, std::vector<std::string>{"handle"});
+  const BoxStereoOptions o = options(
+      "  bar_types: []\n  bar_min_contrast: 90\n  bar_end_patch_px: 8\n"
+      "  bar_end_noise: {reference_px: 1.5, disparity_px: 0.25}\n  same_bar_m: 0.04\n");
+  EXPECT_TRUE(o.bar_types.empty());
+  EXPECT_EQ(o.bar_min_contrast, 90.0);
+  EXPECT_EQ(o.bar_end_patch_px, 8.0);
+  EXPECT_EQ(o.bar_end_noise.reference_px, 1.5);
+  EXPECT_EQ(o.bar_end_noise.disparity_px, 0.25);
+  EXPECT_EQ(o.same_bar_m, 0.04);
+  for (const std::string bad :
+       {"  bar_types: handle\n", "  bar_min_contrast: 800\n", "  bar_end_patch_px: 1\n",
+        "  bar_end_noise: {reference_px: 0, disparity_px: 0}\n",
+        "  bar_end_noise: {reference_px: 1, sigma: 2}\n", "  same_bar_m: -0.1\n"}) {
+    try {
+      options(bad);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const config::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("b.yaml:2: box_stereo."), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(LearnedStereoRecognizer, RefusesFramesOfAnotherSize) {
   const test::StereoViews& views = test::StereoViews::kitchen();
   const LearnedStereoRecognizer recognizer = shipped(views.head());

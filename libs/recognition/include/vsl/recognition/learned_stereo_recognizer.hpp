@@ -9,7 +9,9 @@
 // disparities (a door seen at an angle is nearer on one side, and the box's centre is not its
 // face's); from there a vertical rectangle is fitted in 3D to the edges both images see along
 // its outline, and the door is kept only when all four sides are seen (door_rectangle_fit.hpp).
-// A handle's reference point is its bar's middle. Then, as for the paper's
+// A handle's reference point is its bar's middle: a bar is followed from its box to its ends in
+// both images (a box may hold only a piece of a long rail), and placed at the middle of its ends,
+// each end's disparity from the pixels around it; a knob by its box's. Then, as for the paper's
 // recognizer, a 3x3 covariance from the pixel noise and registration into the ego frame through
 // the head kinematics at capture time (paper §2.1.1).
 #pragma once
@@ -108,6 +110,25 @@ struct BoxStereoOptions {
   // And of its shorter side: a handle is a bar or a knob, a few centimetres across; a drawer
   // front with its handle, which the detector can box as a handle, is 15 cm or more.
   std::vector<Range> thickness_range_m{{"handle", 0.0, 0.1}};
+  // Classes whose box may hold only a piece of a bar: a rail seen at an angle is boxed in pieces,
+  // each box's middle 10-50 cm from the bar's. Such a box is followed along its bar to the bar's
+  // ends in both images (bar_trace.hpp; the bar's colour standing out from its background by at
+  // least bar_min_contrast, L1 over the channels, 0 .. 765), and the pair is placed at the middle
+  // of the ends, each end's disparity from the correlation of a patch bar_end_patch_px either side
+  // of it, each end triangulated with bar_end_noise (pixels: where the trace puts the end, and the
+  // patch's disparity). A box that shows no bar, or whose ends the right image does not show
+  // again, is placed by its pixels; a bar cut by the image border or not of length_range_m is not
+  // placed. Bars placed within same_bar_m of each other in one frame are one (several boxes
+  // along one rail). Empty: every box placed by its pixels.
+  std::vector<std::string> bar_types{"handle"};
+  double bar_min_contrast = 120.0;
+  double bar_end_patch_px = 6.0;
+  struct BarEndNoise {
+    double reference_px = 2.0;
+    double disparity_px = 0.3;
+  };
+  BarEndNoise bar_end_noise;
+  double same_bar_m = 0.05;
 };
 
 // Reads a `box_stereo:` section; every key optional and validated (config::Error).
