@@ -28,8 +28,9 @@ class Image {
   Colour sample(const Eigen::Vector2d& p) const {
     const double x = std::clamp(p.x() - 0.5, 0.0, bgr_.cols - 1.0);
     const double y = std::clamp(p.y() - 0.5, 0.0, bgr_.rows - 1.0);
-    const int u = std::min(static_cast<int>(x), bgr_.cols - 2 < 0 ? 0 : bgr_.cols - 2);
-    const int v = std::min(static_cast<int>(y), bgr_.rows - 2 < 0 ? 0 : bgr_.rows - 2);
+    // The top left of the four pixels, so that u + 1 and v + 1 stay inside the image.
+    const int u = std::min(static_cast<int>(x), std::max(0, bgr_.cols - 2));
+    const int v = std::min(static_cast<int>(y), std::max(0, bgr_.rows - 2));
     const double fx = x - u, fy = y - v;
     return (1 - fy) * ((1 - fx) * at(u, v) + fx * at(u + 1, v)) +
            fy * ((1 - fx) * at(u, v + 1) + fx * at(u + 1, v + 1));
