@@ -47,8 +47,8 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
   section.expect_map();
   section.expect_keys({"world", "options", "localize_at_startup", "startup_delay_s", "scan",
                        "fusing_timeout_s", "fusing_attempts", "max_active_looks",
-                       "max_look_azimuth_deg", "max_look_elevation_deg", "status_period_s",
-                       "passive", "record_percepts_dir"});
+                       "look_agreement_alpha", "max_look_azimuth_deg", "max_look_elevation_deg",
+                       "status_period_s", "passive", "record_percepts_dir"});
   LocalizerDaemonConfig out;
   out.world_path = path_relative_to_file(section.at("world"));
   out.options_path = path_relative_to_file(section.at("options"));
@@ -97,6 +97,9 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
     const std::int64_t value = node->as_int();
     if (value < 0 || value > 20) node->fail("must be an integer in [0, 20]");
     core.max_active_looks = static_cast<int>(value);
+  }
+  if (const auto node = section.find("look_agreement_alpha")) {
+    core.look_agreement_alpha = node->as_double_in(0.0, 0.5);
   }
   if (const auto node = section.find("max_look_azimuth_deg")) {
     core.look_limits.max_azimuth_rad = node->as_double_in(10.0, 180.0) * kRadPerDeg;

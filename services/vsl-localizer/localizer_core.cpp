@@ -1,7 +1,11 @@
 #include "localizer_core.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+
+#include "vsl/localization/chi_square.hpp"
+#include "vsl/localization/pose_agreement.hpp"
 
 namespace vsl::localizer_daemon {
 namespace {
@@ -207,6 +211,11 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
   num_hypotheses_ = static_cast<int>(result.hypotheses.size());
   switch (result.status) {
     case localization::Status::kLocalized:
+      if (const auto why = disagrees_with_the_look_before(result)) {
+        result.status = localization::Status::kFailed;
+        finish(State::kFailed, result, *why, now_us);
+        return;
+      }
       finish(State::kDone, result, "localized", now_us);
       return;
     case localization::Status::kFailed:
@@ -237,6 +246,27 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
     return;
   }
   start_active_look(result, *target, false, now_us);
+}
+
+std::optional<std::string> LocalizerCore::disagrees_with_the_look_before(
+    const localization::LocalizationResult& result) const {
+  const auto& before = options_.passive ? pending_result_ : looking_to_resolve_;
+  if (options_.look_agreement_alpha <= 0.0 || !before || !before->too_uncertain)
+    return std::nullopt;
+  const localization::PoseDisagreement d = localization::pose_disagreement(
+      before->world_T_ego, before->covariance, result.world_T_ego, result.covariance);
+  if (d.dof == 0 ||
+      d.distance_sq <= localization::chi_square_quantile(d.dof, options_.look_agreement_alpha)) {
+    return std::nullopt;
+  }
+  const double metres =
+      (result.world_T_ego.translation() - before->world_T_ego.translation()).norm();
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "the pose after the precision look lies %.1f cm and %.1f sigma from the one before "
+                "it (%s)",
+                100.0 * metres, std::sqrt(d.distance_sq), result.message.c_str());
+  return std::string(text);
 }
 
 void LocalizerCore::start_active_look(const localization::LocalizationResult& result,

@@ -59,6 +59,10 @@ struct CoreOptions {
   double fusing_timeout_s = 5.0;        // FUSING -> FUSED_PERCEPTS, per attempt
   int fusing_attempts = 3;              // FUSING entries before FAILED
   int max_active_looks = 3;             // active validation looks per request
+  // A pose localized after a precision look must agree with the pose too uncertain before it
+  // (the robot has not moved; pose_agreement.hpp): beyond the chi-square quantile of this
+  // false-alarm probability the request FAILS. 0: not tested.
+  double look_agreement_alpha = 0.01;
   // Where active looks may point the head: ARMAR-III's reach (neck yaw 100 deg + eye pan 34 deg
   // = 130 deg of azimuth) and 35 deg of elevation (fronts seen steeper are not recognized).
   localization::LookLimits look_limits = default_look_limits();
@@ -179,6 +183,10 @@ class LocalizerCore {
   void localize(const std::vector<localization::FusedPercept>& percepts, std::int64_t now_us);
   // A FAILED result that is only too uncertain: a precision look while looks remain.
   void look_for_precision(const localization::LocalizationResult& result, std::int64_t now_us);
+  // Why a localized result cannot stand: it disagrees with the pose too uncertain that the
+  // precision look just taken was to refine (CoreOptions::look_agreement_alpha).
+  std::optional<std::string> disagrees_with_the_look_before(
+      const localization::LocalizationResult& result) const;
   // An active look (discriminating or for precision) at `ego_target_m`, resolving `result`.
   void start_active_look(const localization::LocalizationResult& result,
                          const Eigen::Vector3d& ego_target_m, bool for_precision,

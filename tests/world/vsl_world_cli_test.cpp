@@ -52,7 +52,7 @@ TEST(VslWorldCli, MissingFileAndBadUsageExit2) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err, bad_config +
                             ":3: world_graph.node_type: unknown key (allowed: "
-                            "link_threshold_m, node_types)\n");
+                            "link_threshold_m, node_types, edge_node_types)\n");
   result = run_command({VSL_WORLD_BIN, "--help"});
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.out.find("usage: vsl-world check FILE"), std::string::npos);

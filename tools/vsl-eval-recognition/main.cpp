@@ -37,6 +37,7 @@
 #include "vsl/recognition/learned_stereo_recognizer.hpp"
 #include "vsl/recognition/recognizer_factory.hpp"
 #include "vsl/render/renderer.hpp"
+#include "vsl/world/world_graph.hpp"
 #include "vsl/world/world_io.hpp"
 #include "vsl/worldgen/randomize_looks.hpp"
 
@@ -369,6 +370,30 @@ void write_json(std::ostream& out, const Options& options, const tools::Evaluati
   out << "\n";
 }
 
+// The ground truth of percepts placed by one edge (BoxStereoOptions::edge_types): each visible
+// object of such a type again as its front face's top and bottom edges' middles, of the world
+// graph's edge node types. Their recall is over the objects of the type, most of which are placed
+// whole instead.
+void add_edge_ground_truth(const world::WorldModel& world, const std::vector<std::string>& types,
+                           const tools::StereoRender& frame,
+                           std::vector<recognition::GroundTruthObject>& truth) {
+  const Eigen::Isometry3d ego_T_world = frame.pose.world_T_ego.inverse();
+  const Eigen::Vector3d camera = frame.ego_T_left_camera.translation();
+  const std::size_t objects = truth.size();
+  for (std::size_t i = 0; i < objects; ++i) {
+    if (std::find(types.begin(), types.end(), truth[i].type) == types.end()) continue;
+    for (const world::FaceEdge edge : {world::FaceEdge::kTop, world::FaceEdge::kBottom}) {
+      const auto middle = world::face_edge_middle_m(world.objects[truth[i].object_index], edge);
+      if (!middle) continue;
+      recognition::GroundTruthObject edge_truth = truth[i];
+      edge_truth.type = world::edge_node_type(truth[i].type, edge);
+      edge_truth.ego_position_m = ego_T_world * *middle;
+      edge_truth.distance_m = (edge_truth.ego_position_m - camera).norm();
+      truth.push_back(std::move(edge_truth));
+    }
+  }
+}
+
 // Per class, the left detections that became a percept, were paired and refused (by which test),
 // or found no partner in the right image.
 void tally_learned_stereo(const recognition::FrameResult& result,
@@ -553,6 +578,7 @@ bool evaluate_world(const std::string& world_file, std::uint64_t first, std::uin
       const tools::StereoRender frame =
           tools::render_view(renderer, run.head, view, (options.seed << 32) + k);
       std::vector<recognition::GroundTruthObject> truth = truth_renderer.objects(frame);
+      if (run.learned) add_edge_ground_truth(seen, run.config.box_stereo.edge_types, frame, truth);
       recognition::mark_ground_truth_visible(truth, truth_options);
       const auto start = std::chrono::steady_clock::now();
       const recognition::FrameResult result =
@@ -605,6 +631,10 @@ int main(int argc, char** argv) {
       types = detector->options().classes;
       for (const auto& rule : config.box_stereo.retype_by_height_m) {
         if (std::find(types.begin(), types.end(), rule.to) == types.end()) types.push_back(rule.to);
+      }
+      for (const std::string& type : config.box_stereo.edge_types) {
+        types.push_back(world::edge_node_type(type, world::FaceEdge::kTop));
+        types.push_back(world::edge_node_type(type, world::FaceEdge::kBottom));
       }
       recognizer = std::make_unique<recognition::LearnedStereoRecognizer>(std::move(detector),
                                                                           config.box_stereo, head);

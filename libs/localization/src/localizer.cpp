@@ -35,6 +35,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "vsl/localization/chi_square.hpp"
+#include "vsl/localization/deleted_residuals.hpp"
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/localization_context.hpp"
 #include "vsl/localization/node_grid.hpp"
@@ -398,11 +400,32 @@ class SeedSearch {
 void refine_localized(const LocalizationContext& context, const ValidatedHypothesis& best,
                       std::size_t usable, LocalizationResult& result) {
   const LocalizerOptions& options = context.options;
+  const ValidationOptions& v = options.validation;
   std::vector<PointCorrespondence> points;
   for (const NodeAssociation& a : best.explanation.associations) {
     points.push_back(context.correspondence(a.percept, a.node));
   }
   RefinedPose refined = refine_pose(best.world_T_ego, points, options.refinement);
+  // The w-test (deleted_residuals.hpp): the association the others contradict most, beyond the
+  // quantile, is dropped and the pose refined without it, until every one passes.
+  std::size_t dropped = 0;
+  const double needed = std::max(static_cast<double>(options.hypotheses.min_associations),
+                                 v.min_explained_fraction * static_cast<double>(usable));
+  while (v.outlier_test_alpha > 0.0 && refined.world_T_ego.matrix().allFinite() &&
+         points.size() > 3) {
+    const std::vector<double> w2 =
+        deleted_residuals_sq(refined.world_T_ego, points, options.refinement);
+    std::size_t worst = w2.size();
+    for (std::size_t i = 0; i < w2.size(); ++i) {
+      if (std::isfinite(w2[i]) && (worst == w2.size() || w2[i] > w2[worst])) worst = i;
+    }
+    if (worst == w2.size() || w2[worst] <= chi_square_quantile(3, v.outlier_test_alpha)) break;
+    points.erase(points.begin() + static_cast<std::ptrdiff_t>(worst));
+    result.associations.erase(result.associations.begin() + static_cast<std::ptrdiff_t>(worst));
+    ++dropped;
+    refined = refine_pose(refined.world_T_ego, points, options.refinement);
+  }
+  result.hypotheses.front().associations = result.associations;
   // Reported (and checked against required_position_m below) as the residuals support it.
   scale_covariance_by_residuals(refined, points.size(), options.refinement.planar_prior);
   if (refined.world_T_ego.matrix().allFinite()) {
@@ -412,7 +435,14 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
   if (refined.covariance_valid) result.covariance = refined.covariance;
   result.message =
       "explains " + std::to_string(points.size()) + " of " + std::to_string(usable) + " percepts";
-  const ValidationOptions& v = options.validation;
+  if (dropped > 0) {
+    result.message += " (" + std::to_string(dropped) + " inconsistent with the others dropped)";
+  }
+  if (static_cast<double>(points.size()) < needed) {
+    result.status = Status::kFailed;
+    result.message += ", fewer than needed";
+    return;
+  }
   if (v.precision_sigmas <= 0.0) return;
   const Precision p = precision_of(refined);
   if (refined.covariance_valid && !(v.precision_sigmas * p.position_m > v.required_position_m) &&

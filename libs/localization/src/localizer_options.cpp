@@ -82,7 +82,7 @@ ValidationOptions validation(const Node& section) {
   ValidationOptions out;
   section.expect_keys({"gate_sigmas", "ambiguity_margin", "clutter_density_per_m3",
                        "min_explained_fraction", "precision_sigmas", "required_position_m",
-                       "required_angle_rad"});
+                       "required_angle_rad", "outlier_test_alpha"});
   if (const auto v = section.find("gate_sigmas")) out.gate_sigmas = v->as_double_in(0.5, 20.0);
   if (const auto v = section.find("ambiguity_margin"))
     out.ambiguity_margin = v->as_double_in(0.0, 100.0);
@@ -91,6 +91,9 @@ ValidationOptions validation(const Node& section) {
   }
   if (const auto v = section.find("clutter_density_per_m3")) {
     out.clutter_density_per_m3 = v->as_double_in(1e-9, 1e6);
+  }
+  if (const auto v = section.find("outlier_test_alpha")) {
+    out.outlier_test_alpha = v->as_double_in(0.0, 0.5);
   }
   if (const auto v = section.find("precision_sigmas"))
     out.precision_sigmas = v->as_double_in(0.0, 20.0);

@@ -25,7 +25,7 @@ TEST(LocalizerOptions, ShippedConfigLoads) {
 
 TEST(LocalizerOptions, ReadsEverySection) {
   const LocalizerOptions options = localizer_options_from(config::Node::load_string(
-      "world_graph: {link_threshold_m: 3.5}\n"
+      "world_graph: {link_threshold_m: 3.5, edge_node_types: [door]}\n"
       "percept_noise: {zeta_m: 100, ego_camera_position_m: [0.1, 0, 1.6], min_sigma_m: 0.002}\n"
       "pruning: {tau_sigmas: 2.5, mu_max_m: 0.1, kappa_max_rad: 0.15}\n"
       "hypotheses: {min_associations: 4, max_interpretations: 500}\n"
@@ -33,6 +33,7 @@ TEST(LocalizerOptions, ReadsEverySection) {
       "refinement: {huber_sigmas: 2, planar_prior: true}\n",
       "l.yaml"));
   EXPECT_DOUBLE_EQ(options.graph.link_threshold_m, 3.5);
+  EXPECT_EQ(options.graph.edge_node_types, std::vector<std::string>{"door"});
   EXPECT_DOUBLE_EQ(options.noise.zeta_m, 100);
   EXPECT_DOUBLE_EQ(options.noise.ego_camera_position_m.z(), 1.6);
   EXPECT_DOUBLE_EQ(options.pruning.tau_sigmas, 2.5);

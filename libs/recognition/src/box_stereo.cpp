@@ -13,6 +13,22 @@ bool inside_image(const BoxDetection& box, int width, int height, double margin_
          box.max_px.x() <= width - margin_px && box.max_px.y() <= height - margin_px;
 }
 
+int cut_horizontal_side(const BoxDetection& box, int height, double margin_px) {
+  const bool top = box.min_px.y() < margin_px;
+  const bool bottom = box.max_px.y() > height - margin_px;
+  return top && bottom ? 4 : top ? 2 : bottom ? 3 : -1;
+}
+
+bool pairable(const BoxDetection& box, int width, int height, const BoxStereoOptions& options) {
+  const double margin = options.border_margin_px;
+  if (inside_image(box, width, height, margin)) return true;
+  const bool edge_type = std::find(options.edge_types.begin(), options.edge_types.end(),
+                                   box.type) != options.edge_types.end();
+  const int cut = cut_horizontal_side(box, height, margin);
+  return edge_type && (cut == 2 || cut == 3) && box.min_px.x() >= margin &&
+         box.max_px.x() <= width - margin;
+}
+
 namespace {
 
 // A box's centre in raw pixel-centre coordinates (pixel (u, v)'s centre at (u, v)), undistorted.
@@ -38,15 +54,13 @@ std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
   std::vector<Candidate> candidates;
   const double max_log_ratio = std::log(options.max_size_ratio);
   for (std::size_t l = 0; l < left.size(); ++l) {
-    if (!inside_image(left[l], left_intrinsics.width_px, left_intrinsics.height_px,
-                      options.border_margin_px)) {
+    if (!pairable(left[l], left_intrinsics.width_px, left_intrinsics.height_px, options)) {
       continue;
     }
     const Eigen::Vector2d left_centre = ideal_centre(left[l], left_intrinsics);
     for (std::size_t r = 0; r < right.size(); ++r) {
       if (right[r].class_index != left[l].class_index ||
-          !inside_image(right[r], right_intrinsics.width_px, right_intrinsics.height_px,
-                        options.border_margin_px)) {
+          !pairable(right[r], right_intrinsics.width_px, right_intrinsics.height_px, options)) {
         continue;
       }
       const double width_ratio = std::abs(std::log(left[l].width_px() / right[r].width_px()));

@@ -46,6 +46,15 @@ std::vector<BoxPair> pair_boxes(const std::vector<BoxDetection>& left,
 // Whether a box is at least `margin_px` from every border of a width x height image.
 bool inside_image(const BoxDetection& box, int width, int height, double margin_px);
 
+// Which horizontal border of an image `height` pixels high cuts the box (nearer than margin_px):
+// 2 the top, 3 the bottom (the sides of DoorFitOptions::free_side), -1 neither, 4 both.
+int cut_horizontal_side(const BoxDetection& box, int height, double margin_px);
+
+// Whether a box may be paired: inside the image by border_margin_px, or, for a class placed by
+// one horizontal edge (BoxStereoOptions::edge_types), inside it across and cut by one of the top
+// and bottom borders.
+bool pairable(const BoxDetection& box, int width, int height, const BoxStereoOptions& options);
+
 // Where the left image's region (continuous pixel coordinates, min and max corners) is found in
 // the right image: the shift (right minus left, pixels) maximizing the normalized
 // cross-correlation, searched within +-search_half_px of predicted_shift_px, to a tenth of a pixel

@@ -1,4 +1,5 @@
 // The `box_stereo:` section of a recognition config (learned_stereo_recognizer.hpp).
+#include <algorithm>
 #include <string>
 
 #include "vsl/config/node.hpp"
@@ -47,6 +48,7 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
                        "noise",
                        "rectangle_types",
                        "fit_rectangle",
+                       "edge_types",
                        "pair_by_surroundings",
                        "reference_depth_offset_m",
                        "height_range_m",
@@ -99,6 +101,18 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   }
   if (const auto types = section.find("rectangle_types")) out.rectangle_types = types_from(*types);
   if (const auto v = section.find("fit_rectangle")) out.fit_rectangle = v->as_bool();
+  if (const auto types = section.find("edge_types")) {
+    out.edge_types = types_from(*types);
+    for (const std::string& type : out.edge_types) {
+      if (std::find(out.rectangle_types.begin(), out.rectangle_types.end(), type) ==
+          out.rectangle_types.end()) {
+        types->fail("'" + type + "' is not one of rectangle_types");
+      }
+    }
+    if (!out.edge_types.empty() && !out.fit_rectangle) {
+      types->fail("placing a rectangle by one edge needs fit_rectangle: true");
+    }
+  }
   if (const auto v = section.find("pair_by_surroundings")) out.pair_by_surroundings = v->as_bool();
   if (const auto offsets = section.find("reference_depth_offset_m")) {
     offsets->expect_map();

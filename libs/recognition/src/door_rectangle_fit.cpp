@@ -58,15 +58,24 @@ struct EdgeResidual {
 
 // All edge residuals of one round, each through the Huber transform (door_rectangle_fit.hpp):
 // r' = r within delta, sign(r) sqrt(2 delta |r| - delta^2) beyond.
+// With a free side, one more residual holds the height near its initial value:
+// r_h = (h - h_0) / sigma_h, one pixel per sigma_h.
 struct HuberEdgeCost {
   const std::vector<EdgeResidual>* edges;
   double delta_px;
+  double initial_height_m = 0.0;
+  double height_sigma_m = 0.0;  // 0: no height prior
 
-  int NumResiduals() const { return static_cast<int>(edges->size()); }
+  int NumResiduals() const {
+    return static_cast<int>(edges->size()) + (height_sigma_m > 0.0 ? 1 : 0);
+  }
   template <class T>
   bool operator()(const T* theta, T* residuals) const {
     using std::abs;
     using std::sqrt;
+    if (height_sigma_m > 0.0) {
+      residuals[edges->size()] = (theta[5] - T(initial_height_m)) / T(height_sigma_m);
+    }
     for (std::size_t i = 0; i < edges->size(); ++i) {
       T r;
       if (!(*edges)[i](theta, &r)) return false;
@@ -235,6 +244,7 @@ SearchResult search_edges(const double* theta, const Eigen::Vector3d& e1, const 
                           double radius, const DoorFitOptions& options) {
   SearchResult result;
   for (int side = 0; side < 4; ++side) {
+    if (side == options.free_side) continue;
     std::array<std::vector<ProjectedSample>, 2> projected;
     double reach_px = 0.0;
     for (int k = 0; k < 2; ++k) {
@@ -314,7 +324,8 @@ std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
       edges.push_back({&cameras[static_cast<std::size_t>(m.camera)], e1, e2, up, m.alpha_beta,
                        m.normal, m.edge_px});
     }
-    const HuberEdgeCost cost{&edges, options.huber_px};
+    const HuberEdgeCost cost{&edges, options.huber_px, initial.height_m,
+                             options.free_side >= 0 ? options.free_side_sigma_m : 0.0};
     const Eigen::Matrix<double, 6, 1> start = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(theta);
     solved = solve_small(cost, start, 20);
     if (!solved) return std::nullopt;
@@ -341,6 +352,7 @@ std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
   }
   static constexpr std::array<const char*, 4> kSides{"left", "right", "top", "bottom"};
   for (std::size_t side = 0; side < 4 && fit.refusal.empty(); ++side) {
+    if (static_cast<int>(side) == options.free_side) continue;
     if (std::max(search.seen[0][side], search.seen[1][side]) >= options.min_seen_fraction) continue;
     const bool cut = std::max(search.cut[0][side], search.cut[1][side]) >= 0.5;
     fit.refusal = std::string(kSides[side]) + (cut ? " cut" : " hidden");

@@ -78,6 +78,13 @@ struct DoorFitOptions {
   double min_seen_fraction = 0.5;  // of each side's samples, in at least one image
   double max_rms_px = 1.2;         // of the seen samples' residuals at the solution
   double pixel_sigma_px = 0.5;     // floor of the residuals' RMS in the covariance
+  // A horizontal side (2 top, 3 bottom) that neither image shows (cut by the border, hidden by a
+  // worktop's lip or a chair), or -1. It is not searched for; the height is held near the
+  // initial one (the part of the door the images show) by a prior of free_side_sigma_m, and the
+  // fit measures the other horizontal edge and the vertical sides along that part. What it
+  // determines is then the seen edge's middle, not the centre.
+  int free_side = -1;
+  double free_side_sigma_m = 0.05;
 };
 
 enum class EdgeState { kSeen, kCut, kHidden };

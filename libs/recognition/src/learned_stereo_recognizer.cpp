@@ -113,13 +113,15 @@ class PairPlacer {
   std::optional<Placed> place(const BoxDetection& left, const BoxDetection& right,
                               const std::vector<BoxDetection>& left_boxes,
                               std::string& refusal) const {
+    // The box and 2 px around it, within the image (a box cut by the border reaches it).
     const Eigen::Vector2d margin(2.0, 2.0);
+    const Eigen::Vector2d image_size(left_grey_.cols, left_grey_.rows);
     const Eigen::Vector2d predicted = right.centre_px() - left.centre_px();
     const double width = std::max(left.width_px(), right.width_px());
     const Eigen::Vector2d search(0.2 * width + 4.0, 0.1 * left.height_px() + 3.0);
-    const auto whole = detail::find_in_right_image(left_grey_, right_grey_, left.min_px - margin,
-                                                   left.max_px + margin, predicted, search,
-                                                   options_.max_template_px);
+    const auto whole = detail::find_in_right_image(
+        left_grey_, right_grey_, (left.min_px - margin).cwiseMax(Eigen::Vector2d::Zero()),
+        (left.max_px + margin).cwiseMin(image_size), predicted, search, options_.max_template_px);
     if (!whole || whole->correlation < options_.min_correlation) {
       refusal = "correlation";
       return std::nullopt;
@@ -365,27 +367,34 @@ class PairPlacer {
     Eigen::Vector3d centre = 0.25 * (ends[0] + ends[1] + ends[2] + ends[3]);
     double height = 0.5 * ((ends[0] - ends[1]).norm() + (ends[2] - ends[3]).norm());
     double width = (0.5 * (ends[0] + ends[1]) - 0.5 * (ends[2] + ends[3])).norm();
+    int free_side = -1;
     if (options_.fit_rectangle) {
-      const auto fit = detail::fit_door_rectangle(detail::rectangle_from_ends(ends, up_in_left_),
-                                                  up_in_left_, fit_cameras_, {});
-      if (!fit || !fit->accepted) {
-        refusal = "fit: " + (fit ? fit->refusal : std::string("degenerate"));
-        return std::nullopt;
-      }
-      centre = fit->rectangle.centre_m;
+      const auto fit = fit_rectangle(box, detail::rectangle_from_ends(ends, up_in_left_), refusal);
+      if (!fit) return std::nullopt;
+      free_side = fit->free_side;
+      // With a free side, the point the fit determines is the seen edge's middle.
+      const double to_edge = free_side == 2 ? -0.5 : free_side == 3 ? 0.5 : 0.0;
+      centre = fit->rectangle.centre_m + to_edge * fit->rectangle.height_m * up_in_left_;
       height = fit->rectangle.height_m;
       width = fit->rectangle.width_m;
     }
     std::string type = box.type;
+    if (free_side == 2) type += "_bottom_edge";  // world::edge_node_type's names
+    if (free_side == 3) type += "_top_edge";
     for (const BoxStereoOptions::Retype& rule : options_.retype_by_height_m) {
-      if (rule.from == box.type && height >= rule.min_m && height <= rule.max_m) type = rule.to;
+      if (free_side < 0 && rule.from == box.type && height >= rule.min_m && height <= rule.max_m)
+        type = rule.to;
     }
     if (centre.z() < options_.min_depth_m || centre.z() > options_.max_depth_m) {
       refusal = "depth";
       return std::nullopt;
     }
-    if (type == box.type && !in_range(options_.height_range_m, box.type, height)) {
-      refusal = "height";
+    // Of a rectangle seen by one edge, only the part the images show: at least the class's least.
+    const BoxStereoOptions::Range* heights = range_of(options_.height_range_m, box.type);
+    const bool height_ok = free_side >= 0 ? heights == nullptr || height >= heights->min_m
+                                          : in_range(options_.height_range_m, box.type, height);
+    if ((type == box.type || free_side >= 0) && !height_ok) {
+      refusal = free_side >= 0 ? "edge: height" : "height";
       return std::nullopt;
     }
     if (!in_range(options_.width_range_m, box.type, width)) {
@@ -408,6 +417,40 @@ class PairPlacer {
     const double offset = depth_offset_of(options_, box.type);
     placed.triangulation.left_camera_position_m = centre + offset * centre.normalized();
     return placed;
+  }
+
+  // The rectangle fitted to the outline's edges in both images (door_rectangle_fit.hpp), from
+  // the box's corners. For a class placed by one edge (BoxStereoOptions::edge_types), a box cut
+  // by the top or bottom border, or a fit that finds no edge along its top or bottom, is fitted
+  // again with that side free: the seen part, measured by its sides and its other edge.
+  struct RectangleFit {
+    detail::DoorRectangle rectangle;
+    int free_side = -1;  // DoorFitOptions::free_side
+  };
+  std::optional<RectangleFit> fit_rectangle(const BoxDetection& box,
+                                            const detail::DoorRectangle& initial,
+                                            std::string& refusal) const {
+    const bool by_edge = std::find(options_.edge_types.begin(), options_.edge_types.end(),
+                                   box.type) != options_.edge_types.end();
+    detail::DoorFitOptions fit_options;
+    if (by_edge) {
+      const int cut = detail::cut_horizontal_side(box, left_grey_.rows, options_.border_margin_px);
+      fit_options.free_side = cut == 2 || cut == 3 ? cut : -1;
+    }
+    auto fit = detail::fit_door_rectangle(initial, up_in_left_, fit_cameras_, fit_options);
+    if (by_edge && fit_options.free_side < 0 && fit && !fit->accepted) {
+      const std::string& why = fit->refusal;
+      fit_options.free_side = why.starts_with("top ") ? 2 : why.starts_with("bottom ") ? 3 : -1;
+      if (fit_options.free_side >= 0) {
+        fit = detail::fit_door_rectangle(initial, up_in_left_, fit_cameras_, fit_options);
+      }
+    }
+    if (!fit || !fit->accepted) {
+      refusal = std::string(fit_options.free_side >= 0 ? "edge fit: " : "fit: ") +
+                (fit ? fit->refusal : std::string("degenerate"));
+      return std::nullopt;
+    }
+    return RectangleFit{fit->rectangle, fit_options.free_side};
   }
 
   const head::StereoCalibration& calibration_;

@@ -118,6 +118,28 @@ TEST(PairBoxes, RefusesOffTheLineTooFarTooDifferentAndCutBoxes) {
   EXPECT_EQ(pairs_of(box(0, 0, 100, 100, 300), box(0, 0, 100, 80, 300)), 0u);  // at the border
 }
 
+// A door placed by one edge (BoxStereoOptions::edge_types) may be cut by the top or the bottom
+// border, not by both and not by a side.
+TEST(PairBoxes, EdgeTypesPairBoxesCutByTheTopOrBottomBorder) {
+  const ParallelRig rig;
+  BoxStereoOptions options;
+  options.edge_types = {"door"};
+  const auto pairs_of = [&](const BoxDetection& l, const BoxDetection& r) {
+    return detail::pair_boxes({l}, {r}, rig.intrinsics, rig.intrinsics, rig.epipolar,
+                              rig.triangulator, options)
+        .size();
+  };
+  EXPECT_EQ(pairs_of(box(0, 100, 0, 200, 300), box(0, 75, 0, 175, 300)), 1u);      // top
+  EXPECT_EQ(pairs_of(box(0, 100, 200, 200, 480), box(0, 75, 200, 175, 480)), 1u);  // bottom
+  EXPECT_EQ(pairs_of(box(0, 100, 0, 200, 480), box(0, 75, 0, 175, 480)), 0u);      // both
+  EXPECT_EQ(pairs_of(box(0, 0, 0, 100, 300), box(0, 0, 0, 80, 300)), 0u);          // a side
+  EXPECT_EQ(pairs_of(box(1, 100, 0, 110, 40), box(1, 75, 0, 85, 40)), 0u);  // not an edge type
+  EXPECT_EQ(detail::cut_horizontal_side(box(0, 100, 3, 200, 300), 480, 8.0), 2);
+  EXPECT_EQ(detail::cut_horizontal_side(box(0, 100, 100, 200, 475), 480, 8.0), 3);
+  EXPECT_EQ(detail::cut_horizontal_side(box(0, 100, 100, 200, 300), 480, 8.0), -1);
+  EXPECT_EQ(detail::cut_horizontal_side(box(0, 100, 0, 200, 480), 480, 8.0), 4);
+}
+
 // A small box's sides jitter by a few pixels from image to image: within size_tolerance_px the
 // sizes agree whatever their ratio, beyond it the ratio decides.
 TEST(PairBoxes, SizesAgreeWithinAToleranceInPixelsOrARatio) {

@@ -49,6 +49,48 @@ TEST(DoorRectangleFit, RefusesADoorCutByTheImageBorder) {
   EXPECT_GT(fit->cut_fraction[0][0] + fit->cut_fraction[1][0], 0.9);
 }
 
+// The part of `door` between fractions `from` and `to` of its height (0 its bottom, 1 its top),
+// perturbed as a detector's box would be: what a fit with a free side starts from.
+DoorRectangle seen_part(const DoorRectangle& door, double from, double to) {
+  DoorRectangle part = perturbed(door);
+  part.height_m = (to - from) * door.height_m;
+  part.centre_m += (0.5 * (from + to) - 0.5) * door.height_m * up_in_left();
+  return part;
+}
+
+Eigen::Vector3d edge_middle(const DoorRectangle& r, double sign) {
+  return r.centre_m + sign * 0.5 * r.height_m * up_in_left();
+}
+
+TEST(DoorRectangleFit, PlacesTheTopEdgeOfADoorWhoseBottomIsHidden) {
+  DoorScene scene;
+  scene.hidden_below_fraction = 0.6;  // image rows below 60 % of the door covered
+  detail::DoorFitOptions options;
+  options.free_side = 3;
+  const auto fit = fit_rendered(scene, seen_part(scene.door, 0.45, 1.0), options);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_TRUE(fit->accepted) << fit->refusal;
+  EXPECT_LT((edge_middle(fit->rectangle, 1.0) - edge_middle(scene.door, 1.0)).norm(), 0.02);
+  EXPECT_NEAR(fit->rectangle.width_m, scene.door.width_m, 0.01);
+  EXPECT_NEAR(fit->rectangle.yaw_rad, scene.door.yaw_rad, 0.05);
+}
+
+TEST(DoorRectangleFit, PlacesTheBottomEdgeOfADoorCutAtTheTop) {
+  DoorScene scene;
+  scene.door.height_m = 1.3;
+  scene.door.centre_m += 1.2 * up_in_left();  // its top beyond the top border of both images
+  auto whole = fit_rendered(scene);
+  ASSERT_TRUE(whole.has_value());
+  EXPECT_FALSE(whole->accepted);
+  detail::DoorFitOptions options;
+  options.free_side = 2;
+  const auto fit = fit_rendered(scene, seen_part(scene.door, 0.0, 0.85), options);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_TRUE(fit->accepted) << fit->refusal;
+  EXPECT_LT((edge_middle(fit->rectangle, -1.0) - edge_middle(scene.door, -1.0)).norm(), 0.02);
+  EXPECT_NEAR(fit->rectangle.width_m, scene.door.width_m, 0.01);
+}
+
 TEST(DoorRectangleFit, EndsAndCornersAreTheSameRectangle) {
   const DoorRectangle door{Eigen::Vector3d(0.3, -0.2, 2.5), -0.4, 0.6, 1.9};
   const auto corners = rectangle_corners(door, up_in_left());

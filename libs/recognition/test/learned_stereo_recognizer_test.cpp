@@ -165,6 +165,24 @@ TEST(BoxStereoOptions, BarOptionsAreReadAndChecked) {
   }
 }
 
+TEST(BoxStereoOptions, EdgeTypesAreRectangleTypesWithTheFit) {
+  const auto options = [](const std::string& body) {
+    return box_stereo_options_from(
+        config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
+  };
+  EXPECT_TRUE(options("  min_correlation: 0.5\n").edge_types.empty());
+  EXPECT_EQ(options("  edge_types: [door]\n").edge_types, std::vector<std::string>{"door"});
+  for (const std::string bad : {"  edge_types: [handle]\n", "  edge_types: door\n",
+                                "  fit_rectangle: false\n  edge_types: [door]\n"}) {
+    try {
+      options(bad);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const config::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("box_stereo.edge_types"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(LearnedStereoRecognizer, RefusesFramesOfAnotherSize) {
   const test::StereoViews& views = test::StereoViews::kitchen();
   const LearnedStereoRecognizer recognizer = shipped(views.head());

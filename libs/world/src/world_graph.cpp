@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <thread>
 #include <unordered_map>
@@ -72,22 +73,31 @@ struct Nodes {
 Nodes select_nodes(const WorldModel& world, const WorldGraphOptions& options) {
   Nodes out;
   std::unordered_map<std::string, TypeId> type_ids;
-  for (std::size_t i = 0; i < world.objects.size(); ++i) {
-    const ObjectModel& object = world.objects[i];
-    if (!options.node_types.empty() &&
-        std::find(options.node_types.begin(), options.node_types.end(), object.type) ==
-            options.node_types.end()) {
-      continue;
-    }
-    auto [it, inserted] = type_ids.emplace(object.type, static_cast<TypeId>(type_ids.size()));
+  const auto add = [&](std::size_t object, const std::string& type, const Eigen::Vector3d& at) {
+    auto [it, inserted] = type_ids.emplace(type, static_cast<TypeId>(type_ids.size()));
     if (inserted) {
-      out.type_names.push_back(object.type);
+      out.type_names.push_back(type);
       out.type_counts.push_back(0);
     }
     ++out.type_counts[it->second];
-    out.object_index.push_back(i);
-    out.positions.push_back(object.world_position_m);
+    out.object_index.push_back(object);
+    out.positions.push_back(at);
     out.types.push_back(it->second);
+  };
+  const auto listed = [](const std::vector<std::string>& types, const std::string& type) {
+    return std::find(types.begin(), types.end(), type) != types.end();
+  };
+  for (std::size_t i = 0; i < world.objects.size(); ++i) {
+    const ObjectModel& object = world.objects[i];
+    if (options.node_types.empty() || listed(options.node_types, object.type)) {
+      add(i, object.type, object.world_position_m);
+    }
+    if (!listed(options.edge_node_types, object.type)) continue;
+    for (const FaceEdge edge : {FaceEdge::kTop, FaceEdge::kBottom}) {
+      if (const auto middle = face_edge_middle_m(object, edge)) {
+        add(i, edge_node_type(object.type, edge), *middle);
+      }
+    }
   }
   return out;
 }
@@ -240,6 +250,19 @@ std::vector<std::vector<TypedLink>> typed_link_lists(const std::vector<Pair>& pa
 }
 
 }  // namespace
+
+std::string edge_node_type(const std::string& type, FaceEdge edge) {
+  return type + (edge == FaceEdge::kTop ? "_top_edge" : "_bottom_edge");
+}
+
+std::optional<Eigen::Vector3d> face_edge_middle_m(const ObjectModel& object, FaceEdge edge) {
+  if (!object.size_m) return std::nullopt;
+  const Eigen::Vector3d object_z = object.world_orientation.normalized() * Eigen::Vector3d::UnitZ();
+  if (object_z.z() < std::cos(8.0 * std::numbers::pi / 180.0)) return std::nullopt;
+  const double half_height_m = 0.5 * object.size_m->z();
+  return object.world_position_m +
+         (edge == FaceEdge::kTop ? half_height_m : -half_height_m) * object_z;
+}
 
 WorldGraph WorldGraph::build(const WorldModel& world, const WorldGraphOptions& options) {
   if (!(options.link_threshold_m > 0.0) || !std::isfinite(options.link_threshold_m)) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <map>
 #include <random>
@@ -53,6 +55,47 @@ TEST(WorldGraph, LinksMatchBruteForce) {
     EXPECT_EQ(graph.link_count(), expected_links);
     EXPECT_GT(expected_links, 1000u);  // the test exercises a dense enough graph
   }
+}
+
+TEST(WorldGraph, EdgeNodesSitAtTheFrontFaceEdgesMiddles) {
+  WorldModel world;
+  ObjectModel door;
+  door.id = "door";
+  door.type = "door";
+  door.world_position_m = {1.0, 2.0, 0.45};
+  door.world_orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()));
+  door.size_m = Eigen::Vector3d(0.4, 0.02, 0.7);
+  ObjectModel unsized = door;
+  unsized.id = "unsized";
+  unsized.size_m.reset();
+  ObjectModel lying = door;  // a hatch in the floor: no top or bottom edge
+  lying.id = "lying";
+  lying.world_orientation = Eigen::Quaterniond(Eigen::AngleAxisd(1.2, Eigen::Vector3d::UnitX()));
+  ObjectModel handle;
+  handle.id = "handle";
+  handle.type = "handle";
+  handle.size_m = Eigen::Vector3d(0.16, 0.03, 0.02);
+  world.objects = {door, unsized, lying, handle};
+  world.index_ids();
+  WorldGraphOptions options;
+  options.node_types = {"door", "handle"};
+  options.edge_node_types = {"door"};
+  const WorldGraph graph = WorldGraph::build(world, options);
+  EXPECT_EQ(graph.node_count(), 6u);  // 4 objects, the sized upright door's 2 edges
+  const auto top = graph.find_type(edge_node_type("door", FaceEdge::kTop));
+  const auto bottom = graph.find_type(edge_node_type("door", FaceEdge::kBottom));
+  ASSERT_TRUE(top && bottom);
+  EXPECT_EQ(graph.type_name(*top), "door_top_edge");
+  EXPECT_EQ(graph.count_of_type(*top), 1u);
+  EXPECT_EQ(graph.count_of_type(*bottom), 1u);
+  for (NodeIndex n = 0; n < graph.node_count(); ++n) {
+    if (graph.type(n) != *top && graph.type(n) != *bottom) continue;
+    EXPECT_EQ(world.objects[graph.object_index(n)].id, "door");
+    const double z = graph.type(n) == *top ? 0.8 : 0.1;
+    EXPECT_LT((graph.world_position_m(n) - Eigen::Vector3d(1.0, 2.0, z)).norm(), 1e-12);
+  }
+  EXPECT_FALSE(face_edge_middle_m(world.objects[1], FaceEdge::kTop));
+  EXPECT_FALSE(face_edge_middle_m(world.objects[2], FaceEdge::kBottom));
 }
 
 TEST(WorldGraph, TypedQueriesMatchBruteForce) {

@@ -262,7 +262,7 @@ TEST(LocalizerCore, FailedResultCarriesNoPose) {
 // fusion and localization again with what it saw.
 TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
   Harness h;
-  h.engine.results = {too_uncertain(), result(Status::kLocalized, 3.0)};
+  h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.02)};
   h.core.request(7, h.now);
   for (int i = 0; i < 3; ++i) h.settle_and_recognize();
   h.fused(5);
@@ -279,9 +279,26 @@ TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
   h.fused(9);
   ASSERT_EQ(h.out.poses.size(), 1u);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
-  EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 3.0);
+  EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 1.02);
   EXPECT_EQ(h.engine.seen, (std::vector<std::size_t>{5, 9}));
   EXPECT_EQ(h.core.state(), State::kDone);
+}
+
+// The robot has not moved while its head looked again: a pose localized after the precision look
+// 20 cm from the one before it (1 cm sigmas each) is not to be trusted.
+TEST(LocalizerCore, APoseThatDisagreesWithTheOneBeforeThePrecisionLookFails) {
+  Harness h;
+  h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.2)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused(5);
+  h.settle_and_recognize();
+  h.fused(9);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_EQ(h.core.state(), State::kFailed);
+  EXPECT_NE(h.out.statuses.back().message.find("20.0 cm"), std::string::npos)
+      << h.out.statuses.back().message;
 }
 
 TEST(LocalizerCore, TooUncertainAfterTheLookLimitFailsWithoutAPose) {
@@ -444,7 +461,7 @@ TEST(LocalizerCore, PassiveFollowsARecordedPrecisionLook) {
   CoreOptions o = options();
   o.passive = true;
   Harness h(o);
-  h.engine.results = {too_uncertain(), result(Status::kLocalized, 4.0)};
+  h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.01)};
   h.core.request(7, h.now);
   h.core.followed_status(7, State::kFusing, h.now += 1000);
   h.fused();

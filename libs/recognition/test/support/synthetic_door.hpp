@@ -95,13 +95,15 @@ inline DoorRectangle perturbed(const DoorRectangle& door) {
   return start;
 }
 
-// The fit on the scene's two rendered images, from the perturbed start.
-inline std::optional<DoorFit> fit_rendered(const DoorScene& scene) {
+// The fit on the scene's two rendered images, from `start` (default: the perturbed door).
+inline std::optional<DoorFit> fit_rendered(const DoorScene& scene,
+                                           const std::optional<DoorRectangle>& start = {},
+                                           const detail::DoorFitOptions& options = {}) {
   auto cams = cameras();
   const auto images = render(scene, cams);
   cams[0].grey = &images[0];
   cams[1].grey = &images[1];
-  return fit_door_rectangle(perturbed(scene.door), up_in_left(), cams, {});
+  return fit_door_rectangle(start ? *start : perturbed(scene.door), up_in_left(), cams, options);
 }
 
 }  // namespace vsl::recognition::test

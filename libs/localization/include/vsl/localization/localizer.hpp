@@ -108,6 +108,11 @@ struct ValidationOptions {
   double precision_sigmas = 3.0;
   double required_position_m = 0.05;
   double required_angle_rad = 0.0349;  // 2 degrees
+  // Before the precision check each association of the refined pose is tested against the pose
+  // the others give (deleted_residuals.hpp, the w-test): the worst beyond the chi^2(3) quantile of
+  // this false-alarm probability is dropped and the pose refined again, until all pass; with
+  // fewer associations left than a localized pose needs, FAILED. 0 disables the test.
+  double outlier_test_alpha = 0.01;
 };
 
 struct LocalizerOptions {

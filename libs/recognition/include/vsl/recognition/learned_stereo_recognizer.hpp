@@ -81,6 +81,14 @@ struct BoxStereoOptions {
   // rectangle, door_rectangle_fit.hpp) and kept only when every side is seen; false: the centre
   // is the mean of the corners triangulated at their sides' disparities.
   bool fit_rectangle = true;
+  // Rectangle classes a pair may place by one horizontal edge when the images show the sides and
+  // that edge but not the other one (the box cut by the image's top or bottom border, or the
+  // fit finding no edge there: a worktop's lip, a chair): the fit measures the seen part
+  // (DoorFitOptions::free_side) and the percept is the seen edge's middle, of type
+  // "<type>_bottom_edge" or "<type>_top_edge" (the world graph's edge nodes,
+  // WorldGraphOptions::edge_node_types). The seen part must reach height_range_m's minimum (a
+  // drawer front is lower). Needs fit_rectangle; empty: such pairs are not placed.
+  std::vector<std::string> edge_types;
   // Each class's reference point lies this far behind where the box's correlation places it,
   // along the viewing ray, metres. A handle's is its bar's axis, 6 mm behind the bar's surface;
   // but the box holds the door behind the bar too, and the correlation lands 8 mm behind the bar

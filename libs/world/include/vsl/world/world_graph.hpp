@@ -27,7 +27,24 @@ struct WorldGraphOptions {
   std::vector<std::string> node_types;
   // Threads for building; 0 means one per hardware thread. The graph is the same for any value.
   unsigned threads = 0;
+  // Object types whose front face's top and bottom edges become nodes of their own, of types
+  // edge_node_type(type, kTop) and (type, kBottom), at the edges' middles: the reference point
+  // (the face's centre) moved half the object's height along its z. A recognizer that sees a
+  // door's bottom edge and sides but not its top (cut by the image border, hidden by a worktop's
+  // lip) reports the bottom edge's middle, a point of the door as well defined as its centre.
+  // Objects without a size, or whose z is not within 8 degrees of the world's vertical, have none.
+  std::vector<std::string> edge_node_types{};
 };
+
+enum class FaceEdge { kTop, kBottom };
+
+// "door_top_edge", "door_bottom_edge": the type of a front face's edge node (and of the percept a
+// recognizer reports for it).
+std::string edge_node_type(const std::string& type, FaceEdge edge);
+
+// The middle of the object's front face's top or bottom edge in the world frame (m), when the
+// object has a size and stands upright (its z within 8 degrees of world z).
+std::optional<Eigen::Vector3d> face_edge_middle_m(const ObjectModel& object, FaceEdge edge);
 
 // One end of a link as seen from the other node.
 struct Neighbour {

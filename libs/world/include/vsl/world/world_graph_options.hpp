@@ -6,7 +6,8 @@
 
 namespace vsl::world {
 
-// section: {link_threshold_m: 4.0, node_types: [door, handle]}; both keys optional. Throws
+// section: {link_threshold_m: 4.0, node_types: [door, handle], edge_node_types: [door]}; every
+// key optional. Throws
 // config::Error naming file, line and key for a bad value or an unknown key.
 WorldGraphOptions world_graph_options_from(const config::Node& section);
 
