@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <string>
@@ -97,13 +98,27 @@ TEST(LearnedStereoRecognizer, RefusedPairsSayWhy) {
   EXPECT_GT(refused, 0);
 }
 
+// A box_stereo section of keys `body` (each line indented two spaces), read as file b.yaml.
+BoxStereoOptions box_stereo_from(const std::string& body) {
+  return box_stereo_options_from(
+      config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
+}
+
+// Each of `bad` is refused with one line that names `where` (file, line and key).
+void expect_refused(std::initializer_list<std::string> bad, const std::string& where) {
+  for (const std::string& body : bad) {
+    try {
+      box_stereo_from(body);
+      ADD_FAILURE() << "accepted " << body;
+    } catch (const config::Error& e) {
+      EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+    }
+  }
+}
+
 // The noise model and the handle thickness are read from the config and checked.
 TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
-  const auto options = [](const std::string& body) {
-    return box_stereo_options_from(
-        config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
-  };
-  const BoxStereoOptions o = options(
+  const BoxStereoOptions o = box_stereo_from(
       "  noise: {handle: {reference_px: 2.5, disparity_px: 0.1, floor_m: 0.01}}\n"
       "  thickness_range_m: {handle: [0.0, 0.08]}\n");
   ASSERT_EQ(o.noise.size(), 1u);
@@ -112,38 +127,28 @@ TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
   EXPECT_EQ(o.noise[0].disparity_px, 0.1);
   EXPECT_EQ(o.noise[0].floor_m, 0.01);
   EXPECT_EQ(o.noise[0].shared_disparity_px, 0.0);  // optional: none claimed
-  EXPECT_EQ(options("  noise: {door: {reference_px: 0, disparity_px: 0.2, floor_m: 0.02, "
-                    "shared_disparity_px: 0.25}}\n")
+  EXPECT_EQ(box_stereo_from("  noise: {door: {reference_px: 0, disparity_px: 0.2, floor_m: 0.02, "
+                            "shared_disparity_px: 0.25}}\n")
                 .noise[0]
                 .shared_disparity_px,
             0.25);
   ASSERT_EQ(o.thickness_range_m.size(), 1u);
   EXPECT_EQ(o.thickness_range_m[0].max_m, 0.08);
-  for (const std::string bad :
-       {"  noise: {handle: {reference_px: -1, disparity_px: 0.1, floor_m: 0}}\n",
-        "  noise: {handle: {reference_px: 1, disparity_px: 0.1}}\n",
-        "  noise: {handle: {reference_px: 1, disparity_px: 0.1, floor_m: 0, shared_disparity_px: "
-        "-0.1}}\n",
-        "  thickness_range_m: {handle: [0.1, 0.05]}\n"}) {
-    try {
-      options(bad);
-      ADD_FAILURE() << "accepted " << bad;
-    } catch (const config::Error& e) {
-      EXPECT_NE(std::string(e.what()).find("b.yaml:2: box_stereo."), std::string::npos) << e.what();
-    }
-  }
+  expect_refused(
+      {"  noise: {handle: {reference_px: -1, disparity_px: 0.1, floor_m: 0}}\n",
+       "  noise: {handle: {reference_px: 1, disparity_px: 0.1}}\n",
+       "  noise: {handle: {reference_px: 1, disparity_px: 0.1, floor_m: 0, shared_disparity_px: "
+       "-0.1}}\n",
+       "  thickness_range_m: {handle: [0.1, 0.05]}\n"},
+      "b.yaml:2: box_stereo.");
 }
 
 // The bar model's options: which classes are bars, the trace's contrast, the ends' patch and
 // noise, and when two bars are one; bad values are one line naming the key.
 TEST(BoxStereoOptions, BarOptionsAreReadAndChecked) {
-  const auto options = [](const std::string& body) {
-    return box_stereo_options_from(
-        config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
-  };
-  const BoxStereoOptions defaults = options("  min_correlation: 0.5\n");
+  const BoxStereoOptions defaults = box_stereo_from("  min_correlation: 0.5\n");
   EXPECT_EQ(defaults.bar_types, std::vector<std::string>{"handle"});
-  const BoxStereoOptions o = options(
+  const BoxStereoOptions o = box_stereo_from(
       "  bar_types: []\n  bar_min_contrast: 90\n  bar_end_patch_px: 8\n"
       "  bar_end_noise: {reference_px: 1.5, disparity_px: 0.25}\n  same_bar_m: 0.04\n");
   EXPECT_TRUE(o.bar_types.empty());
@@ -152,35 +157,18 @@ TEST(BoxStereoOptions, BarOptionsAreReadAndChecked) {
   EXPECT_EQ(o.bar_end_noise.reference_px, 1.5);
   EXPECT_EQ(o.bar_end_noise.disparity_px, 0.25);
   EXPECT_EQ(o.same_bar_m, 0.04);
-  for (const std::string bad :
-       {"  bar_types: handle\n", "  bar_min_contrast: 800\n", "  bar_end_patch_px: 1\n",
-        "  bar_end_noise: {reference_px: 0, disparity_px: 0}\n",
-        "  bar_end_noise: {reference_px: 1, sigma: 2}\n", "  same_bar_m: -0.1\n"}) {
-    try {
-      options(bad);
-      ADD_FAILURE() << "accepted " << bad;
-    } catch (const config::Error& e) {
-      EXPECT_NE(std::string(e.what()).find("b.yaml:2: box_stereo."), std::string::npos) << e.what();
-    }
-  }
+  expect_refused({"  bar_types: handle\n", "  bar_min_contrast: 800\n", "  bar_end_patch_px: 1\n",
+                  "  bar_end_noise: {reference_px: 0, disparity_px: 0}\n",
+                  "  bar_end_noise: {reference_px: 1, sigma: 2}\n", "  same_bar_m: -0.1\n"},
+                 "b.yaml:2: box_stereo.");
 }
 
 TEST(BoxStereoOptions, EdgeTypesAreRectangleTypesWithTheFit) {
-  const auto options = [](const std::string& body) {
-    return box_stereo_options_from(
-        config::Node::load_string("box_stereo:\n" + body, "b.yaml").at("box_stereo"));
-  };
-  EXPECT_TRUE(options("  min_correlation: 0.5\n").edge_types.empty());
-  EXPECT_EQ(options("  edge_types: [door]\n").edge_types, std::vector<std::string>{"door"});
-  for (const std::string bad : {"  edge_types: [handle]\n", "  edge_types: door\n",
-                                "  fit_rectangle: false\n  edge_types: [door]\n"}) {
-    try {
-      options(bad);
-      ADD_FAILURE() << "accepted " << bad;
-    } catch (const config::Error& e) {
-      EXPECT_NE(std::string(e.what()).find("box_stereo.edge_types"), std::string::npos) << e.what();
-    }
-  }
+  EXPECT_TRUE(box_stereo_from("  min_correlation: 0.5\n").edge_types.empty());
+  EXPECT_EQ(box_stereo_from("  edge_types: [door]\n").edge_types, std::vector<std::string>{"door"});
+  expect_refused({"  edge_types: [handle]\n", "  edge_types: door\n",
+                  "  fit_rectangle: false\n  edge_types: [door]\n"},
+                 "box_stereo.edge_types");
 }
 
 TEST(LearnedStereoRecognizer, RefusesFramesOfAnotherSize) {
