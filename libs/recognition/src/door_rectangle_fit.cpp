@@ -356,6 +356,7 @@ std::optional<DoorFit> fit_door_rectangle(const DoorRectangle& initial,
     if (std::max(search.seen[0][side], search.seen[1][side]) >= options.min_seen_fraction) continue;
     const bool cut = std::max(search.cut[0][side], search.cut[1][side]) >= 0.5;
     fit.refusal = std::string(kSides[side]) + (cut ? " cut" : " hidden");
+    fit.refused_side = static_cast<int>(side);
   }
   if (fit.refusal.empty() && fit.rms_px > options.max_rms_px) fit.refusal = "residuals";
   if (fit.refusal.empty() && !inverse) fit.refusal = "undetermined";

@@ -24,7 +24,9 @@
 // image) or hidden (inside, no edge: an occluder, or a face the same shade as its background).
 // The cut, corner, occluded and one-sided cases are these states, not separate code paths: a
 // side none of whose images sees it enough leaves the rectangle unknown along it, and the fit is
-// refused.
+// refused; unless it is the top or the bottom and the caller frees it (DoorFitOptions::free_side):
+// its samples are left out and a prior holds the height, r_h = (h - h_0) / sigma_h, so the fit
+// determines the other horizontal edge's middle, c -+ (h / 2) up, however tall the door is.
 //
 // Uncertainty. At the solution, Sigma_theta = s^2 (J^T J)^-1 with J the Jacobian of the r' and
 // s the residuals' RMS (at least pixel_sigma_px). The samples along one side share its edge's
@@ -103,6 +105,7 @@ struct DoorFit {
   // "hidden" ("left hidden"); else "residuals" (RMS above max_rms_px); else "undetermined" (the
   // information matrix singular). Empty when accepted.
   std::string refusal;
+  int refused_side = -1;  // the side the refusal names (0 left, 1 right, 2 top, 3 bottom), or -1
 };
 
 // The rectangle through a vertical door's two sides' ends (left camera frame, metres: the first

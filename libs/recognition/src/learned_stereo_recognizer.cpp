@@ -439,9 +439,8 @@ class PairPlacer {
     }
     auto fit = detail::fit_door_rectangle(initial, up_in_left_, fit_cameras_, fit_options);
     if (by_edge && fit_options.free_side < 0 && fit && !fit->accepted) {
-      const std::string& why = fit->refusal;
-      fit_options.free_side = why.starts_with("top ") ? 2 : why.starts_with("bottom ") ? 3 : -1;
-      if (fit_options.free_side >= 0) {
+      if (fit->refused_side == 2 || fit->refused_side == 3) {
+        fit_options.free_side = fit->refused_side;
         fit = detail::fit_door_rectangle(initial, up_in_left_, fit_cameras_, fit_options);
       }
     }

@@ -82,6 +82,7 @@ TEST(DoorRectangleFit, PlacesTheBottomEdgeOfADoorCutAtTheTop) {
   auto whole = fit_rendered(scene);
   ASSERT_TRUE(whole.has_value());
   EXPECT_FALSE(whole->accepted);
+  EXPECT_EQ(whole->refused_side, 2) << whole->refusal;  // the top
   detail::DoorFitOptions options;
   options.free_side = 2;
   const auto fit = fit_rendered(scene, seen_part(scene.door, 0.0, 0.85), options);
