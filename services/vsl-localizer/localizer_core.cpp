@@ -261,12 +261,12 @@ std::optional<std::string> LocalizerCore::disagrees_with_the_look_before(
   }
   const double metres =
       (result.world_T_ego.translation() - before->world_T_ego.translation()).norm();
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "the pose after the precision look lies %.1f cm and %.1f sigma from the one before "
-                "it (%s)",
-                100.0 * metres, std::sqrt(d.distance_sq), result.message.c_str());
-  return std::string(text);
+  // Only the numbers are formatted: the localizer's message is appended whole, however long.
+  char numbers[64];
+  std::snprintf(numbers, sizeof numbers, "%.1f cm and %.1f sigma", 100.0 * metres,
+                std::sqrt(d.distance_sq));
+  return "the pose after the precision look lies " + std::string(numbers) +
+         " from the one before it (" + result.message + ")";
 }
 
 void LocalizerCore::start_active_look(const localization::LocalizationResult& result,

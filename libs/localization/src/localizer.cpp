@@ -409,6 +409,8 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
   // The w-test (deleted_residuals.hpp): the association the others contradict most, beyond the
   // quantile, is dropped and the pose refined without it, until every one passes.
   std::size_t dropped = 0;
+  const double w2_threshold =
+      v.outlier_test_alpha > 0.0 ? chi_square_quantile(3, v.outlier_test_alpha) : 0.0;
   const double needed = std::max(static_cast<double>(options.hypotheses.min_associations),
                                  v.min_explained_fraction * static_cast<double>(usable));
   while (v.outlier_test_alpha > 0.0 && refined.world_T_ego.matrix().allFinite() &&
@@ -419,7 +421,7 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
     for (std::size_t i = 0; i < w2.size(); ++i) {
       if (std::isfinite(w2[i]) && (worst == w2.size() || w2[i] > w2[worst])) worst = i;
     }
-    if (worst == w2.size() || w2[worst] <= chi_square_quantile(3, v.outlier_test_alpha)) break;
+    if (worst == w2.size() || w2[worst] <= w2_threshold) break;
     points.erase(points.begin() + static_cast<std::ptrdiff_t>(worst));
     result.associations.erase(result.associations.begin() + static_cast<std::ptrdiff_t>(worst));
     ++dropped;
