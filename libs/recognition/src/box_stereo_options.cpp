@@ -31,6 +31,65 @@ std::vector<std::string> types_from(const config::Node& types) {
   return out;
 }
 
+// {type: {reference_px, disparity_px, floor_m, shared_disparity_px}, ...} replacing the defaults;
+// shared_disparity_px optional (0).
+std::vector<BoxStereoOptions::Noise> noise_models_from(const config::Node& noise) {
+  noise.expect_map();
+  std::vector<BoxStereoOptions::Noise> out;
+  for (const std::string& type : noise.keys()) {
+    const config::Node model = noise.at(type);
+    model.expect_keys({"reference_px", "disparity_px", "floor_m", "shared_disparity_px"});
+    const auto shared = model.find("shared_disparity_px");
+    out.push_back({type, model.at("reference_px").as_double_in(0.0, 100.0),
+                   model.at("disparity_px").as_double_in(0.0, 100.0),
+                   model.at("floor_m").as_double_in(0.0, 10.0),
+                   shared ? shared->as_double_in(0.0, 100.0) : 0.0});
+    const BoxStereoOptions::Noise& n = out.back();
+    if (n.reference_px + n.disparity_px <= 0.0 && n.floor_m <= 0.0) {
+      model.fail("a noise model of all zeros gives no covariance");
+    }
+  }
+  return out;
+}
+
+// [type, ...], each one of the rectangle types, which must be fitted.
+std::vector<std::string> edge_types_from(const config::Node& types,
+                                         const BoxStereoOptions& options) {
+  std::vector<std::string> out = types_from(types);
+  for (const std::string& type : out) {
+    if (std::find(options.rectangle_types.begin(), options.rectangle_types.end(), type) ==
+        options.rectangle_types.end()) {
+      types.fail("'" + type + "' is not one of rectangle_types");
+    }
+  }
+  if (!out.empty() && !options.fit_rectangle) {
+    types.fail("placing a rectangle by one edge needs fit_rectangle: true");
+  }
+  return out;
+}
+
+// {door: {drawer_front: [0.1, 0.45]}}: from type -> {to type: [min_m, max_m]}.
+std::vector<BoxStereoOptions::Retype> retypes_from(const config::Node& retype) {
+  retype.expect_map();
+  std::vector<BoxStereoOptions::Retype> out;
+  for (const std::string& from : retype.keys()) {
+    for (const auto& range : ranges_from(retype.at(from))) {
+      out.push_back({from, range.type, range.min_m, range.max_m});
+    }
+  }
+  return out;
+}
+
+// {reference_px, disparity_px}, each optional, not both zero.
+void read_bar_end_noise(const config::Node& noise, BoxStereoOptions::BarEndNoise& out) {
+  noise.expect_keys({"reference_px", "disparity_px"});
+  if (const auto v = noise.find("reference_px")) out.reference_px = v->as_double_in(0.0, 100.0);
+  if (const auto v = noise.find("disparity_px")) out.disparity_px = v->as_double_in(0.0, 100.0);
+  if (out.reference_px + out.disparity_px <= 0.0) {
+    noise.fail("a bar end's noise of all zeros gives no covariance");
+  }
+}
+
 }  // namespace
 
 BoxStereoOptions box_stereo_options_from(const config::Node& section) {
@@ -80,39 +139,10 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   number("snap_min_band_px", out.snap_min_band_px, 0.0, 100.0);
   number("min_correlation", out.min_correlation, -1.0, 1.0);
   number("max_template_px", out.max_template_px, 16.0, 1e7);
-  // {type: {reference_px, disparity_px, floor_m, shared_disparity_px}, ...} replacing the
-  // defaults; shared_disparity_px optional (0).
-  if (const auto noise = section.find("noise")) {
-    noise->expect_map();
-    out.noise.clear();
-    for (const std::string& type : noise->keys()) {
-      const config::Node model = noise->at(type);
-      model.expect_keys({"reference_px", "disparity_px", "floor_m", "shared_disparity_px"});
-      const auto shared = model.find("shared_disparity_px");
-      out.noise.push_back({type, model.at("reference_px").as_double_in(0.0, 100.0),
-                           model.at("disparity_px").as_double_in(0.0, 100.0),
-                           model.at("floor_m").as_double_in(0.0, 10.0),
-                           shared ? shared->as_double_in(0.0, 100.0) : 0.0});
-      const BoxStereoOptions::Noise& n = out.noise.back();
-      if (n.reference_px + n.disparity_px <= 0.0 && n.floor_m <= 0.0) {
-        model.fail("a noise model of all zeros gives no covariance");
-      }
-    }
-  }
+  if (const auto noise = section.find("noise")) out.noise = noise_models_from(*noise);
   if (const auto types = section.find("rectangle_types")) out.rectangle_types = types_from(*types);
   if (const auto v = section.find("fit_rectangle")) out.fit_rectangle = v->as_bool();
-  if (const auto types = section.find("edge_types")) {
-    out.edge_types = types_from(*types);
-    for (const std::string& type : out.edge_types) {
-      if (std::find(out.rectangle_types.begin(), out.rectangle_types.end(), type) ==
-          out.rectangle_types.end()) {
-        types->fail("'" + type + "' is not one of rectangle_types");
-      }
-    }
-    if (!out.edge_types.empty() && !out.fit_rectangle) {
-      types->fail("placing a rectangle by one edge needs fit_rectangle: true");
-    }
-  }
+  if (const auto types = section.find("edge_types")) out.edge_types = edge_types_from(*types, out);
   if (const auto v = section.find("pair_by_surroundings")) out.pair_by_surroundings = v->as_bool();
   if (const auto offsets = section.find("reference_depth_offset_m")) {
     offsets->expect_map();
@@ -123,15 +153,8 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   }
   if (const auto r = section.find("height_range_m")) out.height_range_m = ranges_from(*r);
   if (const auto r = section.find("width_range_m")) out.width_range_m = ranges_from(*r);
-  // {door: {drawer_front: [0.1, 0.45]}}: from type -> {to type: [min_m, max_m]}.
   if (const auto retype = section.find("retype_by_height_m")) {
-    retype->expect_map();
-    out.retype_by_height_m.clear();
-    for (const std::string& from : retype->keys()) {
-      for (const auto& range : ranges_from(retype->at(from))) {
-        out.retype_by_height_m.push_back({from, range.type, range.min_m, range.max_m});
-      }
-    }
+    out.retype_by_height_m = retypes_from(*retype);
   }
   if (const auto r = section.find("length_range_m")) out.length_range_m = ranges_from(*r);
   if (const auto r = section.find("thickness_range_m")) out.thickness_range_m = ranges_from(*r);
@@ -139,18 +162,8 @@ BoxStereoOptions box_stereo_options_from(const config::Node& section) {
   number("bar_min_contrast", out.bar_min_contrast, 0.0, 765.0);
   number("bar_end_patch_px", out.bar_end_patch_px, 2.0, 100.0);
   number("same_bar_m", out.same_bar_m, 0.0, 10.0);
-  if (const auto noise = section.find("bar_end_noise")) {
-    noise->expect_keys({"reference_px", "disparity_px"});
-    if (const auto v = noise->find("reference_px")) {
-      out.bar_end_noise.reference_px = v->as_double_in(0.0, 100.0);
-    }
-    if (const auto v = noise->find("disparity_px")) {
-      out.bar_end_noise.disparity_px = v->as_double_in(0.0, 100.0);
-    }
-    if (out.bar_end_noise.reference_px + out.bar_end_noise.disparity_px <= 0.0) {
-      noise->fail("a bar end's noise of all zeros gives no covariance");
-    }
-  }
+  if (const auto noise = section.find("bar_end_noise"))
+    read_bar_end_noise(*noise, out.bar_end_noise);
   return out;
 }
 
