@@ -113,6 +113,143 @@ std::optional<TwoColours> two_colours(const Image& image, const cv::Rect& region
   return out;
 }
 
+// The bar's image line: the centroid and principal direction of its pixels, and K, the distance
+// of the background beside it (half the strip's width, from the minor variance t^2 / 12, + 2 px).
+// nullopt when the pixels are not elongated (a knob).
+struct BarLine {
+  Eigen::Vector2d centre, along, across;
+  int side = 0;
+};
+
+std::optional<BarLine> bar_line(const std::vector<Eigen::Vector2d>& pixels) {
+  BarLine line;
+  line.centre = Eigen::Vector2d::Zero();
+  for (const auto& p : pixels) line.centre += p;
+  line.centre /= static_cast<double>(pixels.size());
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const auto& p : pixels) scatter += (p - line.centre) * (p - line.centre).transpose();
+  scatter /= static_cast<double>(pixels.size());
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
+  const double minor = std::max(eigen.eigenvalues()[0], 0.0);
+  const double major = eigen.eigenvalues()[1];
+  if (!(major >= 4.0 * minor) || !(major > 0.0)) return std::nullopt;
+  line.along = eigen.eigenvectors().col(1);
+  line.across = Eigen::Vector2d(-line.along.y(), line.along.x());
+  line.side = static_cast<int>(std::lround(0.5 * std::sqrt(12.0 * minor))) + 2;
+  return line;
+}
+
+// The ridge along the line: how far a pixel stands out from the pixels K px to either side of it,
+// along the colour direction from the background to the bar (a highlight on the bar stands out
+// further; the background, not at all); the largest of three pixels across the line (its
+// direction is only as good as the box's pixels).
+class Ridge {
+ public:
+  Ridge(const Image& image, const TwoColours& colours, const BarLine& line)
+      : image_(image),
+        colours_(colours),
+        line_(line),
+        towards_bar_((colours.bar - colours.background).normalized()) {}
+
+  double at(const Eigen::Vector2d& p) const {
+    double best = -1e9;
+    for (int j = -1; j <= 1; ++j) {
+      const Eigen::Vector2d q = p + j * line_.across;
+      const Colour sides = 0.5 * (colour_at(q + line_.side * line_.across) +
+                                  colour_at(q - line_.side * line_.across));
+      best = std::max(best, (colour_at(q) - sides).dot(towards_bar_));
+    }
+    return best;
+  }
+
+  // On the bar: the ridge stands out by `on_level`, and the pixel on it has the bar's colour
+  // rather than the background's (a dark gap between doors beside a dark handle stands out too).
+  bool on_bar(const Eigen::Vector2d& p, double on_level) const {
+    if (!(at(p) >= on_level)) return false;
+    for (int j = -1; j <= 1; ++j) {
+      const Colour c = colour_at(p + j * line_.across);
+      if (l1(c, colours_.bar) < l1(c, colours_.background)) return true;
+    }
+    return false;
+  }
+
+ private:
+  Colour colour_at(const Eigen::Vector2d& q) const {
+    return image_.inside(q) ? image_.sample(q) : colours_.background;
+  }
+
+  const Image& image_;
+  const TwoColours& colours_;
+  const BarLine& line_;
+  Colour towards_bar_;
+};
+
+// The ridge's typical height: its median over the line's points inside the box (nullopt: fewer
+// than three).
+std::optional<double> typical_ridge(const Image& image, const Ridge& ridge, const BarLine& line,
+                                    const cv::Rect& box) {
+  std::vector<double> inside_box;
+  const int reach = static_cast<int>(std::ceil(std::hypot(box.width, box.height)));
+  for (int i = -reach; i <= reach; ++i) {
+    const Eigen::Vector2d p = line.centre + i * line.along;
+    if (!image.inside(p) || !(p.x() >= box.x && p.x() < box.x + box.width && p.y() >= box.y &&
+                              p.y() < box.y + box.height)) {
+      continue;
+    }
+    inside_box.push_back(ridge.at(p));
+  }
+  if (inside_box.size() < 3) return std::nullopt;
+  std::nth_element(inside_box.begin(),
+                   inside_box.begin() + static_cast<std::ptrdiff_t>(inside_box.size() / 2),
+                   inside_box.end());
+  return inside_box[inside_box.size() / 2];
+}
+
+// One end of the bar: the line followed from its centre in direction `step` (-1 or +1) while on
+// the bar, until max_gap steps off it; cut when it leaves the image or runs max_length_px.
+struct BarEnd {
+  Eigen::Vector2d px;
+  bool cut = false;
+  bool on_bar = false;  // some step was on the bar
+};
+
+BarEnd follow_to_end(const Image& image, const Ridge& ridge, const BarLine& line, double step,
+                     double typical, double max_length_px) {
+  const double on_level = 0.35 * typical;
+  const int max_gap = std::max(3, line.side);
+  BarEnd out;
+  double last_on = 0.0;
+  int gap = 0;
+  for (int i = 0;; ++i) {
+    const Eigen::Vector2d p = line.centre + step * i * line.along;
+    if (!image.inside(p) || i > max_length_px) {
+      out.cut = gap < max_gap;
+      break;
+    }
+    if (ridge.on_bar(p, on_level)) {
+      last_on = i;
+      gap = 0;
+      out.on_bar = true;
+    } else if (++gap >= max_gap) {
+      break;
+    }
+  }
+  // The end to a fraction of a pixel: where the ridge falls through half its typical height
+  // between the last step on the bar and the next.
+  double end = last_on + 0.5;
+  if (!out.cut) {
+    const double here = ridge.at(line.centre + step * last_on * line.along);
+    const double next = ridge.at(line.centre + step * (last_on + 1.0) * line.along);
+    const double half = 0.5 * typical;
+    if (here >= half && next < half)
+      end = last_on + (here - half) / (here - next);
+    else if (here < half)
+      end = last_on;
+  }
+  out.px = line.centre + step * end * line.along;
+  return out;
+}
+
 }  // namespace
 
 std::optional<TracedBar> trace_bar(const cv::Mat& bgr, const BoxDetection& box,
@@ -132,107 +269,20 @@ std::optional<TracedBar> trace_bar(const cv::Mat& bgr, const BoxDetection& box,
       colours->bar_pixels.size() < 6) {
     return std::nullopt;
   }
-
-  // The bar's image line: centroid and principal direction of its pixels in the box.
-  const std::vector<Eigen::Vector2d>& pixels = colours->bar_pixels;
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-  for (const auto& p : pixels) centre += p;
-  centre /= static_cast<double>(pixels.size());
-  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (const auto& p : pixels) scatter += (p - centre) * (p - centre).transpose();
-  scatter /= static_cast<double>(pixels.size());
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
-  const double minor = std::max(eigen.eigenvalues()[0], 0.0);
-  const double major = eigen.eigenvalues()[1];
-  if (!(major >= 4.0 * minor) || !(major > 0.0)) return std::nullopt;
-  const Eigen::Vector2d along = eigen.eigenvectors().col(1);
-  const Eigen::Vector2d across(-along.y(), along.x());
-  // A strip t wide has variance t^2 / 12 across it.
-  const int side = static_cast<int>(std::lround(0.5 * std::sqrt(12.0 * minor))) + 2;
-
-  // The ridge along the line: how far a pixel stands out from the pixels `side` px to either
-  // side of it, along the colour direction from the background to the bar (a highlight on the
-  // bar stands out further; the background, not at all); the largest of three pixels across the
-  // line (its direction is only as good as the box's pixels).
-  const Colour towards_bar = (colours->bar - colours->background).normalized();
-  const auto colour_at = [&](const Eigen::Vector2d& q) {
-    return image.inside(q) ? image.sample(q) : colours->background;
-  };
-  const auto ridge = [&](const Eigen::Vector2d& p) {
-    double best = -1e9;
-    for (int j = -1; j <= 1; ++j) {
-      const Eigen::Vector2d q = p + j * across;
-      const Colour sides = 0.5 * (colour_at(q + side * across) + colour_at(q - side * across));
-      best = std::max(best, (colour_at(q) - sides).dot(towards_bar));
-    }
-    return best;
-  };
-  // The ridge's typical height: its median over the bar's pixels in the box along the line.
-  std::vector<double> inside_box;
-  const int reach = static_cast<int>(std::ceil(std::hypot(inner.width, inner.height)));
-  for (int i = -reach; i <= reach; ++i) {
-    const Eigen::Vector2d p = centre + i * along;
-    if (!image.inside(p) || !(p.x() >= inner.x && p.x() < inner.x + inner.width &&
-                              p.y() >= inner.y && p.y() < inner.y + inner.height)) {
-      continue;
-    }
-    inside_box.push_back(ridge(p));
-  }
-  if (inside_box.size() < 3) return std::nullopt;
-  std::nth_element(inside_box.begin(),
-                   inside_box.begin() + static_cast<std::ptrdiff_t>(inside_box.size() / 2),
-                   inside_box.end());
-  const double typical = inside_box[inside_box.size() / 2];
-  if (!(typical >= 0.25 * min_contrast)) return std::nullopt;
-  const double on_level = 0.35 * typical;
-  // On the bar: the ridge stands out, and the pixel on it has the bar's colour rather than the
-  // background's (a dark gap between doors beside a dark handle stands out too).
-  const auto on_bar = [&](const Eigen::Vector2d& p) {
-    if (!(ridge(p) >= on_level)) return false;
-    for (int j = -1; j <= 1; ++j) {
-      const Colour c = colour_at(p + j * across);
-      if (l1(c, colours->bar) < l1(c, colours->background)) return true;
-    }
-    return false;
-  };
-
+  const auto line = bar_line(colours->bar_pixels);
+  if (!line) return std::nullopt;
+  const Ridge ridge(image, *colours, *line);
+  const auto typical = typical_ridge(image, ridge, *line, inner);
+  if (!typical || !(*typical >= 0.25 * min_contrast)) return std::nullopt;
   TracedBar out;
   out.contrast = l1(colours->bar, colours->background);
   bool found = false;
-  const int max_gap = std::max(3, side);
   for (std::size_t e = 0; e < 2; ++e) {
-    const double step = e == 0 ? -1.0 : 1.0;
-    double last_on = 0.0;
-    int gap = 0;
-    bool cut = false;
-    for (int i = 0;; ++i) {
-      const Eigen::Vector2d p = centre + step * i * along;
-      if (!image.inside(p) || i > max_length_px) {
-        cut = gap < max_gap;
-        break;
-      }
-      if (on_bar(p)) {
-        last_on = i;
-        gap = 0;
-        found = true;
-      } else if (++gap >= max_gap) {
-        break;
-      }
-    }
-    // The end to a fraction of a pixel: where the ridge falls through half its typical height
-    // between the last step on the bar and the next.
-    double end = last_on + 0.5;
-    if (!cut) {
-      const double here = ridge(centre + step * last_on * along);
-      const double next = ridge(centre + step * (last_on + 1.0) * along);
-      const double half = 0.5 * typical;
-      if (here >= half && next < half)
-        end = last_on + (here - half) / (here - next);
-      else if (here < half)
-        end = last_on;
-    }
-    out.cut[e] = cut;
-    out.ends_px[e] = centre + step * end * along;
+    const BarEnd end =
+        follow_to_end(image, ridge, *line, e == 0 ? -1.0 : 1.0, *typical, max_length_px);
+    found = found || end.on_bar;
+    out.cut[e] = end.cut;
+    out.ends_px[e] = end.px;
   }
   if (!found) return std::nullopt;
   return out;

@@ -299,6 +299,44 @@ class PairPlacer {
     return placed;
   }
 
+  // The shift of the strip [from_u, to_u] of a rectangle's box: its rows between a tenth of the
+  // box's height from the top and from the bottom, less those that other classes' boxes cross
+  // (3 px around them), of which the longest run is correlated near the whole box's shift; the
+  // whole box's shift when that run is under 30 % of the rows or does not correlate.
+  Eigen::Vector2d side_shift(const BoxDetection& box, const Eigen::Vector2d& whole_shift,
+                             const std::vector<BoxDetection>& left_boxes, double from_u,
+                             double to_u) const {
+    const double top = box.min_px.y() + 0.1 * box.height_px();
+    const double bottom = box.max_px.y() - 0.1 * box.height_px();
+    std::vector<std::pair<double, double>> clear{{top, bottom}};
+    for (const BoxDetection& other : left_boxes) {
+      if (other.type == box.type || other.max_px.x() < from_u || other.min_px.x() > to_u) continue;
+      std::vector<std::pair<double, double>> next;
+      for (const auto& [a, b] : clear) {
+        const double cut_from = other.min_px.y() - 3.0;
+        const double cut_to = other.max_px.y() + 3.0;
+        if (cut_to <= a || cut_from >= b) {
+          next.emplace_back(a, b);
+          continue;
+        }
+        if (cut_from > a) next.emplace_back(a, cut_from);
+        if (cut_to < b) next.emplace_back(cut_to, b);
+      }
+      clear = std::move(next);
+    }
+    const auto longest = std::max_element(
+        clear.begin(), clear.end(),
+        [](const auto& x, const auto& y) { return x.second - x.first < y.second - y.first; });
+    if (longest == clear.end() || longest->second - longest->first < 0.3 * (bottom - top)) {
+      return whole_shift;
+    }
+    const Eigen::Vector2d search(2.0 + 0.03 * box.width_px(), 1.5);
+    const auto m = detail::find_in_right_image(
+        left_grey_, right_grey_, Eigen::Vector2d(from_u, longest->first),
+        Eigen::Vector2d(to_u, longest->second), whole_shift, search, options_.max_template_px);
+    return m && m->correlation >= options_.min_correlation ? m->shift_px : whole_shift;
+  }
+
   // A door's front face: each vertical side's strip of the box correlated on its own (near the
   // whole box's shift), the four corners triangulated at their side's shift, the centre the
   // corners' mean (for a rectangle, exactly its centre), height and width the sides' mean length
@@ -310,41 +348,9 @@ class PairPlacer {
                                         const std::vector<BoxDetection>& left_boxes,
                                         std::string& refusal) const {
     const double strip = std::max(8.0, 0.15 * box.width_px());
-    const double top = box.min_px.y() + 0.1 * box.height_px();
-    const double bottom = box.max_px.y() - 0.1 * box.height_px();
-    const Eigen::Vector2d search(2.0 + 0.03 * box.width_px(), 1.5);
-    const auto side_shift = [&](double from_u, double to_u) {
-      std::vector<std::pair<double, double>> clear{{top, bottom}};
-      for (const BoxDetection& other : left_boxes) {
-        if (other.type == box.type || other.max_px.x() < from_u || other.min_px.x() > to_u)
-          continue;
-        std::vector<std::pair<double, double>> next;
-        for (const auto& [a, b] : clear) {
-          const double cut_from = other.min_px.y() - 3.0;
-          const double cut_to = other.max_px.y() + 3.0;
-          if (cut_to <= a || cut_from >= b) {
-            next.emplace_back(a, b);
-            continue;
-          }
-          if (cut_from > a) next.emplace_back(a, cut_from);
-          if (cut_to < b) next.emplace_back(cut_to, b);
-        }
-        clear = std::move(next);
-      }
-      const auto longest = std::max_element(
-          clear.begin(), clear.end(),
-          [](const auto& x, const auto& y) { return x.second - x.first < y.second - y.first; });
-      if (longest == clear.end() || longest->second - longest->first < 0.3 * (bottom - top)) {
-        return whole_shift;
-      }
-      const auto m = detail::find_in_right_image(
-          left_grey_, right_grey_, Eigen::Vector2d(from_u, longest->first),
-          Eigen::Vector2d(to_u, longest->second), whole_shift, search, options_.max_template_px);
-      return m && m->correlation >= options_.min_correlation ? m->shift_px : whole_shift;
-    };
     const std::array<Eigen::Vector2d, 2> shifts{
-        side_shift(box.min_px.x() - 4.0, box.min_px.x() + strip),
-        side_shift(box.max_px.x() - strip, box.max_px.x() + 4.0)};
+        side_shift(box, whole_shift, left_boxes, box.min_px.x() - 4.0, box.min_px.x() + strip),
+        side_shift(box, whole_shift, left_boxes, box.max_px.x() - strip, box.max_px.x() + 4.0)};
     // Corners: top left, bottom left (left side), top right, bottom right (right side).
     const std::array<Eigen::Vector2d, 4> corners{
         raw(box.min_px), raw(Eigen::Vector2d(box.min_px.x(), box.max_px.y())),
@@ -479,6 +485,23 @@ cv::Mat ideal_image(const cv::Mat& grey, const head::CameraIntrinsics& intrinsic
   return ideal;
 }
 
+// The correlation of a left box's surroundings (the box grown by its larger side, at least 16
+// px, each way) with the right image's at the pair's shift (within 3 x 2 px), -1 when they leave
+// the images or have no texture.
+double surroundings_correlation(const cv::Mat& left_grey, const cv::Mat& right_grey,
+                                const BoxDetection& a, const BoxDetection& b,
+                                double max_template_px) {
+  const double grow = std::max({a.width_px(), a.height_px(), 16.0});
+  const Eigen::Vector2d margin(grow, grow);
+  const Eigen::Vector2d image(left_grey.cols, left_grey.rows);
+  const Eigen::Vector2d lo = (a.min_px - margin).cwiseMax(Eigen::Vector2d::Zero());
+  const Eigen::Vector2d hi = (a.max_px + margin).cwiseMin(image);
+  const auto match =
+      detail::find_in_right_image(left_grey, right_grey, lo, hi, b.centre_px() - a.centre_px(),
+                                  Eigen::Vector2d(3.0, 2.0), max_template_px);
+  return match ? match->correlation : -1.0;
+}
+
 }  // namespace
 
 LearnedStereoRecognizer::LearnedStereoRecognizer(std::shared_ptr<const LearnedDetector> detector,
@@ -530,19 +553,10 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
   const PairPlacer placer(calibration, left_T_right, bgrs, left_grey, right_grey, ideal_greys,
                           up_in_left, options_);
   const detail::EpipolarGeometry epipolar(calibration.left, calibration.right, left_T_right);
-  // The surroundings of a box: the box grown by its larger side (at least 16 px) each way.
   const auto surroundings = [&](int l, int r) {
-    const BoxDetection& a = left_boxes[static_cast<std::size_t>(l)];
-    const BoxDetection& b = right_boxes[static_cast<std::size_t>(r)];
-    const double grow = std::max({a.width_px(), a.height_px(), 16.0});
-    const Eigen::Vector2d margin(grow, grow);
-    const Eigen::Vector2d image(left_grey.cols, left_grey.rows);
-    const Eigen::Vector2d lo = (a.min_px - margin).cwiseMax(Eigen::Vector2d::Zero());
-    const Eigen::Vector2d hi = (a.max_px + margin).cwiseMin(image);
-    const auto match =
-        detail::find_in_right_image(left_grey, right_grey, lo, hi, b.centre_px() - a.centre_px(),
-                                    Eigen::Vector2d(3.0, 2.0), options_.max_template_px);
-    return match ? match->correlation : -1.0;
+    return surroundings_correlation(left_grey, right_grey, left_boxes[static_cast<std::size_t>(l)],
+                                    right_boxes[static_cast<std::size_t>(r)],
+                                    options_.max_template_px);
   };
   const std::vector<detail::BoxPair> pairs = detail::pair_boxes(
       left_boxes, right_boxes, calibration.left, calibration.right, epipolar, placer.triangulator(),

@@ -154,6 +154,7 @@ class KitchenBuilder {
 
   // ---- planning and checks ------------------------------------------------------------------
 
+  // Every unit, opening and the table placed and checked: inside the room, no two overlapping.
   void plan() {
     const KitchenDimensions& d = d_;
     if (d.upper_bottom_m < worktop_top() + 0.3) {
@@ -163,6 +164,35 @@ class KitchenBuilder {
       layout_.origin.fail("dimensions: wall cupboards reach the ceiling (room height " +
                           fmt(room_.z()) + " m)");
     }
+    plan_units();
+    plan_openings();
+    if (layout_.table) {
+      const TableSpec& t = *layout_.table;
+      Footprint fp;
+      fp.origin = t.origin;
+      fp.what = "the table and its chairs";
+      fp.box = table_box(t);
+      const Eigen::AlignedBox3d inside(Vector3d(0, 0, 0), room_);
+      if (!inside.contains(fp.box))
+        t.origin.fail("the table and its chairs do not fit in the room");
+      footprints_.push_back(fp);
+    }
+    // Units against units, openings and the table; the table against the openings.
+    for (std::size_t i = 0; i < footprints_.size(); ++i) {
+      for (std::size_t j = i + 1; j < footprints_.size(); ++j) {
+        const Eigen::AlignedBox3d overlap = footprints_[i].box.intersection(footprints_[j].box);
+        if (!overlap.isEmpty() && (overlap.sizes().array() > 1e-6).all()) {
+          const Footprint& late = footprints_[j];
+          late.origin.fail(late.what + " overlaps " + footprints_[i].what + " (" +
+                           footprints_[i].origin.path + ")");
+        }
+      }
+    }
+  }
+
+  // The units along their walls' runs (placed_), and their footprints.
+  void plan_units() {
+    const KitchenDimensions& d = d_;
     std::map<WallSide, int> base_count, upper_count;
     for (const RunSpec& run : layout_.runs) {
       const double length = wall_length(run.wall);
@@ -202,7 +232,10 @@ class KitchenBuilder {
         }
       }
     }
-    // Openings: inside their wall, below the ceiling, not overlapping each other.
+  }
+
+  // The openings' footprints: inside their wall, below the ceiling, not overlapping each other.
+  void plan_openings() {
     std::vector<std::pair<const OpeningSpec*, bool>> openings;
     for (const OpeningSpec& w : layout_.windows) openings.push_back({&w, false});
     if (layout_.room_door) openings.push_back({&*layout_.room_door, true});
@@ -232,28 +265,6 @@ class KitchenBuilder {
                     : wall_box(o.wall, o.at_m, o.at_m + o.width_m, 0.0, kSillOverhang + 0.01,
                                o.sill_m - kSillThickness, o.sill_m + o.height_m);
       footprints_.push_back(fp);
-    }
-    if (layout_.table) {
-      const TableSpec& t = *layout_.table;
-      Footprint fp;
-      fp.origin = t.origin;
-      fp.what = "the table and its chairs";
-      fp.box = table_box(t);
-      const Eigen::AlignedBox3d inside(Vector3d(0, 0, 0), room_);
-      if (!inside.contains(fp.box))
-        t.origin.fail("the table and its chairs do not fit in the room");
-      footprints_.push_back(fp);
-    }
-    // Units against units, openings and the table; the table against the openings.
-    for (std::size_t i = 0; i < footprints_.size(); ++i) {
-      for (std::size_t j = i + 1; j < footprints_.size(); ++j) {
-        const Eigen::AlignedBox3d overlap = footprints_[i].box.intersection(footprints_[j].box);
-        if (!overlap.isEmpty() && (overlap.sizes().array() > 1e-6).all()) {
-          const Footprint& late = footprints_[j];
-          late.origin.fail(late.what + " overlaps " + footprints_[i].what + " (" +
-                           footprints_[i].origin.path + ")");
-        }
-      }
     }
   }
 
