@@ -37,6 +37,7 @@
 
 #include "vsl/localization/chi_square.hpp"
 #include "vsl/localization/deleted_residuals.hpp"
+#include "vsl/localization/floor_model.hpp"
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/localization_context.hpp"
 #include "vsl/localization/node_grid.hpp"
@@ -192,14 +193,16 @@ struct Localizer::State {
   world::WorldGraph graph;
   TypedAdjacency adjacency;
   NodeGrid grid;
+  FloorModel floor;
 };
 
 Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
   world::WorldGraph graph = world::WorldGraph::build(world, options.graph);
   TypedAdjacency adjacency = TypedAdjacency::build(graph);
   NodeGrid grid = NodeGrid::build(graph, kGridCellM);
-  state_ = std::make_unique<State>(
-      State{&world, std::move(options), std::move(graph), std::move(adjacency), std::move(grid)});
+  FloorModel floor = FloorModel::build(graph, options.pruning);
+  state_ = std::make_unique<State>(State{&world, std::move(options), std::move(graph),
+                                         std::move(adjacency), std::move(grid), std::move(floor)});
 }
 
 Localizer::~Localizer() = default;
@@ -494,14 +497,30 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
 
   // Pruning: proximity filtering (Eqs. 8-9), then the seeds' order.
   stages.enter(LocalizationStage::kPruning);
+  // A percept at no height of its type's objects over a floor can be no model object
+  // (floor_model.hpp): it is clutter the recognizer reported, known as such. The share of the
+  // percepts a hypothesis must explain (min_explained_fraction) bounds the clutter a scan may hold;
+  // known clutter beyond that share leaves no basis for a pose, and within it is set aside, the
+  // rest to be explained at the same share.
+  const auto has_type = [](const auto& type) { return type.has_value(); };
+  const std::vector<std::optional<world::TypeId>> types = percept_types(graph, percepts);
+  const auto typed = static_cast<std::size_t>(std::count_if(types.begin(), types.end(), has_type));
   CandidateSets candidates;
   {
     StageTimer timer(times.proximity_filter_ms);
-    candidates = proximity_filter(graph, state_->adjacency, percepts, noise, options.pruning);
+    candidates = proximity_filter(graph, state_->adjacency, percepts, noise, options.pruning,
+                                  state_->floor.admissible_types(types, percepts, noise));
   }
-  const std::size_t usable =
-      static_cast<std::size_t>(std::count_if(candidates.types.begin(), candidates.types.end(),
-                                             [](const auto& type) { return type.has_value(); }));
+  const auto usable = static_cast<std::size_t>(
+      std::count_if(candidates.types.begin(), candidates.types.end(), has_type));
+  const std::size_t off_floor_heights = typed - usable;
+  if (static_cast<double>(off_floor_heights) >
+      (1.0 - options.validation.min_explained_fraction) * static_cast<double>(typed)) {
+    result.message = std::to_string(off_floor_heights) + " of " + std::to_string(typed) +
+                     " percepts at no height of their type's objects over a floor: more clutter "
+                     "than validation.min_explained_fraction allows";
+    return finish();
+  }
   const LocalizationContext context{graph, state_->adjacency, state_->grid, percepts,
                                     noise, candidates,        options};
   std::optional<SeedChooser> chooser;
@@ -537,6 +556,10 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     stages.enter(LocalizationStage::kRefining);
     StageTimer timer(times.refinement_ms);
     refine_localized(context, validated.front(), usable, result);
+  }
+  if (off_floor_heights > 0) {
+    result.message += "; " + std::to_string(off_floor_heights) +
+                      " at no height of their type's objects over a floor";
   }
   return finish();
 }

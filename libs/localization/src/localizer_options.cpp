@@ -35,7 +35,8 @@ PruningOptions pruning(const Node& section) {
   PruningOptions out;
   section.expect_keys({"tau_sigmas", "min_tau_m", "mu_max_m", "kappa_max_rad",
                        "max_unsupported_fraction", "max_partners", "max_filtered_percepts",
-                       "max_percepts", "max_link_set", "use_gravity", "max_tilt_rad"});
+                       "max_percepts", "max_link_set", "use_gravity", "max_tilt_rad",
+                       "floor_heights_m", "floor_tolerance_m"});
   if (const auto v = section.find("tau_sigmas")) out.tau_sigmas = v->as_double_in(0.5, 20.0);
   if (const auto v = section.find("min_tau_m")) out.min_tau_m = v->as_double_in(0.0, 1.0);
   if (const auto v = section.find("mu_max_m")) out.mu_max_m = v->as_double_in(0.001, 2.0);
@@ -52,6 +53,15 @@ PruningOptions pruning(const Node& section) {
   if (const auto v = section.find("max_link_set")) out.max_link_set = int_in(*v, 1, 100000000);
   if (const auto v = section.find("use_gravity")) out.use_gravity = v->as_bool();
   if (const auto v = section.find("max_tilt_rad")) out.max_tilt_rad = v->as_double_in(0.0, 1.5);
+  if (const auto v = section.find("floor_heights_m")) {
+    out.floor_heights_m.clear();
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      out.floor_heights_m.push_back((*v)[i].as_double_in(-10000.0, 10000.0));
+    }
+  }
+  if (const auto v = section.find("floor_tolerance_m")) {
+    out.floor_tolerance_m = v->as_double_in(0.0, 10.0);
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace vsl::localization {
 namespace {
@@ -329,9 +330,19 @@ CandidateSets proximity_filter(const world::WorldGraph& graph, const TypedAdjace
                                const std::vector<FusedPercept>& percepts,
                                const std::vector<PerceptNoise>& noise,
                                const PruningOptions& options) {
+  return proximity_filter(graph, adjacency, percepts, noise, options,
+                          percept_types(graph, percepts));
+}
+
+CandidateSets proximity_filter(const world::WorldGraph& graph, const TypedAdjacency& adjacency,
+                               const std::vector<FusedPercept>& percepts,
+                               const std::vector<PerceptNoise>& noise,
+                               const PruningOptions& options,
+                               std::vector<std::optional<world::TypeId>> types) {
   const std::size_t m = percepts.size();
   CandidateSets out;
-  out.types = percept_types(graph, percepts);
+  out.types = std::move(types);
+  out.types.resize(m);
   out.nodes.assign(m, {});
   out.constrained.assign(m, false);
   out.outlier.assign(m, false);

@@ -27,7 +27,8 @@ TEST(LocalizerOptions, ReadsEverySection) {
   const LocalizerOptions options = localizer_options_from(config::Node::load_string(
       "world_graph: {link_threshold_m: 3.5, edge_node_types: [door]}\n"
       "percept_noise: {zeta_m: 100, ego_camera_position_m: [0.1, 0, 1.6], min_sigma_m: 0.002}\n"
-      "pruning: {tau_sigmas: 2.5, mu_max_m: 0.1, kappa_max_rad: 0.15}\n"
+      "pruning: {tau_sigmas: 2.5, mu_max_m: 0.1, kappa_max_rad: 0.15, floor_heights_m: [0, 3.2],\n"
+      "          floor_tolerance_m: 0.03}\n"
       "hypotheses: {min_associations: 4, max_interpretations: 500}\n"
       "validation: {gate_sigmas: 4, ambiguity_margin: 0.25}\n"
       "refinement: {huber_sigmas: 2, planar_prior: true}\n",
@@ -37,6 +38,8 @@ TEST(LocalizerOptions, ReadsEverySection) {
   EXPECT_DOUBLE_EQ(options.noise.zeta_m, 100);
   EXPECT_DOUBLE_EQ(options.noise.ego_camera_position_m.z(), 1.6);
   EXPECT_DOUBLE_EQ(options.pruning.tau_sigmas, 2.5);
+  EXPECT_EQ(options.pruning.floor_heights_m, (std::vector<double>{0.0, 3.2}));
+  EXPECT_DOUBLE_EQ(options.pruning.floor_tolerance_m, 0.03);
   EXPECT_EQ(options.hypotheses.min_associations, 4);
   EXPECT_EQ(options.hypotheses.max_interpretations, 500);
   EXPECT_DOUBLE_EQ(options.validation.gate_sigmas, 4);
@@ -49,8 +52,11 @@ TEST(LocalizerOptions, BadValuesNameFileLineAndKey) {
   EXPECT_EQ(error_of("pruning:\n  mu_max: 0.1\n"),
             "l.yaml:2: pruning.mu_max: unknown key (allowed: tau_sigmas, min_tau_m, mu_max_m, "
             "kappa_max_rad, max_unsupported_fraction, max_partners, max_filtered_percepts, "
-            "max_percepts, "
-            "max_link_set, use_gravity, max_tilt_rad)");
+            "max_percepts, max_link_set, use_gravity, max_tilt_rad, floor_heights_m, "
+            "floor_tolerance_m)");
+  EXPECT_EQ(error_of("pruning:\n  floor_heights_m: 0.0\n")
+                .rfind("l.yaml:2: pruning.floor_heights_m: ", 0),
+            0u);
   EXPECT_EQ(error_of("hypotheses: {min_associations: 3.5}\n"),
             "l.yaml:1: hypotheses.min_associations: expected an integer, got '3.5'");
   EXPECT_EQ(error_of("refinement: {planar_prior: maybe}\n"),

@@ -233,7 +233,8 @@ TEST(Localizer, RandomClutterIsNeverLocalizedConfidently) {
            Eigen::Vector3d(1.0 + 3.0 * u(rng), -2.0 + 4.0 * u(rng), 0.2 + 2.0 * u(rng)),
            std::nullopt, 1});
     }
-    EXPECT_NE(localizer.localize(clutter).status, Status::kLocalized) << "case " << c;
+    const auto r = localizer.localize(clutter);
+    EXPECT_NE(r.status, Status::kLocalized) << "case " << c << ": " << r.message;
   }
 }
 

@@ -59,6 +59,12 @@ struct PruningOptions {
   // (orientation_filter.hpp).
   bool use_gravity = true;
   double max_tilt_rad = 0.05;
+  // With gravity, the world z of each floor the robot may stand on (its ego origin: the point on
+  // the floor under it), and how far from such a height that origin may be (m): a percept at no
+  // height of its type's objects over a floor is known clutter (floor_model.hpp). Empty: percepts
+  // at any height.
+  std::vector<double> floor_heights_m{0.0};
+  double floor_tolerance_m = 0.05;
 };
 
 struct HypothesisOptions {

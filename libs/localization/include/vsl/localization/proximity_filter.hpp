@@ -89,4 +89,12 @@ CandidateSets proximity_filter(const world::WorldGraph& graph, const TypedAdjace
                                const std::vector<PerceptNoise>& noise,
                                const PruningOptions& options);
 
+// The same with each percept's type given (nullopt: the percept takes no part, as one of a type
+// the world does not have); the Localizer passes FloorModel::admissible_types.
+CandidateSets proximity_filter(const world::WorldGraph& graph, const TypedAdjacency& adjacency,
+                               const std::vector<FusedPercept>& percepts,
+                               const std::vector<PerceptNoise>& noise,
+                               const PruningOptions& options,
+                               std::vector<std::optional<world::TypeId>> types);
+
 }  // namespace vsl::localization
