@@ -11,7 +11,7 @@
 // uncertainty's sigma) lost right hypotheses in the kitchen scenarios (96 % -> 85 % localized).
 #pragma once
 
-#include <Eigen/Geometry>
+#include <Eigen/Core>
 
 #include <optional>
 #include <vector>
