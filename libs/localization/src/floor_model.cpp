@@ -37,7 +37,7 @@ bool FloorModel::height_admissible(world::TypeId type, const Eigen::Vector3d& eg
 std::vector<std::optional<world::TypeId>> FloorModel::admissible_types(
     std::vector<std::optional<world::TypeId>> types, const std::vector<FusedPercept>& percepts,
     const std::vector<PerceptNoise>& noise) const {
-  for (std::size_t i = 0; i < types.size() && i < percepts.size(); ++i) {
+  for (std::size_t i = 0; i < types.size(); ++i) {
     if (types[i] && !height_admissible(*types[i], percepts[i].ego_position_m, noise[i])) {
       types[i].reset();
     }

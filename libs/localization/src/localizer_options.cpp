@@ -53,12 +53,7 @@ PruningOptions pruning(const Node& section) {
   if (const auto v = section.find("max_link_set")) out.max_link_set = int_in(*v, 1, 100000000);
   if (const auto v = section.find("use_gravity")) out.use_gravity = v->as_bool();
   if (const auto v = section.find("max_tilt_rad")) out.max_tilt_rad = v->as_double_in(0.0, 1.5);
-  if (const auto v = section.find("floor_heights_m")) {
-    out.floor_heights_m.clear();
-    for (std::size_t i = 0; i < v->size(); ++i) {
-      out.floor_heights_m.push_back((*v)[i].as_double_in(-10000.0, 10000.0));
-    }
-  }
+  if (const auto v = section.find("floor_heights_m")) out.floor_heights_m = v->as_doubles();
   if (const auto v = section.find("floor_tolerance_m")) {
     out.floor_tolerance_m = v->as_double_in(0.0, 10.0);
   }
