@@ -24,6 +24,7 @@ void ScanTracker::begin(std::int64_t request_id) {
   frames_.clear();
   frame_keys_.clear();
   num_percepts_ = 0;
+  view_ = 0;
   if (!seen(request_id)) {
     seen_requests_.push_back(request_id);
     if (seen_requests_.size() > kRememberedRequests) seen_requests_.pop_front();
@@ -44,6 +45,7 @@ ScanTracker::FrameOutcome ScanTracker::add(fusion::Frame frame, std::int64_t fra
     return FrameOutcome::kScanFull;
   }
   num_percepts_ += frame.percepts.size();
+  frame.view = view_;
   frames_.push_back(std::move(frame));
   return FrameOutcome::kAdded;
 }
@@ -61,6 +63,7 @@ ScanTracker::StatusOutcome ScanTracker::on_status(std::int64_t request_id, std::
     out.adopted = true;
   }
   out.fuse = state == S::FUSING && last_state_ != S::FUSING;
+  if (out.fuse) ++view_;
   last_state_ = state;
   return out;
 }

@@ -5,7 +5,8 @@
 //  - PERCEPTS are added to the current scan; before any request they are ignored (counted); a
 //    list seen twice (same frame_id and frame_utime) counts once.
 //  - LOCALIZER_STATUS of the current request entering FUSING (a transition, not a repeat) asks
-//    for the fused set of everything received so far.
+//    for the fused set of everything received so far. Frames received after it belong to the
+//    next view (an active look: Frame::view, Eq. 4 per view).
 //  - Restart robustness: a status of a non-final state (not IDLE, DONE or FAILED) for a request_id
 //    never seen before adopts that request with an empty scan. A status of an earlier request
 //    (seen before) is ignored, so a late status never clears the current scan.
@@ -60,6 +61,7 @@ class ScanTracker {
   std::vector<fusion::Frame> frames_;
   std::set<std::pair<std::int64_t, std::int64_t>> frame_keys_;  // (frame_id, frame_utime)
   std::size_t num_percepts_ = 0;
+  int view_ = 0;  // the view frames now arriving belong to: entries into FUSING so far
   std::deque<std::int64_t> seen_requests_;  // the last kRememberedRequests ids, oldest first
 };
 

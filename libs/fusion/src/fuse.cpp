@@ -103,9 +103,16 @@ WeightedMean random_effects_mean(const std::vector<OwnPart>& own,
   return weighted_mean(own, positions_m, high);
 }
 
-// The fused percept of one cluster (formula in fuse.hpp).
-FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& members,
-                          const std::vector<Frame>& frames, const FieldOfView& field_of_view) {
+// The fused percept of one cluster (formula in fuse.hpp), and whether it passes Eq. 4 in some
+// view.
+struct FusedCluster {
+  FusedPercept percept;
+  bool passes = false;
+};
+
+FusedCluster fuse_cluster(const std::string& type, const std::vector<Member>& members,
+                          const std::vector<Frame>& frames, const FieldOfView& field_of_view,
+                          const FusionOptions& options) {
   FusedPercept out;
   out.type = type;
   out.num_percepts = static_cast<int>(members.size());
@@ -135,18 +142,27 @@ FusedPercept fuse_cluster(const std::string& type, const std::vector<Member>& me
     out.ego_camera_position_m += frames[f].ego_T_left_camera.translation();
   }
   out.ego_camera_position_m /= static_cast<double>(supporting.size());
-  // T_s: frames whose left camera should have seen the fused location; a frame that did see it
-  // counts even when the location falls just outside the margin, so that C <= T_s.
-  int expected = 0;
+  // C_v and T_v per view. T_v: frames of view v whose left camera should have seen the fused
+  // location; a frame that did see it counts even when the location falls just outside the
+  // margin, so that C_v <= T_v.
+  std::map<int, std::pair<int, int>> by_view;  // view -> (C_v, T_v)
   for (std::size_t f = 0; f < frames.size(); ++f) {
-    if (supporting.count(f) != 0 ||
-        field_of_view.sees(frames[f].ego_T_left_camera, out.ego_position_m)) {
+    const bool saw = supporting.count(f) != 0;
+    if (saw || field_of_view.sees(frames[f].ego_T_left_camera, out.ego_position_m)) {
+      auto& [support, expected] = by_view[frames[f].view];
+      support += saw ? 1 : 0;
       ++expected;
     }
   }
-  out.expected = expected;
-  out.confidence = static_cast<double>(out.support) / static_cast<double>(out.expected);
-  return out;
+  FusedCluster result;
+  for (const auto& [view, counts] : by_view) {
+    out.expected += counts.second;
+    if (counts.first == 0) continue;
+    result.passes = result.passes || passes_confidence(counts.first, counts.second, options);
+    out.confidence = std::max(out.confidence, static_cast<double>(counts.first) / counts.second);
+  }
+  result.percept = std::move(out);
+  return result;
 }
 
 bool ordered(const FusedPercept& a, const FusedPercept& b) {
@@ -193,11 +209,11 @@ FusionResult fuse(const std::vector<Frame>& frames, const FieldOfView& field_of_
       clusters[static_cast<std::size_t>(modes.cluster[i])].push_back(members[i]);
     }
     for (const std::vector<Member>& cluster : clusters) {
-      FusedPercept fused = fuse_cluster(type, cluster, frames, field_of_view);
-      if (passes_confidence(fused.support, fused.expected, options)) {
-        result.fused.push_back(std::move(fused));
+      FusedCluster fused = fuse_cluster(type, cluster, frames, field_of_view, options);
+      if (fused.passes) {
+        result.fused.push_back(std::move(fused.percept));
       } else {
-        result.rejected.push_back(std::move(fused));
+        result.rejected.push_back(std::move(fused.percept));
       }
     }
   }

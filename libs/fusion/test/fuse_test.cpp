@@ -113,6 +113,50 @@ TEST(Fuse, ExpectedCountsOnlyFramesThatLookedThere) {
   EXPECT_EQ(far.fused[0].expected, 3);  // only the frames that saw it
 }
 
+// Eq. 4 per view: a door the scan saw in 3 of its 4 frames that looked at it, then missed in
+// all 6 frames of an active look that also had it in view (steeply, cut by the border), stays a
+// fused percept; pooled over both views (3 of 10) it would fail. A mode the look alone saw
+// must pass in the look's own frames.
+TEST(Fuse, EachViewDecidesForItself) {
+  const Eigen::Vector3d camera(0.05, 0.045, 1.5);
+  const Eigen::Vector3d door(2.0, 0.0, 1.2);
+  const Eigen::Vector3d cupboard(2.0, 0.3, 1.9);
+  std::vector<Frame> frames(10);
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    frames[f].frame_id = static_cast<std::int64_t>(f);
+    const bool scan = f < 4;
+    frames[f].view = scan ? 0 : 1;
+    frames[f].ego_T_left_camera = look_at(camera, scan ? door : Eigen::Vector3d(2.0, 0.2, 1.7));
+  }
+  frames[0].percepts = {percept("door", door + Eigen::Vector3d(0.01, 0, 0), 0.01)};
+  frames[2].percepts = {percept("door", door - Eigen::Vector3d(0.01, 0, 0), 0.01)};
+  frames[3].percepts = {percept("door", door, 0.01)};
+  // The look sees a handle in 4 of its 6 frames, and something once that does not pass there.
+  for (std::size_t f : {4, 5, 7, 9}) frames[f].percepts = {percept("handle", cupboard, 0.01)};
+  frames[6].percepts = {percept("knob", cupboard, 0.01)};
+  frames[8].percepts = {percept("knob", cupboard + Eigen::Vector3d(0, 0.01, 0), 0.01)};
+  FusionOptions options;
+  options.iota_frames = 1;
+  const head::CameraIntrinsics camera_model;
+  const FieldOfView fov(camera_model, options);
+  ASSERT_TRUE(fov.sees(frames[5].ego_T_left_camera, door));
+  const FusionResult result = fuse(frames, fov, options);
+  ASSERT_EQ(result.fused.size(), 2u);
+  EXPECT_EQ(result.fused[0].type, "door");
+  EXPECT_EQ(result.fused[0].support, 3);
+  EXPECT_EQ(result.fused[0].expected, 10);
+  EXPECT_DOUBLE_EQ(result.fused[0].confidence, 0.75);  // the scan's 3 of 4
+  EXPECT_EQ(result.fused[1].type, "handle");
+  ASSERT_EQ(result.rejected.size(), 1u);
+  EXPECT_EQ(result.rejected[0].type, "knob");  // 2 of 6 frames of its only view
+  // One view for all (no active look): the paper's Eq. 4 over the 10 frames rejects the door,
+  // and the handle too (the scan's frames had its place in view: 4 of 10).
+  for (Frame& f : frames) f.view = 0;
+  const FusionResult pooled = fuse(frames, fov, options);
+  EXPECT_TRUE(pooled.fused.empty());
+  EXPECT_EQ(pooled.rejected.size(), 3u);
+}
+
 // Eq. 4: C / max(T_s - iota, 1) > E_min, strictly.
 TEST(Fuse, ConfidenceCriterionWithIota) {
   FusionOptions options;

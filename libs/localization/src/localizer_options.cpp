@@ -18,8 +18,8 @@ int int_in(const Node& node, std::int64_t min, std::int64_t max) {
   return static_cast<int>(value);
 }
 
-PerceptNoiseOptions percept_noise(const Node& section) {
-  PerceptNoiseOptions out;
+// Absent keys keep their value in `out` (LocalizerOptions' defaults).
+PerceptNoiseOptions percept_noise(const Node& section, PerceptNoiseOptions out) {
   section.expect_keys({"zeta_m", "ego_camera_position_m", "min_sigma_m"});
   if (const auto zeta = section.find("zeta_m")) out.zeta_m = zeta->as_double_in(1.0, 1e6);
   if (const auto camera = section.find("ego_camera_position_m")) {
@@ -31,8 +31,8 @@ PerceptNoiseOptions percept_noise(const Node& section) {
   return out;
 }
 
-PruningOptions pruning(const Node& section) {
-  PruningOptions out;
+// Absent keys keep their value in `out` (LocalizerOptions' defaults).
+PruningOptions pruning(const Node& section, PruningOptions out) {
   section.expect_keys({"tau_sigmas", "min_tau_m", "mu_max_m", "kappa_max_rad",
                        "max_unsupported_fraction", "max_partners", "max_filtered_percepts",
                        "max_percepts", "max_link_set", "use_gravity", "max_tilt_rad",
@@ -60,8 +60,8 @@ PruningOptions pruning(const Node& section) {
   return out;
 }
 
-HypothesisOptions hypotheses(const Node& section) {
-  HypothesisOptions out;
+// Absent keys keep their value in `out` (LocalizerOptions' defaults).
+HypothesisOptions hypotheses(const Node& section, HypothesisOptions out) {
   section.expect_keys({"min_associations", "same_position_m", "same_angle_rad",
                        "max_interpretations", "max_seeds", "confirming_seeds",
                        "single_seed_explained_fraction"});
@@ -83,8 +83,8 @@ HypothesisOptions hypotheses(const Node& section) {
   return out;
 }
 
-ValidationOptions validation(const Node& section) {
-  ValidationOptions out;
+// Absent keys keep their value in `out` (LocalizerOptions' defaults).
+ValidationOptions validation(const Node& section, ValidationOptions out) {
   section.expect_keys({"gate_sigmas", "ambiguity_margin", "clutter_density_per_m3",
                        "min_explained_fraction", "precision_sigmas", "required_position_m",
                        "required_angle_rad", "outlier_test_alpha"});
@@ -111,8 +111,8 @@ ValidationOptions validation(const Node& section) {
   return out;
 }
 
-RefinementOptions refinement(const Node& section) {
-  RefinementOptions out;
+// Absent keys keep their value in `out` (LocalizerOptions' defaults).
+RefinementOptions refinement(const Node& section, RefinementOptions out) {
   section.expect_keys({"huber_sigmas", "planar_prior", "max_iterations"});
   if (const auto v = section.find("huber_sigmas")) out.huber_sigmas = v->as_double_in(0.1, 100.0);
   if (const auto v = section.find("planar_prior")) out.planar_prior = v->as_bool();
@@ -127,12 +127,20 @@ LocalizerOptions localizer_options_from(const Node& root) {
   if (root.is_null()) return options;
   root.expect_keys({"runtime", "world_graph", "percept_noise", "pruning", "hypotheses",
                     "validation", "refinement"});
-  if (const auto s = root.find("world_graph")) options.graph = world::world_graph_options_from(*s);
-  if (const auto s = root.find("percept_noise")) options.noise = percept_noise(*s);
-  if (const auto s = root.find("pruning")) options.pruning = pruning(*s);
-  if (const auto s = root.find("hypotheses")) options.hypotheses = hypotheses(*s);
-  if (const auto s = root.find("validation")) options.validation = validation(*s);
-  if (const auto s = root.find("refinement")) options.refinement = refinement(*s);
+  if (const auto s = root.find("world_graph")) {
+    options.graph = world::world_graph_options_from(*s, options.graph);
+  }
+  if (const auto s = root.find("percept_noise")) options.noise = percept_noise(*s, options.noise);
+  if (const auto s = root.find("pruning")) options.pruning = pruning(*s, options.pruning);
+  if (const auto s = root.find("hypotheses")) {
+    options.hypotheses = hypotheses(*s, options.hypotheses);
+  }
+  if (const auto s = root.find("validation")) {
+    options.validation = validation(*s, options.validation);
+  }
+  if (const auto s = root.find("refinement")) {
+    options.refinement = refinement(*s, options.refinement);
+  }
   return options;
 }
 

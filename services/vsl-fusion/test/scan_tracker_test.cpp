@@ -51,6 +51,39 @@ TEST(ScanTracker, RequestStartsAnEmptyScanAndFusingTransitionsPublish) {
   EXPECT_EQ(t.request_id(), 8);
 }
 
+// Frames received after an entry into FUSING are the next view (an active look), and Eq. 4 is
+// applied per view: a door seen in both frames of the scan stays fused when the look's four frames
+// toward it miss it; had those frames come with the scan, it would not.
+TEST(ScanTracker, FramesAfterFusingAreTheNextView) {
+  // The identity camera looks along ego +z: a door 2 m along it is in every frame's view.
+  const auto looking = [](std::int64_t id, bool sees_door) {
+    fusion::Frame f;
+    f.frame_id = id;
+    if (sees_door) {
+      f.percepts.push_back({"door", Eigen::Vector3d(0, 0, 2), Eigen::Matrix3d::Identity() * 1e-4});
+    }
+    return f;
+  };
+  ScanTracker t = tracker();
+  t.start(7);
+  t.add(looking(0, true), 100);
+  t.add(looking(1, true), 200);
+  ASSERT_TRUE(t.on_status(7, S::FUSING).fuse);
+  ASSERT_EQ(t.fuse().fused.size(), 1u);
+  t.on_status(7, S::ACTIVE_VALIDATION);
+  for (std::int64_t id = 2; id < 6; ++id) t.add(looking(id, false), 100 * (id + 1));
+  ASSERT_TRUE(t.on_status(7, S::FUSING).fuse);
+  const fusion::FusionResult after_look = t.fuse();
+  ASSERT_EQ(after_look.fused.size(), 1u);
+  EXPECT_EQ(after_look.fused[0].expected, 6);
+
+  ScanTracker one_view = tracker();
+  one_view.start(8);
+  for (std::int64_t id = 0; id < 6; ++id) one_view.add(looking(id, id < 2), 100 * (id + 1));
+  ASSERT_TRUE(one_view.on_status(8, S::FUSING).fuse);
+  EXPECT_TRUE(one_view.fuse().fused.empty());  // 2 of max(6 - iota, 1) frames
+}
+
 TEST(ScanTracker, UnknownRequestInStatusIsAdoptedOldOnesAreNot) {
   ScanTracker t = tracker();
   // Fresh after a restart: the localizer is scanning for request 5.

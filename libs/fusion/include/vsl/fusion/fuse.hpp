@@ -2,6 +2,15 @@
 // 3D over the kept ones, T_s per mode from the frames' camera poses and the field of view, the
 // confidence criterion Eq. 4, and the fused percepts H_f.
 //
+// Eq. 4 per view. The frames of one view (the scan, or one active look after it: Frame::view)
+// look at a place from one robot pose and nearly one head pose, so a recognizer that misses an
+// object there misses it in most of them: their misses are not independent trials, and a look
+// steeply up at wall cupboards, which cuts a door seen whole in the scan at the image border,
+// would otherwise outvote the scan's detections of it. A mode passes when C_v / max(T_v - iota,
+// 1) > E_min in some view v (C_v, T_v its frames and expected frames in v); its location and
+// covariance use every supporting frame of every view. One view (no active look): the paper's
+// Eq. 4 unchanged.
+//
 // Fused location and covariance of a mode with supporting percepts (x_i, Sigma_i), i = 1..n.
 // Each percept's error is a part b shared by every frame of the scan and a part e_i of its own.
 // The recognizer sets the shared part of each: B_i = s^2 I + s_ray^2 r r^T (Percept::
@@ -44,8 +53,8 @@ struct FusionResult {
   std::size_t num_isolated = 0;  // percepts rejected by the varpi test
 };
 
-// Fuses every frame of one scan. Percepts must be valid (finite, covariance symmetric positive
-// definite): the daemon checks its input.
+// Fuses every frame of one scan and its active looks. Percepts must be valid (finite, covariance
+// symmetric positive definite): the daemon checks its input.
 FusionResult fuse(const std::vector<Frame>& frames, const FieldOfView& field_of_view,
                   const FusionOptions& options);
 

@@ -31,6 +31,9 @@ struct Frame {
   std::int64_t frame_id = 0;
   Eigen::Isometry3d ego_T_left_camera = Eigen::Isometry3d::Identity();  // at capture
   std::vector<Percept> percepts;
+  // The view the frame belongs to: 0 for the scan, k for the k-th active look after it. Eq. 4
+  // is applied per view (fuse.hpp).
+  int view = 0;
 };
 
 // A fused percept O^pf: one mode of the type's spatial density over the scan.
@@ -41,10 +44,11 @@ struct FusedPercept {
   Eigen::Matrix3d ego_covariance_m2 = Eigen::Matrix3d::Zero();
   // Mean left camera centre C_L of the supporting frames, ego (for the Eq. 7 noise model).
   Eigen::Vector3d ego_camera_position_m = Eigen::Vector3d::Zero();
-  int support = 0;          // C: frames whose percepts converged to this mode
-  int expected = 0;         // T_s: frames in which it should have been seen
-  double confidence = 0.0;  // C / T_s
-  int num_percepts = 0;     // percepts in the cluster (>= support when a frame saw it twice)
+  int support = 0;   // C: frames whose percepts converged to this mode, over every view
+  int expected = 0;  // T_s: frames in which it should have been seen, over every view
+  // C / T_s of the view where the mode was seen most consistently (fuse.hpp: Eq. 4 per view).
+  double confidence = 0.0;
+  int num_percepts = 0;  // percepts in the cluster (>= support when a frame saw it twice)
 };
 
 }  // namespace vsl::fusion

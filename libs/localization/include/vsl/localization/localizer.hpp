@@ -121,8 +121,14 @@ struct ValidationOptions {
   double outlier_test_alpha = 0.01;
 };
 
+// Every default equals config/localizer.yaml (a test compares them), so a tool run without a
+// config file localizes as the shipped daemon does.
 struct LocalizerOptions {
-  world::WorldGraphOptions graph;
+  // Nodes: what a recognizer reports (walls and worktops have none); a door's top and bottom
+  // edges are nodes too (a door cut by the image border or a worktop's lip).
+  world::WorldGraphOptions graph{.link_threshold_m = 4.0,
+                                 .node_types = {"door", "handle", "drawer_front", "window"},
+                                 .edge_node_types = {"door"}};
   PerceptNoiseOptions noise;
   PruningOptions pruning;
   HypothesisOptions hypotheses;

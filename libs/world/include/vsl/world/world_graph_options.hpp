@@ -7,8 +7,9 @@
 namespace vsl::world {
 
 // section: {link_threshold_m: 4.0, node_types: [door, handle], edge_node_types: [door]}; every
-// key optional. Throws
-// config::Error naming file, line and key for a bad value or an unknown key.
-WorldGraphOptions world_graph_options_from(const config::Node& section);
+// key optional: an absent one keeps its value in `defaults`, a list given replaces the default's.
+// Throws config::Error naming file, line and key for a bad value or an unknown key.
+WorldGraphOptions world_graph_options_from(const config::Node& section,
+                                           WorldGraphOptions defaults = {});
 
 }  // namespace vsl::world
