@@ -38,6 +38,24 @@ T load_named(const Node& node, const std::string& path,
   }
 }
 
+// A list of ego points for the head to fixate (m).
+std::vector<Eigen::Vector3d> gaze_targets(const Node& targets) {
+  if (!targets.is_sequence() || targets.size() == 0) {
+    targets.fail("must be a non-empty list of [x, y, z] ego points (m)");
+  }
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const std::array<double, 3> p = targets[i].as_array<3>();
+    const Eigen::Vector3d target(p[0], p[1], p[2]);
+    // The head cannot fixate a point at its own centre.
+    if (Eigen::Vector2d(target.x(), target.y()).norm() < 0.3) {
+      targets[i].fail("must lie at least 0.3 m from the ego z axis");
+    }
+    out.push_back(target);
+  }
+  return out;
+}
+
 }  // namespace
 
 LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive) {
@@ -63,20 +81,11 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
 
   const Node scan = section.at("scan");
   scan.expect_map();
-  scan.expect_keys(
-      {"ego_targets_m", "frames_per_target", "settle_timeout_s", "recognition_timeout_s"});
-  const Node targets = scan.at("ego_targets_m");
-  if (!targets.is_sequence() || targets.size() == 0) {
-    targets.fail("must be a non-empty list of [x, y, z] ego points (m)");
-  }
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    const std::array<double, 3> p = targets[i].as_array<3>();
-    const Eigen::Vector3d target(p[0], p[1], p[2]);
-    // The head cannot fixate a point at its own centre.
-    if (Eigen::Vector2d(target.x(), target.y()).norm() < 0.3) {
-      targets[i].fail("must lie at least 0.3 m from the ego z axis");
-    }
-    core.ego_gaze_targets_m.push_back(target);
+  scan.expect_keys({"ego_targets_m", "look_around_ego_targets_m", "frames_per_target",
+                    "settle_timeout_s", "recognition_timeout_s"});
+  core.ego_gaze_targets_m = gaze_targets(scan.at("ego_targets_m"));
+  if (const auto node = scan.find("look_around_ego_targets_m")) {
+    core.ego_look_around_targets_m = gaze_targets(*node);
   }
   if (const auto node = scan.find("frames_per_target")) {
     core.frames_per_target = positive_int(*node, 100);

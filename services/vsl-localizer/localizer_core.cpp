@@ -111,6 +111,8 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
   request_id_ = request_id;
   request_start_us_ = now_us;
   scan_index_ = 0;
+  scan_targets_ = options_.ego_gaze_targets_m;
+  looked_around_ = false;
   active_looks_ = 0;
   precision_look_ = false;
   step_ = 0;
@@ -128,11 +130,12 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
     enter_fusing(now_us);
   } else {
     scan_index_ = 1;
-    start_look(options_.ego_gaze_targets_m[0], now_us);
+    start_look(scan_targets_[0], false, now_us);
   }
 }
 
-void LocalizerCore::start_look(const Eigen::Vector3d& ego_target_m, std::int64_t now_us) {
+void LocalizerCore::start_look(const Eigen::Vector3d& ego_target_m, bool active,
+                               std::int64_t now_us) {
   ++step_;
   gaze_id_ = next_gaze_id_++;
   at_rest_frames_.clear();
@@ -141,12 +144,10 @@ void LocalizerCore::start_look(const Eigen::Vector3d& ego_target_m, std::int64_t
   look_target_ = ego_target_m;
   outputs_.gaze(GazeCommand{gaze_id_, ego_target_m});
   next_gaze_repeat_us_ = after(now_us, options_.gaze_repeat_period_s);
-  const bool active = active_looks_ > 0;
   detail_ = (active ? "active look " + std::to_string(active_looks_) + " of at most " +
                           std::to_string(options_.max_active_looks) +
                           (precision_look_ ? " (for precision)" : "")
-                    : "gaze target " + std::to_string(scan_index_) + " of " +
-                          std::to_string(options_.ego_gaze_targets_m.size())) +
+                    : scan_target_text()) +
             " at " + point_text(ego_target_m) + ": head moving";
   set_state(active ? State::kActiveValidation : State::kScanning, now_us);
 }
@@ -176,10 +177,9 @@ void LocalizerCore::percepts(std::int64_t frame_id, std::int64_t now_us) {
   }
   gaze_id_ = -1;
   at_rest_frames_.clear();
-  if (state_ == State::kScanning &&
-      scan_index_ < static_cast<int>(options_.ego_gaze_targets_m.size())) {
+  if (state_ == State::kScanning && scan_index_ < static_cast<int>(scan_targets_.size())) {
     ++scan_index_;
-    start_look(options_.ego_gaze_targets_m[static_cast<std::size_t>(scan_index_ - 1)], now_us);
+    start_look(scan_targets_[static_cast<std::size_t>(scan_index_ - 1)], false, now_us);
   } else {
     enter_fusing(now_us);
   }
@@ -221,6 +221,8 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
     case localization::Status::kFailed:
       if (result.too_uncertain) {
         look_for_precision(result, now_us);
+      } else if (!looked_around_ && !options_.ego_look_around_targets_m.empty()) {
+        look_around(result, now_us);
       } else {
         finish(State::kFailed, result, result.message, now_us);
       }
@@ -276,7 +278,7 @@ void LocalizerCore::start_active_look(const localization::LocalizationResult& re
   active_look_targets_m_.push_back(ego_target_m);
   ++active_looks_;
   precision_look_ = for_precision;
-  start_look(ego_target_m, now_us);
+  start_look(ego_target_m, true, now_us);
 }
 
 void LocalizerCore::follow_recorded_look(const localization::LocalizationResult& result,
@@ -287,6 +289,24 @@ void LocalizerCore::follow_recorded_look(const localization::LocalizationResult&
   ++step_;
   detail_ = why + ": following the recorded active look";
   set_state(State::kActiveValidation, now_us);
+}
+
+void LocalizerCore::look_around(const localization::LocalizationResult& result,
+                                std::int64_t now_us) {
+  looked_around_ = true;
+  if (options_.passive) {
+    // The recorded run decides: its next FUSING entry ends its look around, or it ended.
+    pending_result_ = result;
+    ++step_;
+    detail_ = "no pose from the scan (" + result.message + "): following the recorded look around";
+    set_state(State::kScanning, now_us);
+    return;
+  }
+  // Reported as it stands if a look-around target cannot be completed.
+  looking_to_resolve_ = result;
+  scan_targets_ = options_.ego_look_around_targets_m;
+  scan_index_ = 1;
+  start_look(scan_targets_[0], false, now_us);
 }
 
 void LocalizerCore::look_for_precision(const localization::LocalizationResult& result,
@@ -302,6 +322,10 @@ void LocalizerCore::look_for_precision(const localization::LocalizationResult& r
   }
   // Away from every gaze so far: the scan's and the active looks'.
   std::vector<Eigen::Vector3d> looked = options_.ego_gaze_targets_m;
+  if (looked_around_) {
+    looked.insert(looked.end(), options_.ego_look_around_targets_m.begin(),
+                  options_.ego_look_around_targets_m.end());
+  }
   looked.insert(looked.end(), active_look_targets_m_.begin(), active_look_targets_m_.end());
   const std::optional<Eigen::Vector3d> target = engine_.precision_target(result, looked);
   if (!target) {
@@ -335,6 +359,9 @@ void LocalizerCore::followed_status(std::int64_t request_id, State state, std::i
              "ambiguous after " + std::to_string(active_looks_ - 1) +
                  " active looks (the recorded run ended): " + pending_result_->message,
              now_us);
+    } else if (state_ == State::kScanning && pending_result_) {
+      finish(State::kFailed, *pending_result_,
+             pending_result_->message + " (the recorded run ended)", now_us);
     } else if (state_ == State::kScanning) {
       fail("the recorded run ended before its scan was fused", now_us);
     }
@@ -345,9 +372,9 @@ void LocalizerCore::tick(std::int64_t now_us) {
   if (state_ == State::kScanning || state_ == State::kActiveValidation) {
     if (!options_.passive && gaze_id_ >= 0 && now_us >= look_deadline_us_) {
       const std::string what = state_ == State::kScanning
-                                   ? "gaze target " + std::to_string(scan_index_)
+                                   ? scan_target_text()
                                    : "active look " + std::to_string(active_looks_);
-      if (state_ == State::kActiveValidation && looking_to_resolve_) {
+      if ((state_ == State::kActiveValidation || looked_around_) && looking_to_resolve_) {
         // The look could not be completed (a target the head cannot fixate, frames that do not
         // come): what was known before it still stands, and it is ambiguous, not a failure.
         const localization::LocalizationResult before = *looking_to_resolve_;
@@ -442,8 +469,17 @@ void LocalizerCore::set_state(State state, std::int64_t now_us) {
   publish_status(now_us);
 }
 
+std::string LocalizerCore::scan_target_text() const {
+  return std::string(looked_around_ ? "look-around target " : "gaze target ") +
+         std::to_string(scan_index_) + " of " + std::to_string(scan_targets_.size());
+}
+
 int LocalizerCore::total_steps() const {
-  const int scan = options_.passive ? 1 : static_cast<int>(options_.ego_gaze_targets_m.size());
+  int scan = options_.passive ? 1 : static_cast<int>(options_.ego_gaze_targets_m.size());
+  if (looked_around_) {
+    scan +=
+        (options_.passive ? 1 : static_cast<int>(options_.ego_look_around_targets_m.size())) + 1;
+  }
   return std::max(step_, scan + 1 + 2 * active_looks_);
 }
 

@@ -14,6 +14,10 @@
 //                       frames as above, then FUSING again; likewise while FAILED only as too
 //                       uncertain (one hypothesis, imprecise): a precision look at
 //                       choose_precision_look's target, away from every earlier gaze;
+//   SCANNING again      once per request, when a localization FAILED for want of evidence (not
+//                       merely too uncertain): the look-around targets, further round than the
+//                       scan (a robot facing a bare wall or a window sees too little in front of
+//                       it), then FUSING again;
 //   DONE / FAILED       POSE_ESTIMATE, one per request.
 // Passive mode (replays): no gaze commands; the FUSING entries of the original localizer's status
 // (read on another channel) mark the ends of the scan and of each active look.
@@ -50,8 +54,11 @@ const char* to_string(State state);
 
 struct CoreOptions {
   std::vector<Eigen::Vector3d> ego_gaze_targets_m;  // the scan, ego frame (m)
-  int frames_per_target = 2;                        // recognized frames at rest per gaze target
-  double settle_timeout_s = 15.0;                   // gaze command -> first frame at rest on it
+  // Looked at once per request, after the scan, when its percepts gave no pose (FAILED, not
+  // merely too uncertain): further round than the scan, ego frame (m). Empty: never.
+  std::vector<Eigen::Vector3d> ego_look_around_targets_m;
+  int frames_per_target = 2;       // recognized frames at rest per gaze target
+  double settle_timeout_s = 15.0;  // gaze command -> first frame at rest on it
   // The gaze command goes out again this often until the head is at rest on it: a driver that
   // started or restarted after the command (or a lost datagram) still gets it (s).
   double gaze_repeat_period_s = 1.0;
@@ -178,9 +185,12 @@ class LocalizerCore {
   const CoreOptions& options() const { return options_; }
 
  private:
-  void start_look(const Eigen::Vector3d& ego_target_m, std::int64_t now_us);
+  // A scan or look-around target (`active` false) or an active look's.
+  void start_look(const Eigen::Vector3d& ego_target_m, bool active, std::int64_t now_us);
   void enter_fusing(std::int64_t now_us);
   void localize(const std::vector<localization::FusedPercept>& percepts, std::int64_t now_us);
+  // A FAILED result for want of evidence, the first of the request: the look-around targets.
+  void look_around(const localization::LocalizationResult& result, std::int64_t now_us);
   // A FAILED result that is only too uncertain: a precision look while looks remain.
   void look_for_precision(const localization::LocalizationResult& result, std::int64_t now_us);
   // Why a localized result cannot stand: it disagrees with the pose too uncertain that the
@@ -200,6 +210,7 @@ class LocalizerCore {
   void set_state(State state, std::int64_t now_us);
   void publish_status(std::int64_t now_us);
   std::string step_text() const;
+  std::string scan_target_text() const;  // "gaze target k of N" or "look-around target k of N"
   int total_steps() const;
 
   CoreOptions options_;
@@ -214,6 +225,8 @@ class LocalizerCore {
   std::string detail_;  // what the current step waits for
 
   // The look in progress (scan target or active validation).
+  std::vector<Eigen::Vector3d> scan_targets_;  // the scan's, or the look-around's
+  bool looked_around_ = false;                 // the look-around targets were scanned
   int scan_index_ = 0;    // scan targets commanded so far (1-based once started)
   int active_looks_ = 0;  // active validation looks started
   int step_ = 0;          // "step k of N"

@@ -30,6 +30,7 @@ TEST(LocalizerConfig, MinimalAndDefaults) {
   ASSERT_EQ(c.core.ego_gaze_targets_m.size(), 1u);
   EXPECT_EQ(c.core.ego_gaze_targets_m[0], Eigen::Vector3d(2, 0, 1));
   EXPECT_FALSE(c.core.passive);
+  EXPECT_TRUE(c.core.ego_look_around_targets_m.empty());  // never looks around unless told
   EXPECT_EQ(c.core.frames_per_target, 2);
   EXPECT_NEAR(c.core.look_limits.max_elevation_rad, 35.0 * 3.141592653589793 / 180.0, 1e-6);
   const auto e = read_localizer_config(
@@ -56,6 +57,9 @@ TEST(LocalizerConfig, BadValuesAreOneLineWithFileLineAndKey) {
   EXPECT_NE(
       error_of(std::string(kMinimal).replace(base.find("[[2, 0, 1]]"), 11, "[]")).find("non-empty"),
       std::string::npos);
+  EXPECT_EQ(error_of(base + "    look_around_ego_targets_m: [[0.1, 0.1, 1]]\n"),
+            "/cfg/l.yaml:6: localizer.scan.look_around_ego_targets_m[0]: must lie at least 0.3 m "
+            "from the ego z axis");
   EXPECT_NE(error_of(base + "  passive: {status_channel: LOCALIZER_STATUS}\n")
                 .find("must differ from follow_status_channel"),
             std::string::npos);
@@ -67,6 +71,7 @@ TEST(LocalizerConfig, BadValuesAreOneLineWithFileLineAndKey) {
 TEST(LocalizerConfig, ShippedFileLoads) {
   const auto setup = load_localizer(config::Node::load_file("config/vsl-localizer.yaml"));
   EXPECT_EQ(setup.config.core.ego_gaze_targets_m.size(), 5u);
+  EXPECT_EQ(setup.config.core.ego_look_around_targets_m.size(), 4u);
   EXPECT_FALSE(setup.world.objects.empty());
 }
 

@@ -258,6 +258,86 @@ TEST(LocalizerCore, FailedResultCarriesNoPose) {
   EXPECT_EQ(h.core.state(), State::kFailed);
 }
 
+CoreOptions looking_around() {
+  CoreOptions o = options();
+  o.ego_look_around_targets_m = {Eigen::Vector3d(-0.4, 2.5, 1), Eigen::Vector3d(-0.4, -2.5, 1)};
+  return o;
+}
+
+// A scan that gives no pose for want of evidence (facing a bare wall): the head looks around
+// once, further round than the scan, and fusion and localization run again with what it saw.
+TEST(LocalizerCore, NoPoseFromTheScanLooksAroundOnceThenLocalizes) {
+  Harness h(looking_around());
+  LocalizationResult too_few = result(Status::kFailed);
+  too_few.message = "fewer than three percepts";
+  h.engine.results = {too_few, result(Status::kLocalized, 1.5)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused(2);
+  EXPECT_TRUE(h.out.poses.empty());
+  EXPECT_EQ(h.core.state(), State::kScanning);
+  ASSERT_EQ(h.out.gazes.size(), 4u);
+  EXPECT_EQ(h.out.gazes[3].ego_target_m, Eigen::Vector3d(-0.4, 2.5, 1));
+  EXPECT_NE(h.out.statuses.back().message.find("look-around target 1 of 2"), std::string::npos)
+      << h.out.statuses.back().message;
+  h.settle_and_recognize();
+  ASSERT_EQ(h.out.gazes.size(), 5u);
+  EXPECT_EQ(h.out.gazes[4].ego_target_m, Eigen::Vector3d(-0.4, -2.5, 1));
+  h.settle_and_recognize();
+  EXPECT_EQ(h.core.state(), State::kFusing);
+  h.fused(7);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_EQ(h.engine.seen, (std::vector<std::size_t>{2, 7}));
+  EXPECT_EQ(h.out.states().front(), State::kScanning);
+  EXPECT_EQ(h.core.state(), State::kDone);
+}
+
+// Once per request: failing again after the look around is the answer, and a result that is
+// only too uncertain takes a precision look instead.
+TEST(LocalizerCore, LooksAroundOnlyOnceAndNotWhenOnlyTooUncertain) {
+  Harness h(looking_around());
+  h.engine.results = {result(Status::kFailed), result(Status::kFailed)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  for (int i = 0; i < 2; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_EQ(h.out.gazes.size(), 5u);
+  EXPECT_EQ(h.core.state(), State::kFailed);
+
+  Harness u(looking_around());
+  u.engine.results = {too_uncertain(), result(Status::kLocalized, 1.01)};
+  u.core.request(7, u.now);
+  for (int i = 0; i < 3; ++i) u.settle_and_recognize();
+  u.fused();
+  ASSERT_EQ(u.out.gazes.size(), 4u);
+  EXPECT_EQ(u.out.gazes[3].ego_target_m, Eigen::Vector3d(2.0, -1.5, 1.0));  // for precision
+  EXPECT_EQ(u.core.state(), State::kActiveValidation);
+}
+
+// A look-around target the head never settles on: the scan's answer stands, with why.
+TEST(LocalizerCore, ALookAroundThatNeverSettlesEndsWithTheScansAnswer) {
+  Harness h(looking_around());
+  LocalizationResult none = result(Status::kFailed);
+  none.message = "no hypothesis is consistent with the percepts";
+  h.engine.results = {none};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  h.core.tick(h.now += 6 * kSecond);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_EQ(h.out.poses[0].message.rfind("no hypothesis is consistent with the percepts; "
+                                         "look-around target 1 of 2 at",
+                                         0),
+            0u)
+      << h.out.poses[0].message;
+  EXPECT_TRUE(h.out.poses[0].result.world_T_ego.isApprox(Eigen::Isometry3d::Identity()));
+}
+
 // A pose too uncertain is not the end: a precision look away from every earlier gaze, then
 // fusion and localization again with what it saw.
 TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
@@ -474,6 +554,37 @@ TEST(LocalizerCore, PassiveFollowsARecordedPrecisionLook) {
   EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
   EXPECT_TRUE(h.out.gazes.empty());
   EXPECT_TRUE(h.engine.precision_looked.empty());  // the recorded run chose its looks
+}
+
+// Replays follow a recorded look around (its FUSING entry), and a recorded run that did not
+// look around ends with the scan's answer.
+TEST(LocalizerCore, PassiveFollowsARecordedLookAround) {
+  CoreOptions o = looking_around();
+  o.passive = true;
+  Harness h(o);
+  h.engine.results = {result(Status::kFailed), result(Status::kLocalized, 1.5)};
+  h.core.request(7, h.now);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  h.fused();
+  EXPECT_EQ(h.core.state(), State::kScanning);
+  h.core.followed_status(7, State::kScanning, h.now += 1000);
+  h.core.followed_status(7, State::kFusing, h.now += 1000);
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_TRUE(h.out.gazes.empty());
+
+  Harness ended(o);
+  LocalizationResult too_few = result(Status::kFailed);
+  too_few.message = "fewer than three percepts";
+  ended.engine.results = {too_few};
+  ended.core.request(7, ended.now);
+  ended.core.followed_status(7, State::kFusing, ended.now += 1000);
+  ended.fused();
+  ended.core.followed_status(7, State::kFailed, ended.now += 1000);
+  ASSERT_EQ(ended.out.poses.size(), 1u);
+  EXPECT_EQ(ended.out.poses[0].result.status, Status::kFailed);
+  EXPECT_EQ(ended.out.poses[0].message, "fewer than three percepts (the recorded run ended)");
 }
 
 TEST(LocalizerCore, PassiveReportsTooUncertainWhenTheRecordedRunEnds) {
