@@ -120,6 +120,7 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
   num_hypotheses_ = 0;
   pending_result_.reset();
   looking_to_resolve_.reset();
+  too_uncertain_before_.reset();
   active_look_targets_m_.clear();
   gaze_id_ = -1;
   if (options_.passive) {
@@ -220,6 +221,7 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
       return;
     case localization::Status::kFailed:
       if (result.too_uncertain) {
+        too_uncertain_before_ = result;
         look_for_precision(result, now_us);
       } else if (!looked_around_ && !options_.ego_look_around_targets_m.empty()) {
         look_around(result, now_us);
@@ -252,9 +254,8 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
 
 std::optional<std::string> LocalizerCore::disagrees_with_the_look_before(
     const localization::LocalizationResult& result) const {
-  const auto& before = options_.passive ? pending_result_ : looking_to_resolve_;
-  if (options_.look_agreement_alpha <= 0.0 || !before || !before->too_uncertain)
-    return std::nullopt;
+  const auto& before = too_uncertain_before_;
+  if (options_.look_agreement_alpha <= 0.0 || !before) return std::nullopt;
   const localization::PoseDisagreement d = localization::pose_disagreement(
       before->world_T_ego, before->covariance, result.world_T_ego, result.covariance);
   if (d.dof == 0 ||
@@ -267,8 +268,8 @@ std::optional<std::string> LocalizerCore::disagrees_with_the_look_before(
   char numbers[64];
   std::snprintf(numbers, sizeof numbers, "%.1f cm and %.1f sigma", 100.0 * metres,
                 std::sqrt(d.distance_sq));
-  return "the pose after the precision look lies " + std::string(numbers) +
-         " from the one before it (" + result.message + ")";
+  return "the pose after the looks lies " + std::string(numbers) +
+         " from the one too uncertain before them (" + result.message + ")";
 }
 
 void LocalizerCore::start_active_look(const localization::LocalizationResult& result,

@@ -66,7 +66,7 @@ struct CoreOptions {
   double fusing_timeout_s = 5.0;        // FUSING -> FUSED_PERCEPTS, per attempt
   int fusing_attempts = 3;              // FUSING entries before FAILED
   int max_active_looks = 3;             // active validation looks per request
-  // A pose localized after a precision look must agree with the pose too uncertain before it
+  // A pose localized after later looks must agree with the last pose of the request too uncertain
   // (the robot has not moved; pose_agreement.hpp): beyond the chi-square quantile of this
   // false-alarm probability the request FAILS. 0: not tested.
   double look_agreement_alpha = 0.01;
@@ -193,8 +193,9 @@ class LocalizerCore {
   void look_around(const localization::LocalizationResult& result, std::int64_t now_us);
   // A FAILED result that is only too uncertain: a precision look while looks remain.
   void look_for_precision(const localization::LocalizationResult& result, std::int64_t now_us);
-  // Why a localized result cannot stand: it disagrees with the pose too uncertain that the
-  // precision look just taken was to refine (CoreOptions::look_agreement_alpha).
+  // Why a localized result cannot stand: it disagrees with the last pose of this request that
+  // was too uncertain, which the looks since were to refine (CoreOptions::look_agreement_alpha;
+  // the robot has not moved).
   std::optional<std::string> disagrees_with_the_look_before(
       const localization::LocalizationResult& result) const;
   // An active look (discriminating or for precision) at `ego_target_m`, resolving `result`.
@@ -247,6 +248,8 @@ class LocalizerCore {
   std::optional<localization::LocalizationResult> looking_to_resolve_;
   std::vector<Eigen::Vector3d> active_look_targets_m_;  // this request's active looks (ego, m)
   bool precision_look_ = false;  // the active look in progress is for precision, not ambiguity
+  // The last result of this request that was too uncertain (a pose the later ones must agree with).
+  std::optional<localization::LocalizationResult> too_uncertain_before_;
   // Passive: the last ambiguous result, reported when the log's run ends.
   std::optional<localization::LocalizationResult> pending_result_;
   State followed_state_ = State::kIdle;

@@ -318,6 +318,24 @@ TEST(LocalizerCore, LooksAroundOnlyOnceAndNotWhenOnlyTooUncertain) {
   EXPECT_EQ(u.core.state(), State::kActiveValidation);
 }
 
+// The robot has not moved all request: a pose localized after looking around must agree with
+// a pose too uncertain before it, even with a look between them that found too little.
+TEST(LocalizerCore, APoseAfterLookingAroundMustAgreeWithAnEarlierImprecisePose) {
+  Harness h(looking_around());
+  h.engine.results = {too_uncertain(), result(Status::kFailed), result(Status::kLocalized, 1.2)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  h.settle_and_recognize();  // the precision look
+  h.fused();
+  ASSERT_EQ(h.out.gazes.size(), 5u);  // then the look around
+  for (int i = 0; i < 2; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
+  EXPECT_NE(h.out.poses[0].message.find("20.0 cm"), std::string::npos) << h.out.poses[0].message;
+}
+
 // A look-around target the head never settles on: the scan's answer stands, with why.
 TEST(LocalizerCore, ALookAroundThatNeverSettlesEndsWithTheScansAnswer) {
   Harness h(looking_around());
