@@ -29,50 +29,18 @@ TEST(LocalizerOptions, DefaultsAreTheShippedConfig) {
   const LocalizerOptions shipped =
       localizer_options_from(config::Node::load_file("config/localizer.yaml"));
   const LocalizerOptions defaults;
-  EXPECT_EQ(defaults.graph.link_threshold_m, shipped.graph.link_threshold_m);
-  EXPECT_EQ(defaults.graph.node_types, shipped.graph.node_types);
-  EXPECT_EQ(defaults.graph.edge_node_types, shipped.graph.edge_node_types);
-  EXPECT_EQ(defaults.graph.threads, shipped.graph.threads);
-  EXPECT_EQ(defaults.noise.zeta_m, shipped.noise.zeta_m);
-  EXPECT_EQ(defaults.noise.ego_camera_position_m, shipped.noise.ego_camera_position_m);
-  EXPECT_EQ(defaults.noise.min_sigma_m, shipped.noise.min_sigma_m);
-  const PruningOptions& p = defaults.pruning;
-  const PruningOptions& q = shipped.pruning;
-  EXPECT_EQ(p.tau_sigmas, q.tau_sigmas);
-  EXPECT_EQ(p.min_tau_m, q.min_tau_m);
-  EXPECT_EQ(p.mu_max_m, q.mu_max_m);
-  EXPECT_EQ(p.kappa_max_rad, q.kappa_max_rad);
-  EXPECT_EQ(p.max_unsupported_fraction, q.max_unsupported_fraction);
-  EXPECT_EQ(p.max_partners, q.max_partners);
-  EXPECT_EQ(p.max_filtered_percepts, q.max_filtered_percepts);
-  EXPECT_EQ(p.max_percepts, q.max_percepts);
-  EXPECT_EQ(p.max_link_set, q.max_link_set);
-  EXPECT_EQ(p.use_gravity, q.use_gravity);
-  EXPECT_EQ(p.max_tilt_rad, q.max_tilt_rad);
-  EXPECT_EQ(p.floor_heights_m, q.floor_heights_m);
-  EXPECT_EQ(p.floor_tolerance_m, q.floor_tolerance_m);
-  const HypothesisOptions& h = defaults.hypotheses;
-  const HypothesisOptions& i = shipped.hypotheses;
-  EXPECT_EQ(h.min_associations, i.min_associations);
-  EXPECT_EQ(h.same_position_m, i.same_position_m);
-  EXPECT_EQ(h.same_angle_rad, i.same_angle_rad);
-  EXPECT_EQ(h.max_interpretations, i.max_interpretations);
-  EXPECT_EQ(h.max_seeds, i.max_seeds);
-  EXPECT_EQ(h.confirming_seeds, i.confirming_seeds);
-  EXPECT_EQ(h.single_seed_explained_fraction, i.single_seed_explained_fraction);
-  const ValidationOptions& v = defaults.validation;
-  const ValidationOptions& w = shipped.validation;
-  EXPECT_EQ(v.gate_sigmas, w.gate_sigmas);
-  EXPECT_EQ(v.ambiguity_margin, w.ambiguity_margin);
-  EXPECT_EQ(v.clutter_density_per_m3, w.clutter_density_per_m3);
-  EXPECT_EQ(v.min_explained_fraction, w.min_explained_fraction);
-  EXPECT_EQ(v.precision_sigmas, w.precision_sigmas);
-  EXPECT_EQ(v.required_position_m, w.required_position_m);
-  EXPECT_EQ(v.required_angle_rad, w.required_angle_rad);
-  EXPECT_EQ(v.outlier_test_alpha, w.outlier_test_alpha);
-  EXPECT_EQ(defaults.refinement.huber_sigmas, shipped.refinement.huber_sigmas);
-  EXPECT_EQ(defaults.refinement.planar_prior, shipped.refinement.planar_prior);
-  EXPECT_EQ(defaults.refinement.max_iterations, shipped.refinement.max_iterations);
+  // Section by section, so that a failure names the section.
+  EXPECT_TRUE(defaults.graph == shipped.graph);
+  EXPECT_TRUE(defaults.noise == shipped.noise);
+  EXPECT_TRUE(defaults.pruning == shipped.pruning);
+  EXPECT_TRUE(defaults.hypotheses == shipped.hypotheses);
+  EXPECT_TRUE(defaults.validation == shipped.validation);
+  EXPECT_TRUE(defaults.refinement == shipped.refinement);
+  EXPECT_TRUE(defaults == shipped);
+  // And the comparison sees a difference.
+  LocalizerOptions other = shipped;
+  other.pruning.floor_heights_m.push_back(3.0);
+  EXPECT_FALSE(other == shipped);
 }
 
 // A section that sets some keys keeps the defaults of the others (the robot upright, the edge

@@ -23,6 +23,7 @@ struct PerceptNoiseOptions {
   double zeta_m = 133.0;  // zeta: 133 m gives 3 cm at 2 m
   Eigen::Vector3d ego_camera_position_m = Eigen::Vector3d(0.0, 0.0, 1.5);  // C_L, ego frame
   double min_sigma_m = 0.005;  // floor for percepts right in front of the camera
+  friend bool operator==(const PerceptNoiseOptions&, const PerceptNoiseOptions&) = default;
 };
 
 struct PruningOptions {
@@ -65,6 +66,7 @@ struct PruningOptions {
   // at any height.
   std::vector<double> floor_heights_m{0.0};
   double floor_tolerance_m = 0.05;
+  friend bool operator==(const PruningOptions&, const PruningOptions&) = default;
 };
 
 struct HypothesisOptions {
@@ -89,6 +91,7 @@ struct HypothesisOptions {
   // with no verdict changed (docs/benchmarks.md); a view of 5 percepts of which the best explains 3
   // still needs the second seed (one such case was localized 3 m off with a single seed).
   double single_seed_explained_fraction = 0.8;
+  friend bool operator==(const HypothesisOptions&, const HypothesisOptions&) = default;
 };
 
 struct ValidationOptions {
@@ -119,6 +122,7 @@ struct ValidationOptions {
   // this false-alarm probability is dropped and the pose refined again, until all pass; with
   // fewer associations left than a localized pose needs, FAILED. 0 disables the test.
   double outlier_test_alpha = 0.01;
+  friend bool operator==(const ValidationOptions&, const ValidationOptions&) = default;
 };
 
 // Every default equals config/localizer.yaml (a test compares them), so a tool run without a
@@ -135,6 +139,7 @@ struct LocalizerOptions {
   ValidationOptions validation;
   // The robot stands upright on the floor (ARMAR-III on its platform): roll and pitch held at 0.
   RefinementOptions refinement{.huber_sigmas = 3.0, .planar_prior = true};
+  friend bool operator==(const LocalizerOptions&, const LocalizerOptions&) = default;
 };
 
 // Reads the localizer config (config/localizer.yaml: sections world_graph, percept_noise,

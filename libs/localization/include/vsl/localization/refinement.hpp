@@ -36,6 +36,7 @@ struct RefinementOptions {
   // yaw are estimated; their covariance rows and columns are zero).
   bool planar_prior = false;
   int max_iterations = 50;
+  friend bool operator==(const RefinementOptions&, const RefinementOptions&) = default;
 };
 
 struct RefinedPose {

@@ -34,6 +34,7 @@ struct WorldGraphOptions {
   // lip) reports the bottom edge's middle, a point of the door as well defined as its centre.
   // Objects without a size, or whose z is not within 8 degrees of the world's vertical, have none.
   std::vector<std::string> edge_node_types{};
+  friend bool operator==(const WorldGraphOptions&, const WorldGraphOptions&) = default;
 };
 
 enum class FaceEdge { kTop, kBottom };
