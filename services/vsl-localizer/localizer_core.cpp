@@ -111,7 +111,6 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
   request_id_ = request_id;
   request_start_us_ = now_us;
   scan_index_ = 0;
-  scan_targets_ = options_.ego_gaze_targets_m;
   looked_around_ = false;
   active_looks_ = 0;
   precision_look_ = false;
@@ -131,7 +130,7 @@ void LocalizerCore::request(std::int64_t request_id, std::int64_t now_us) {
     enter_fusing(now_us);
   } else {
     scan_index_ = 1;
-    start_look(scan_targets_[0], false, now_us);
+    start_look(scan_targets()[0], false, now_us);
   }
 }
 
@@ -178,9 +177,9 @@ void LocalizerCore::percepts(std::int64_t frame_id, std::int64_t now_us) {
   }
   gaze_id_ = -1;
   at_rest_frames_.clear();
-  if (state_ == State::kScanning && scan_index_ < static_cast<int>(scan_targets_.size())) {
+  if (state_ == State::kScanning && scan_index_ < static_cast<int>(scan_targets().size())) {
     ++scan_index_;
-    start_look(scan_targets_[static_cast<std::size_t>(scan_index_ - 1)], false, now_us);
+    start_look(scan_targets()[static_cast<std::size_t>(scan_index_ - 1)], false, now_us);
   } else {
     enter_fusing(now_us);
   }
@@ -305,9 +304,8 @@ void LocalizerCore::look_around(const localization::LocalizationResult& result,
   }
   // Reported as it stands if a look-around target cannot be completed.
   looking_to_resolve_ = result;
-  scan_targets_ = options_.ego_look_around_targets_m;
   scan_index_ = 1;
-  start_look(scan_targets_[0], false, now_us);
+  start_look(scan_targets()[0], false, now_us);
 }
 
 void LocalizerCore::look_for_precision(const localization::LocalizationResult& result,
@@ -470,9 +468,13 @@ void LocalizerCore::set_state(State state, std::int64_t now_us) {
   publish_status(now_us);
 }
 
+const std::vector<Eigen::Vector3d>& LocalizerCore::scan_targets() const {
+  return looked_around_ ? options_.ego_look_around_targets_m : options_.ego_gaze_targets_m;
+}
+
 std::string LocalizerCore::scan_target_text() const {
   return std::string(looked_around_ ? "look-around target " : "gaze target ") +
-         std::to_string(scan_index_) + " of " + std::to_string(scan_targets_.size());
+         std::to_string(scan_index_) + " of " + std::to_string(scan_targets().size());
 }
 
 int LocalizerCore::total_steps() const {

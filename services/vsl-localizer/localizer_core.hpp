@@ -211,6 +211,8 @@ class LocalizerCore {
   void set_state(State state, std::int64_t now_us);
   void publish_status(std::int64_t now_us);
   std::string step_text() const;
+  // The targets of the scan in progress: the look-around's once looked around, else the scan's.
+  const std::vector<Eigen::Vector3d>& scan_targets() const;
   std::string scan_target_text() const;  // "gaze target k of N" or "look-around target k of N"
   int total_steps() const;
 
@@ -226,11 +228,10 @@ class LocalizerCore {
   std::string detail_;  // what the current step waits for
 
   // The look in progress (scan target or active validation).
-  std::vector<Eigen::Vector3d> scan_targets_;  // the scan's, or the look-around's
-  bool looked_around_ = false;                 // the look-around targets were scanned
-  int scan_index_ = 0;    // scan targets commanded so far (1-based once started)
-  int active_looks_ = 0;  // active validation looks started
-  int step_ = 0;          // "step k of N"
+  bool looked_around_ = false;  // the look-around targets were scanned
+  int scan_index_ = 0;          // scan targets commanded so far (1-based once started)
+  int active_looks_ = 0;        // active validation looks started
+  int step_ = 0;                // "step k of N"
   Eigen::Vector3d look_target_ = Eigen::Vector3d::Zero();
   std::int64_t gaze_id_ = -1;
   std::int64_t look_deadline_us_ = 0;  // settle, then recognition deadline
