@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "side_correlation.hpp"
 
 namespace vsl::recognition::detail {
 
@@ -114,30 +117,41 @@ double parabola_peak(double a, double b, double c) {
 
 }  // namespace
 
-std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const cv::Mat& right_grey,
-                                               const Eigen::Vector2d& min_px,
-                                               const Eigen::Vector2d& max_px,
-                                               const Eigen::Vector2d& predicted_shift_px,
-                                               const Eigen::Vector2d& search_half_px,
-                                               double max_template_px) {
-  const cv::Rect image(0, 0, left_grey.cols, left_grey.rows);
-  const cv::Rect region(
+namespace {
+
+// The normalized cross-correlation (TM_CCOEFF_NORMED) of the left image's `region` at every
+// placement inside the right image's `window` (cut to the image), both reduced by a whole factor
+// when the region is larger than max_template_px pixels (both images cut to multiples of it, then
+// box-averaged, so that reduced pixel k of either image is full pixels [k f, (k + 1) f) of it).
+// Score cell (x, y) places the region's origin at the right image's
+// (window.x + x f, window.y + y f). nullopt when the region leaves the image, the window is too
+// small, or the region has no texture.
+struct ScoreMap {
+  cv::Mat score;  // CV_32F
+  cv::Rect region, window;
+  int factor = 1;
+  // The shift (right minus left, full pixels) of cell (x, y), at continuous x and y.
+  Eigen::Vector2d shift_px(double x, double y) const {
+    return {window.x + x * factor - region.x, window.y + y * factor - region.y};
+  }
+};
+
+cv::Rect region_of(const Eigen::Vector2d& min_px, const Eigen::Vector2d& max_px) {
+  return cv::Rect(
       cv::Point(static_cast<int>(std::floor(min_px.x())), static_cast<int>(std::floor(min_px.y()))),
       cv::Point(static_cast<int>(std::ceil(max_px.x())), static_cast<int>(std::ceil(max_px.y()))));
+}
+
+int reduction_factor(const cv::Rect& region, double max_template_px) {
+  return std::max(1, static_cast<int>(std::ceil(std::sqrt(region.area() / max_template_px))));
+}
+
+std::optional<ScoreMap> correlate(const cv::Mat& left_grey, const cv::Mat& right_grey,
+                                  const cv::Rect& region, const cv::Rect& window_wanted,
+                                  int factor) {
+  const cv::Rect image(0, 0, left_grey.cols, left_grey.rows);
   if ((region & image) != region || region.width < 3 || region.height < 3) return std::nullopt;
-  // Reduced by a whole factor (both images cut to multiples of it, then box-averaged), so that
-  // reduced pixel k of either image is full pixels [k f, (k + 1) f) of it, exactly.
-  const int factor =
-      std::max(1, static_cast<int>(std::ceil(std::sqrt(region.area() / max_template_px))));
-  // The search window: the region moved by every shift within the half sizes (+1 for the
-  // parabola's neighbours), at least two reduced pixels either way.
-  const int half_u = std::max(static_cast<int>(std::ceil(search_half_px.x())) + 1, 2 * factor);
-  const int half_v = std::max(static_cast<int>(std::ceil(search_half_px.y())) + 1, 2 * factor);
-  const int shift_u = static_cast<int>(std::lround(predicted_shift_px.x()));
-  const int shift_v = static_cast<int>(std::lround(predicted_shift_px.y()));
-  const cv::Rect window = cv::Rect(region.x + shift_u - half_u, region.y + shift_v - half_v,
-                                   region.width + 2 * half_u, region.height + 2 * half_v) &
-                          cv::Rect(0, 0, right_grey.cols, right_grey.rows);
+  const cv::Rect window = window_wanted & cv::Rect(0, 0, right_grey.cols, right_grey.rows);
   if (window.width < region.width + 2 || window.height < region.height + 2) return std::nullopt;
   cv::Mat templ = left_grey(cv::Rect(region.x, region.y, region.width / factor * factor,
                                      region.height / factor * factor));
@@ -156,8 +170,36 @@ std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const c
   cv::Scalar mean, deviation;
   cv::meanStdDev(templ, mean, deviation);
   if (deviation[0] < 2.0) return std::nullopt;  // a flat region correlates with anything
-  cv::Mat score;
-  cv::matchTemplate(search, templ, score, cv::TM_CCOEFF_NORMED);
+  ScoreMap map;
+  cv::matchTemplate(search, templ, map.score, cv::TM_CCOEFF_NORMED);
+  map.region = region;
+  map.window = window;
+  map.factor = factor;
+  return map;
+}
+
+}  // namespace
+
+std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const cv::Mat& right_grey,
+                                               const Eigen::Vector2d& min_px,
+                                               const Eigen::Vector2d& max_px,
+                                               const Eigen::Vector2d& predicted_shift_px,
+                                               const Eigen::Vector2d& search_half_px,
+                                               double max_template_px) {
+  const cv::Rect region = region_of(min_px, max_px);
+  const int factor = reduction_factor(region, max_template_px);
+  // The search window: the region moved by every shift within the half sizes (+1 for the
+  // parabola's neighbours), at least two reduced pixels either way.
+  const int half_u = std::max(static_cast<int>(std::ceil(search_half_px.x())) + 1, 2 * factor);
+  const int half_v = std::max(static_cast<int>(std::ceil(search_half_px.y())) + 1, 2 * factor);
+  const int shift_u = static_cast<int>(std::lround(predicted_shift_px.x()));
+  const int shift_v = static_cast<int>(std::lround(predicted_shift_px.y()));
+  const auto map = correlate(left_grey, right_grey, region,
+                             cv::Rect(region.x + shift_u - half_u, region.y + shift_v - half_v,
+                                      region.width + 2 * half_u, region.height + 2 * half_v),
+                             factor);
+  if (!map) return std::nullopt;
+  const cv::Mat& score = map->score;
   double best = 0.0;
   cv::Point at;
   cv::minMaxLoc(score, nullptr, &best, nullptr, &at);
@@ -170,11 +212,89 @@ std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const c
   if (at.y > 0 && at.y + 1 < score.rows) {
     dv = parabola_peak(value(at.x, at.y - 1), best, value(at.x, at.y + 1));
   }
-  // Position of the template's origin in the right image, full-scale pixels.
   RegionMatch match;
-  match.shift_px = Eigen::Vector2d(window.x + (at.x + du) * factor - region.x,
-                                   window.y + (at.y + dv) * factor - region.y);
+  match.shift_px = map->shift_px(at.x + du, at.y + dv);
   match.correlation = best;
+  return match;
+}
+
+Eigen::Vector3d right_epipolar_line_raw(const EpipolarGeometry& epipolar,
+                                        const head::CameraIntrinsics& left_intrinsics,
+                                        const head::CameraIntrinsics& right_intrinsics,
+                                        const Eigen::Vector2d& left_raw,
+                                        const Eigen::Vector2d& right_guess_raw) {
+  const Eigen::Vector3d line =
+      epipolar.right_line(undistort({left_raw}, left_intrinsics).front().ideal_px);
+  if (!has_distortion(right_intrinsics)) return line;
+  const Eigen::Vector2d normal = line.head<2>();
+  const Eigen::Vector2d guess = undistort({right_guess_raw}, right_intrinsics).front().ideal_px;
+  const Eigen::Vector2d foot = guess - (normal.dot(guess) + line.z()) * normal;
+  const Eigen::Vector2d along(-normal.y(), normal.x());
+  const Eigen::Vector2d p = distort(foot - 20.0 * along, right_intrinsics);
+  const Eigen::Vector2d q = distort(foot + 20.0 * along, right_intrinsics);
+  const Eigen::Vector2d d = (q - p).normalized();
+  const Eigen::Vector2d n(-d.y(), d.x());
+  return {n.x(), n.y(), -n.dot(p)};
+}
+
+std::optional<RegionMatch> find_on_epipolar_line(
+    const cv::Mat& left_grey, const cv::Mat& right_grey, const Eigen::Vector2d& min_px,
+    const Eigen::Vector2d& max_px, const Eigen::Vector2d& predicted_shift_px,
+    double search_half_u_px, const Eigen::Vector3d& right_line_raw, double max_template_px) {
+  const double a = right_line_raw.x(), b = right_line_raw.y(), c = right_line_raw.z();
+  if (!(std::abs(b) > std::abs(a))) return std::nullopt;  // not within 45 deg of the rows
+  const cv::Rect region = region_of(min_px, max_px);
+  const int factor = reduction_factor(region, max_template_px);
+  // The region's centre, raw pixel-centre coordinates; its match at centre + shift lies on the
+  // line: a (x_c + s_u) + b (y_c + s_v) + c = 0, so s_v = -(a (x_c + s_u) + c) / b - y_c.
+  const Eigen::Vector2d centre(region.x + 0.5 * region.width - 0.5,
+                               region.y + 0.5 * region.height - 0.5);
+  const auto shift_v_of = [&](double shift_u) {
+    return -(a * (centre.x() + shift_u) + c) / b - centre.y();
+  };
+  const int half_u = std::max(static_cast<int>(std::ceil(search_half_u_px)) + 1, 2 * factor);
+  const int shift_u = static_cast<int>(std::lround(predicted_shift_px.x()));
+  // The window holds the line over the searched shifts, and a reduced pixel above and below it
+  // for the bilinear samples.
+  const double v_first = shift_v_of(shift_u - half_u), v_last = shift_v_of(shift_u + half_u);
+  const int v_lo = static_cast<int>(std::floor(std::min(v_first, v_last))) - 2 * factor;
+  const int v_hi = static_cast<int>(std::ceil(std::max(v_first, v_last))) + 2 * factor;
+  const auto map = correlate(left_grey, right_grey, region,
+                             cv::Rect(region.x + shift_u - half_u, region.y + v_lo,
+                                      region.width + 2 * half_u, region.height + v_hi - v_lo),
+                             factor);
+  if (!map) return std::nullopt;
+  // The score along the line: at each column, sampled bilinearly between the rows around it.
+  const cv::Mat& score = map->score;
+  std::vector<double> along(static_cast<std::size_t>(score.cols),
+                            -std::numeric_limits<double>::infinity());
+  std::vector<double> nearest(along.size(), 0.0);  // the better of the two rows sampled
+  for (int x = 0; x < score.cols; ++x) {
+    const Eigen::Vector2d at_row0 = map->shift_px(x, 0.0);
+    const double y = (shift_v_of(at_row0.x()) - at_row0.y()) / factor;
+    if (!(y >= 0.0 && y <= score.rows - 1.0)) continue;
+    const int y0 = std::clamp(static_cast<int>(y), 0, std::max(score.rows - 2, 0));
+    const double t = std::clamp(y - y0, 0.0, 1.0);
+    const double upper = score.at<float>(y0, x);
+    const double lower = score.rows > 1 ? score.at<float>(y0 + 1, x) : upper;
+    along[static_cast<std::size_t>(x)] = (1.0 - t) * upper + t * lower;
+    nearest[static_cast<std::size_t>(x)] = std::max(upper, lower);
+  }
+  const auto peak = std::max_element(along.begin(), along.end());
+  if (peak == along.end() || !std::isfinite(*peak)) return std::nullopt;
+  const auto x = static_cast<int>(peak - along.begin());
+  double dx = 0.0;
+  if (x > 0 && x + 1 < score.cols && std::isfinite(along[static_cast<std::size_t>(x - 1)]) &&
+      std::isfinite(along[static_cast<std::size_t>(x + 1)])) {
+    dx = parabola_peak(along[static_cast<std::size_t>(x - 1)], *peak,
+                       along[static_cast<std::size_t>(x + 1)]);
+  }
+  RegionMatch match;
+  match.shift_px.x() = map->shift_px(x + dx, 0.0).x();
+  match.shift_px.y() = shift_v_of(match.shift_px.x());
+  // The correlation the gates compare: that of the placement on the pixel grid beside the peak,
+  // as find_in_right_image's (between two rows a fine texture's score dips).
+  match.correlation = nearest[static_cast<std::size_t>(x)];
   return match;
 }
 

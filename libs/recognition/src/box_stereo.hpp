@@ -72,6 +72,34 @@ std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const c
                                                const Eigen::Vector2d& search_half_px,
                                                double max_template_px);
 
+// The epipolar line of a left raw pixel (pixel-centre coordinates) in the right image's raw
+// pixels, (a, b, c) with a^2 + b^2 = 1: the ideal image's line (epipolar.hpp) through two of its
+// points 40 px apart around the foot of `right_guess_raw`, distorted back into the raw image. A
+// lens's distortion bends the line; over a box's search the chord stays within a small fraction
+// of a pixel of it. Without distortion, the ideal line itself.
+Eigen::Vector3d right_epipolar_line_raw(const EpipolarGeometry& epipolar,
+                                        const head::CameraIntrinsics& left_intrinsics,
+                                        const head::CameraIntrinsics& right_intrinsics,
+                                        const Eigen::Vector2d& left_raw,
+                                        const Eigen::Vector2d& right_guess_raw);
+
+// The same match with the epipolar constraint (paper §2.1: a point's match lies on its epipolar
+// line): the region's centre (raw pixel-centre coordinates) is moved onto `right_line_raw`,
+// (a, b, c) with a^2 + b^2 = 1, the line a u + b v + c = 0 in the right image's raw pixels, and
+// only the shift along it is searched, within +-search_half_u_px of predicted_shift_px's u.
+// Why: a bar seen aslant looks the same moved along itself; searched in two dimensions its
+// match slides along it, and the part of the slide along the rows is a disparity error (a rail
+// across a drawer seen from aside, 1.3 m away: 3-5 px, 20-28 cm along the ray). Only the
+// crossing of the bar with the line says where it is. The score along the line is the score
+// map sampled bilinearly between its rows, and the peak taken to a tenth of a pixel by a
+// parabola; the correlation reported is the better of the two grid placements beside the peak.
+// nullopt as find_in_right_image, or when the line is steeper than 45 deg (the cameras are side by
+// side).
+std::optional<RegionMatch> find_on_epipolar_line(
+    const cv::Mat& left_grey, const cv::Mat& right_grey, const Eigen::Vector2d& min_px,
+    const Eigen::Vector2d& max_px, const Eigen::Vector2d& predicted_shift_px,
+    double search_half_u_px, const Eigen::Vector3d& right_line_raw, double max_template_px);
+
 // The box's sides moved onto the image's outline of the object: each side to the strongest edge
 // across it (mean absolute Sobel gradient along the side's middle 60 %) within
 // +-max(min_band_px, band_fraction * the box's size across the side), to a tenth of a pixel by a

@@ -15,6 +15,7 @@
 #include "bar_trace.hpp"
 #include "box_stereo.hpp"
 #include "door_rectangle_fit.hpp"
+#include "epipolar.hpp"
 #include "frame_capture.hpp"
 
 namespace vsl::recognition {
@@ -95,6 +96,7 @@ class PairPlacer {
              const Eigen::Vector3d& up_in_left, const BoxStereoOptions& options)
       : calibration_(calibration),
         triangulator_(calibration.left, calibration.right, left_T_right),
+        epipolar_(calibration.left, calibration.right, left_T_right),
         bgrs_(bgrs),
         left_grey_(left_grey),
         right_grey_(right_grey),
@@ -118,10 +120,10 @@ class PairPlacer {
     const Eigen::Vector2d image_size(left_grey_.cols, left_grey_.rows);
     const Eigen::Vector2d predicted = right.centre_px() - left.centre_px();
     const double width = std::max(left.width_px(), right.width_px());
-    const Eigen::Vector2d search(0.2 * width + 4.0, 0.1 * left.height_px() + 3.0);
-    const auto whole = detail::find_in_right_image(
-        left_grey_, right_grey_, (left.min_px - margin).cwiseMax(Eigen::Vector2d::Zero()),
-        (left.max_px + margin).cwiseMin(image_size), predicted, search, options_.max_template_px);
+    const double search_half_u = 0.2 * width + 4.0;
+    const Eigen::Vector2d lo = (left.min_px - margin).cwiseMax(Eigen::Vector2d::Zero());
+    const Eigen::Vector2d hi = (left.max_px + margin).cwiseMin(image_size);
+    const auto whole = match_on_epipolar_line(lo, hi, predicted, search_half_u);
     if (!whole || whole->correlation < options_.min_correlation) {
       refusal = "correlation";
       return std::nullopt;
@@ -156,6 +158,20 @@ class PairPlacer {
   // Raw pixel-centre coordinates of a continuous image point.
   static Eigen::Vector2d raw(const Eigen::Vector2d& continuous_px) {
     return continuous_px - Eigen::Vector2d(0.5, 0.5);
+  }
+
+  // The left region [lo, hi] (continuous pixels) found in the right image on the epipolar line of
+  // its centre (box_stereo.hpp), within +-search_half_u_px of the predicted shift along it.
+  std::optional<detail::RegionMatch> match_on_epipolar_line(const Eigen::Vector2d& lo,
+                                                            const Eigen::Vector2d& hi,
+                                                            const Eigen::Vector2d& predicted_shift,
+                                                            double search_half_u_px) const {
+    const Eigen::Vector2d centre = raw(0.5 * (lo.array().floor() + hi.array().ceil()).matrix());
+    return detail::find_on_epipolar_line(
+        left_grey_, right_grey_, lo, hi, predicted_shift, search_half_u_px,
+        detail::right_epipolar_line_raw(epipolar_, calibration_.left, calibration_.right, centre,
+                                        centre + predicted_shift),
+        options_.max_template_px);
   }
 
   // A triangulation's covariance from the class's noise model: the pixel pair's through the
@@ -257,9 +273,8 @@ class PairPlacer {
     for (std::size_t e = 0; e < 2; ++e) {
       const Eigen::Vector2d& at = left_bar.ends_px[e];
       const auto match =
-          detail::find_in_right_image(left_grey_, right_grey_, at - Eigen::Vector2d(half, half),
-                                      at + Eigen::Vector2d(half, half), right_bar.ends_px[e] - at,
-                                      Eigen::Vector2d(3.0, 2.0), options_.max_template_px);
+          match_on_epipolar_line(at - Eigen::Vector2d(half, half), at + Eigen::Vector2d(half, half),
+                                 right_bar.ends_px[e] - at, 3.0);
       if (!match || match->correlation < options_.min_correlation) {
         refusal = kEndNotFound;
         return std::nullopt;
@@ -460,6 +475,7 @@ class PairPlacer {
 
   const head::StereoCalibration& calibration_;
   detail::Triangulator triangulator_;
+  detail::EpipolarGeometry epipolar_;
   const std::array<cv::Mat, 2>& bgrs_;
   const cv::Mat& left_grey_;
   const cv::Mat& right_grey_;

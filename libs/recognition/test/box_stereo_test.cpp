@@ -9,6 +9,7 @@
 #include <map>
 
 #include "../src/box_stereo.hpp"
+#include "../src/side_correlation.hpp"
 
 namespace vsl::recognition {
 namespace {
@@ -64,6 +65,87 @@ TEST(FindInRightImage, RefusesFlatRegionsAndRegionsOutsideTheImage) {
   // The whole search window beyond the right image's left border.
   EXPECT_FALSE(
       detail::find_in_right_image(left, left, {2, 100}, {40, 150}, {-60, 0}, {5, 2}, 3000.0));
+}
+
+// The line a u + b v + c = 0 (a^2 + b^2 = 1) through raw pixel `at` with slope dv/du `slope`.
+Eigen::Vector3d line_through(const Eigen::Vector2d& at, double slope) {
+  const Eigen::Vector2d normal = Eigen::Vector2d(-slope, 1.0).normalized();
+  return {normal.x(), normal.y(), -normal.dot(at)};
+}
+
+TEST(RightEpipolarLineRaw, PassesThroughTheMatchOfADistortedVergingPair) {
+  head::CameraIntrinsics lens;
+  lens.distortion = {-0.25, 0.08, 0.001, -0.0005, 0.0};  // k1 k2 p1 p2 k3: a wide barrel
+  // Verging eyes: the right camera 9 cm to the right, turned 6 deg towards the left one's axis.
+  Eigen::Isometry3d left_T_right =
+      Eigen::Translation3d(0.09, 0.0, 0.0) * Eigen::AngleAxisd(-0.1, Eigen::Vector3d::UnitY());
+  const detail::EpipolarGeometry epipolar(lens, lens, left_T_right);
+  const Eigen::Matrix3d k = detail::camera_matrix(lens);
+  for (const Eigen::Vector3d& point :
+       {Eigen::Vector3d(0.6, -0.3, 1.4), Eigen::Vector3d(-0.5, 0.4, 2.5),
+        Eigen::Vector3d(0.1, 0.5, 0.9)}) {
+    const Eigen::Vector2d left_raw = detail::distort((k * point).hnormalized(), lens);
+    const Eigen::Vector2d right_raw =
+        detail::distort((k * (left_T_right.inverse() * point)).hnormalized(), lens);
+    // Guessed a box's width away along the row, as the paired box's centre predicts.
+    const Eigen::Vector3d line = detail::right_epipolar_line_raw(
+        epipolar, lens, lens, left_raw, right_raw + Eigen::Vector2d(12.0, 2.0));
+    EXPECT_NEAR(line.head<2>().norm(), 1.0, 1e-12);
+    EXPECT_LT(std::abs(line.dot(right_raw.homogeneous())), 0.05) << point.transpose();
+  }
+  // Without distortion, the ideal line.
+  const head::CameraIntrinsics pinhole;
+  const detail::EpipolarGeometry ideal(pinhole, pinhole, left_T_right);
+  const Eigen::Vector2d left_px(300.0, 200.0);
+  EXPECT_TRUE(detail::right_epipolar_line_raw(ideal, pinhole, pinhole, left_px, {250.0, 210.0})
+                  .isApprox(ideal.right_line(left_px)));
+}
+
+TEST(FindOnEpipolarLine, RecoversASubpixelShiftAlongASlantedLine) {
+  const cv::Mat left = texture(640, 480, 7);
+  // The region [200, 260) x [150, 230): its centre at raw (229.5, 189.5).
+  const Eigen::Vector2d centre(229.5, 189.5);
+  const double slope = 0.04;  // verging eyes tilt the lines a little
+  for (const double du : {-23.3, -7.6, 4.25}) {
+    const double dv = slope * du + 0.3;
+    const cv::Mat right = shifted(left, du, dv);
+    const Eigen::Vector3d line = line_through(centre + Eigen::Vector2d(0.0, 0.3), slope);
+    const auto match = detail::find_on_epipolar_line(left, right, {200, 150}, {260, 230},
+                                                     {du + 3.0, 0.0}, 8.0, line, 3000.0);
+    ASSERT_TRUE(match) << du;
+    EXPECT_NEAR(match->shift_px.x(), du, 0.15) << du;
+    EXPECT_NEAR(match->shift_px.y(), dv, 0.15) << du;
+    // Half a pixel off the grid in both directions, the fine grain's score dips.
+    EXPECT_GT(match->correlation, 0.85);
+  }
+}
+
+TEST(FindOnEpipolarLine, AnAslantBarIsPlacedWhereItCrossesTheLine) {
+  // A bar at 45 deg through a plain background; the region holds a piece of it, its ends
+  // outside. The right image is the left moved 12 px along the rows (parallel cameras).
+  cv::Mat left(480, 640, CV_8UC1, cv::Scalar(200));
+  cv::line(left, cv::Point(200, 350), cv::Point(400, 150), cv::Scalar(60), 5, cv::LINE_AA);
+  const double disparity = -12.0;
+  const cv::Mat right = shifted(left, disparity, 0.0);
+  const Eigen::Vector2d lo(280, 240), hi(320, 280);  // centre raw (299.5, 259.5)
+  const Eigen::Vector3d line = line_through({299.5, 259.5}, 0.0);
+  // The boxes' centres predict the shift 2 px off, and a little off the row.
+  const Eigen::Vector2d predicted(disparity + 2.0, -1.0);
+  const auto on_line =
+      detail::find_on_epipolar_line(left, right, lo, hi, predicted, 8.0, line, 3000.0);
+  ASSERT_TRUE(on_line);
+  EXPECT_NEAR(on_line->shift_px.x(), disparity, 0.15);
+  EXPECT_NEAR(on_line->shift_px.y(), 0.0, 1e-9);
+  // Searched in two dimensions, the match slides along the bar: a shift (t, -t) matches as well.
+  const auto free = detail::find_in_right_image(left, right, lo, hi, predicted, {8.0, 3.0}, 3000.0);
+  ASSERT_TRUE(free);
+  EXPECT_GT(std::abs(free->shift_px.x() - disparity), 0.5);
+}
+
+TEST(FindOnEpipolarLine, RefusesLinesSteeperThanTheRows) {
+  const cv::Mat left = texture(640, 480, 9);
+  EXPECT_FALSE(detail::find_on_epipolar_line(left, left, {200, 150}, {260, 230}, {0, 0}, 5.0,
+                                             line_through({229.5, 189.5}, 2.0), 3000.0));
 }
 
 BoxDetection box(int cls, double u0, double v0, double u1, double v1) {
