@@ -218,6 +218,11 @@ std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const c
   return match;
 }
 
+Eigen::Vector2d region_centre_raw(const Eigen::Vector2d& min_px, const Eigen::Vector2d& max_px) {
+  const cv::Rect region = region_of(min_px, max_px);
+  return {region.x + 0.5 * region.width - 0.5, region.y + 0.5 * region.height - 0.5};
+}
+
 Eigen::Vector3d right_epipolar_line_raw(const EpipolarGeometry& epipolar,
                                         const head::CameraIntrinsics& left_intrinsics,
                                         const head::CameraIntrinsics& right_intrinsics,
@@ -245,10 +250,9 @@ std::optional<RegionMatch> find_on_epipolar_line(
   if (!(std::abs(b) > std::abs(a))) return std::nullopt;  // not within 45 deg of the rows
   const cv::Rect region = region_of(min_px, max_px);
   const int factor = reduction_factor(region, max_template_px);
-  // The region's centre, raw pixel-centre coordinates; its match at centre + shift lies on the
-  // line: a (x_c + s_u) + b (y_c + s_v) + c = 0, so s_v = -(a (x_c + s_u) + c) / b - y_c.
-  const Eigen::Vector2d centre(region.x + 0.5 * region.width - 0.5,
-                               region.y + 0.5 * region.height - 0.5);
+  // The region's centre's match at centre + shift lies on the line:
+  // a (x_c + s_u) + b (y_c + s_v) + c = 0, so s_v = -(a (x_c + s_u) + c) / b - y_c.
+  const Eigen::Vector2d centre = region_centre_raw(min_px, max_px);
   const auto shift_v_of = [&](double shift_u) {
     return -(a * (centre.x() + shift_u) + c) / b - centre.y();
   };

@@ -72,6 +72,10 @@ std::optional<RegionMatch> find_in_right_image(const cv::Mat& left_grey, const c
                                                const Eigen::Vector2d& search_half_px,
                                                double max_template_px);
 
+// The centre, in raw pixel-centre coordinates, of the whole pixels that the region [min_px, max_px]
+// (continuous pixels) covers: the point whose epipolar line find_on_epipolar_line takes.
+Eigen::Vector2d region_centre_raw(const Eigen::Vector2d& min_px, const Eigen::Vector2d& max_px);
+
 // The epipolar line of a left raw pixel (pixel-centre coordinates) in the right image's raw
 // pixels, (a, b, c) with a^2 + b^2 = 1: the ideal image's line (epipolar.hpp) through two of its
 // points 40 px apart around the foot of `right_guess_raw`, distorted back into the raw image. A
@@ -84,7 +88,7 @@ Eigen::Vector3d right_epipolar_line_raw(const EpipolarGeometry& epipolar,
                                         const Eigen::Vector2d& right_guess_raw);
 
 // The same match with the epipolar constraint (paper §2.1: a point's match lies on its epipolar
-// line): the region's centre (raw pixel-centre coordinates) is moved onto `right_line_raw`,
+// line): the region's centre (region_centre_raw) is moved onto `right_line_raw`,
 // (a, b, c) with a^2 + b^2 = 1, the line a u + b v + c = 0 in the right image's raw pixels, and
 // only the shift along it is searched, within +-search_half_u_px of predicted_shift_px's u.
 // Why: a bar seen aslant looks the same moved along itself; searched in two dimensions its

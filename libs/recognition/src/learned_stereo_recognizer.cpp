@@ -166,7 +166,7 @@ class PairPlacer {
                                                             const Eigen::Vector2d& hi,
                                                             const Eigen::Vector2d& predicted_shift,
                                                             double search_half_u_px) const {
-    const Eigen::Vector2d centre = raw(0.5 * (lo.array().floor() + hi.array().ceil()).matrix());
+    const Eigen::Vector2d centre = detail::region_centre_raw(lo, hi);
     return detail::find_on_epipolar_line(
         left_grey_, right_grey_, lo, hi, predicted_shift, search_half_u_px,
         detail::right_epipolar_line_raw(epipolar_, calibration_.left, calibration_.right, centre,
