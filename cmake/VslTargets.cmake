@@ -23,16 +23,35 @@ endif()
 # fuzzer) and not the tools, daemons and end-to-end tests it does not run.
 add_custom_target(vsl_unit_tests)
 
+# One precompiled header shared by every library: Eigen, OpenCV's core and the standard headers
+# most sources include. Parsing them was about 2.5 s of a library file's 5-9 s compile (-O2), on
+# 280-odd files and in both builds of tools/test. As for the tests' (below), every library gets
+# this target's flags and the include directories of its headers; -Winvalid-pch says when GCC
+# cannot use it.
+set(VSL_LIBRARY_PCH_INCLUDES $<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>
+                             ${OpenCV_INCLUDE_DIRS})
+add_library(vsl_library_pch OBJECT ${CMAKE_CURRENT_LIST_DIR}/library_pch.cpp)
+target_link_libraries(vsl_library_pch PRIVATE vsl_warnings)
+target_include_directories(vsl_library_pch SYSTEM PRIVATE ${VSL_LIBRARY_PCH_INCLUDES})
+target_compile_options(vsl_library_pch PRIVATE -Winvalid-pch)
+target_precompile_headers(vsl_library_pch PRIVATE <Eigen/Core> <Eigen/Geometry> <opencv2/core.hpp>
+  <algorithm> <array> <cmath> <functional> <limits> <map> <memory> <optional> <stdexcept>
+  <string> <vector>)
+
 # vsl_library(NAME <target> SOURCES ... DEPS ...): a library whose public headers live in
 # <dir>/include/vsl/<name>/; installed, they are in <prefix>/include/vsl/<name>/
-# (cmake/VslInstall.cmake). The warnings are a build-tree matter only, never exported.
+# (cmake/VslInstall.cmake). The warnings and the precompiled header are a build-tree matter only,
+# never exported.
 function(vsl_library)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
   target_include_directories(${ARG_NAME} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
                                                 $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_include_directories(${ARG_NAME} SYSTEM PRIVATE ${VSL_LIBRARY_PCH_INCLUDES})
   target_link_libraries(${ARG_NAME} PUBLIC ${ARG_DEPS}
                                     PRIVATE $<BUILD_INTERFACE:vsl_warnings> ${ARG_PRIVATE_DEPS})
+  target_compile_options(${ARG_NAME} PRIVATE -Winvalid-pch)
+  target_precompile_headers(${ARG_NAME} REUSE_FROM vsl_library_pch)
 endfunction()
 
 # vsl_executable(NAME <target> SOURCES ... DEPS ...)
