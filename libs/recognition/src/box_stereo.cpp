@@ -268,22 +268,21 @@ std::optional<RegionMatch> find_on_epipolar_line(
                                       region.width + 2 * half_u, region.height + v_hi - v_lo),
                              factor);
   if (!map) return std::nullopt;
-  // The score along the line: at each column, sampled bilinearly between the rows around it.
+  // The score along the line: at each column, sampled bilinearly between the two rows around it;
+  // `nearest` takes the better of those two rows instead.
   const cv::Mat& score = map->score;
-  std::vector<double> along(static_cast<std::size_t>(score.cols),
-                            -std::numeric_limits<double>::infinity());
-  std::vector<double> nearest(along.size(), 0.0);  // the better of the two rows sampled
-  for (int x = 0; x < score.cols; ++x) {
+  const auto sample = [&](int x, bool nearest) {
     const Eigen::Vector2d at_row0 = map->shift_px(x, 0.0);
     const double y = (shift_v_of(at_row0.x()) - at_row0.y()) / factor;
-    if (!(y >= 0.0 && y <= score.rows - 1.0)) continue;
+    if (!(y >= 0.0 && y <= score.rows - 1.0)) return -std::numeric_limits<double>::infinity();
     const int y0 = std::clamp(static_cast<int>(y), 0, std::max(score.rows - 2, 0));
     const double t = std::clamp(y - y0, 0.0, 1.0);
     const double upper = score.at<float>(y0, x);
     const double lower = score.rows > 1 ? score.at<float>(y0 + 1, x) : upper;
-    along[static_cast<std::size_t>(x)] = (1.0 - t) * upper + t * lower;
-    nearest[static_cast<std::size_t>(x)] = std::max(upper, lower);
-  }
+    return nearest ? std::max(upper, lower) : (1.0 - t) * upper + t * lower;
+  };
+  std::vector<double> along(static_cast<std::size_t>(score.cols));
+  for (int x = 0; x < score.cols; ++x) along[static_cast<std::size_t>(x)] = sample(x, false);
   const auto peak = std::max_element(along.begin(), along.end());
   if (peak == along.end() || !std::isfinite(*peak)) return std::nullopt;
   const auto x = static_cast<int>(peak - along.begin());
@@ -298,7 +297,7 @@ std::optional<RegionMatch> find_on_epipolar_line(
   match.shift_px.y() = shift_v_of(match.shift_px.x());
   // The correlation the gates compare: that of the placement on the pixel grid beside the peak,
   // as find_in_right_image's (between two rows a fine texture's score dips).
-  match.correlation = nearest[static_cast<std::size_t>(x)];
+  match.correlation = sample(x, true);
   return match;
 }
 
