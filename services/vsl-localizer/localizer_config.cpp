@@ -1,5 +1,6 @@
 #include "localizer_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -66,7 +67,7 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
   section.expect_keys({"world", "options", "localize_at_startup", "startup_delay_s", "scan",
                        "fusing_timeout_s", "fusing_attempts", "max_active_looks",
                        "look_agreement_alpha", "max_look_azimuth_deg", "max_look_elevation_deg",
-                       "status_period_s", "passive", "record_percepts_dir"});
+                       "look_types", "status_period_s", "passive", "record_percepts_dir"});
   LocalizerDaemonConfig out;
   out.world_path = path_relative_to_file(section.at("world"));
   out.options_path = path_relative_to_file(section.at("options"));
@@ -116,6 +117,12 @@ LocalizerDaemonConfig read_localizer_config(const Node& root, bool force_passive
   if (const auto node = section.find("max_look_elevation_deg")) {
     core.look_limits.max_elevation_rad = node->as_double_in(5.0, 90.0) * kRadPerDeg;
   }
+  if (const auto node = section.find("look_types")) {
+    if (!node->is_sequence()) node->fail("must be a list of object types");
+    for (std::size_t i = 0; i < node->size(); ++i) {
+      core.look_limits.types.push_back((*node)[i].as_string());
+    }
+  }
   if (const auto node = section.find("status_period_s")) {
     core.status_period_s = node->as_double_in(0.01, 60.0);
   }
@@ -155,6 +162,16 @@ LocalizerSetup load_localizer(const Node& root, bool force_passive) {
       section.at("options"), setup.config.options_path, [](const std::string& p) {
         return localization::localizer_options_from(Node::load_file(p));
       });
+  // A look type that is no graph node type would make every look count nothing.
+  const std::vector<std::string>& node_types = setup.options.graph.node_types;
+  if (const auto look_types = section.find("look_types"); look_types && !node_types.empty()) {
+    for (std::size_t i = 0; i < look_types->size(); ++i) {
+      const std::string type = (*look_types)[i].as_string();
+      if (std::find(node_types.begin(), node_types.end(), type) == node_types.end()) {
+        (*look_types)[i].fail("'" + type + "' is not one of the localizer's node_types");
+      }
+    }
+  }
   return setup;
 }
 

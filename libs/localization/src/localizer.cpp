@@ -577,9 +577,9 @@ std::optional<ActiveValidationTarget> Localizer::choose_precision_look(
     const LocalizationResult& result, const LookLimits& limits,
     const std::vector<Eigen::Vector3d>& looked_at_ego_m) const {
   if (!result.too_uncertain || result.hypotheses.empty()) return std::nullopt;
-  return localization::choose_precision_look(*state_->world, state_->graph, state_->grid,
-                                             result.hypotheses.front().world_T_ego, state_->options,
-                                             limits, looked_at_ego_m);
+  return localization::choose_precision_look(
+      *state_->world, state_->graph, state_->grid, result.hypotheses.front().world_T_ego,
+      result.covariance, state_->options, limits, looked_at_ego_m);
 }
 
 }  // namespace vsl::localization

@@ -1,5 +1,8 @@
 #include "vsl/localization/validation.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -208,6 +211,13 @@ bool within_limits(const Eigen::Vector3d& ego_target, const Eigen::Vector3d& cam
       [&](const Eigen::Vector3d& looked) { return (looked - ego_target).norm() < 0.3; });
 }
 
+// Whether a look may count the objects of graph type `type` (LookLimits::types).
+bool looked_for(const world::WorldGraph& graph, std::size_t type, const LookLimits& limits) {
+  if (limits.types.empty()) return true;
+  const std::string& name = graph.type_name(static_cast<world::TypeId>(type));
+  return std::find(limits.types.begin(), limits.types.end(), name) != limits.types.end();
+}
+
 }  // namespace
 
 std::optional<ActiveValidationTarget> choose_discriminator(
@@ -220,6 +230,7 @@ std::optional<ActiveValidationTarget> choose_discriminator(
   for (std::size_t h = 0; h < hypotheses.size(); ++h) {
     const Eigen::Isometry3d ego_T_world = hypotheses[h].inverse();
     for (std::size_t t = 0; t < graph.type_count(); ++t) {
+      if (!looked_for(graph, t, limits)) continue;
       const auto type = static_cast<world::TypeId>(t);
       grid.for_each_within(
           type, hypotheses[h] * camera, limits.max_range_m, [&](NodeIndex node, double) {
@@ -265,10 +276,79 @@ std::optional<ActiveValidationTarget> choose_discriminator(
   return best;
 }
 
+// The rating of a precision look (validation.hpp). State: the pose parameters the refinement
+// estimated, those of `covariance` with a positive variance (world translation x, y, z and the
+// small rotation r about the world axes, PoseCovariance's order; the planar prior leaves out
+// roll and pitch). A percept of an object at world point X, seen from the pose (R, t), is
+// X = R e + t; under the perturbation (exp([r]x) R, t + dt) it moves by dt + r x d with
+// d = R e = X - t, so its Jacobian is J = [I | -[d]x] (3 x 6) and, with the isotropic Eq. 7
+// sigma(e), it adds the information J^T J / sigma^2. The pose's information now is
+// covariance^-1 (on the state); after a look it is that plus the sum over the objects in view
+// (the paper's percept model: each object recognized, with its Eq. 7 error).
+namespace {
+
+using PoseMatrix = Eigen::Matrix<double, 6, 6>;
+
+PoseMatrix object_information(const Eigen::Vector3d& d_world_m, double sigma_m) {
+  Eigen::Matrix<double, 3, 6> jacobian;
+  jacobian.leftCols<3>().setIdentity();
+  jacobian.rightCols<3>() << 0.0, d_world_m.z(), -d_world_m.y(),  //
+      -d_world_m.z(), 0.0, d_world_m.x(),                         //
+      d_world_m.y(), -d_world_m.x(), 0.0;
+  return jacobian.transpose() * jacobian / (sigma_m * sigma_m);
+}
+
+// The worst-axis standard deviations of position and angle under `information` (on the state
+// `free`), each over its requirement: the look that makes the larger of the two smallest is the one
+// that brings the pose nearest the precision bound.
+double precision_ratio(const PoseMatrix& information, const std::vector<int>& free,
+                       const ValidationOptions& v) {
+  const auto n = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd reduced(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) reduced(i, j) = information(free[i], free[j]);
+  }
+  const Eigen::MatrixXd covariance = reduced.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+  Eigen::Matrix3d position = Eigen::Matrix3d::Zero(), rotation = Eigen::Matrix3d::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const int a = free[i], b = free[j];
+      if (a < 3 && b < 3) position(a, b) = covariance(i, j);
+      if (a >= 3 && b >= 3) rotation(a - 3, b - 3) = covariance(i, j);
+    }
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(position, Eigen::EigenvaluesOnly);
+  const double position_m = std::sqrt(std::max(0.0, eigen.eigenvalues()[2]));
+  eigen.computeDirect(rotation, Eigen::EigenvaluesOnly);
+  const double angle_rad = std::sqrt(std::max(0.0, eigen.eigenvalues()[2]));
+  return std::max(position_m / v.required_position_m, angle_rad / v.required_angle_rad);
+}
+
+}  // namespace
+
 std::optional<ActiveValidationTarget> choose_precision_look(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
-    const Eigen::Isometry3d& world_T_ego, const LocalizerOptions& options, const LookLimits& limits,
+    const Eigen::Isometry3d& world_T_ego, const PoseCovariance& covariance,
+    const LocalizerOptions& options, const LookLimits& limits,
     const std::vector<Eigen::Vector3d>& looked_at_ego_m) {
+  std::vector<int> free;
+  for (int i = 0; i < 6; ++i) {
+    if (covariance(i, i) > 0.0 && std::isfinite(covariance(i, i))) free.push_back(i);
+  }
+  if (free.empty()) return std::nullopt;
+  PoseMatrix information_now = PoseMatrix::Zero();
+  {
+    const auto n = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd reduced(n, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index j = 0; j < n; ++j) reduced(i, j) = covariance(free[i], free[j]);
+    }
+    const Eigen::MatrixXd inverse = reduced.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index j = 0; j < n; ++j) information_now(free[i], free[j]) = inverse(i, j);
+    }
+  }
   const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
   const double cos_view = std::cos(limits.view_half_angle_rad);
   // The gaze rays of the earlier looks (ego frame, unit vectors from the camera).
@@ -283,10 +363,12 @@ std::optional<ActiveValidationTarget> choose_precision_look(
     Eigen::Vector3d camera_ray;  // unit, ego frame
     double range_m;
     double information_per_m2;  // 1 / sigma^2, Eq. 7
+    PoseMatrix pose_information;
   };
   std::vector<Candidate> candidates;
   const Eigen::Isometry3d ego_T_world = world_T_ego.inverse();
   for (std::size_t t = 0; t < graph.type_count(); ++t) {
+    if (!looked_for(graph, t, limits)) continue;
     grid.for_each_within(
         static_cast<world::TypeId>(t), world_T_ego * camera, limits.max_range_m,
         [&](NodeIndex node, double) {
@@ -297,23 +379,30 @@ std::optional<ActiveValidationTarget> choose_precision_look(
             if (looked.dot(ray) >= cos_view) return;  // in an earlier view
           }
           const double sigma = eq7_sigma_m(ego_target, options.noise);
-          candidates.push_back(
-              {node, ego_target, ray, (ego_target - camera).norm(), 1.0 / (sigma * sigma)});
+          candidates.push_back({node, ego_target, ray, (ego_target - camera).norm(),
+                                1.0 / (sigma * sigma),
+                                object_information(world_T_ego.linear() * ego_target, sigma)});
         });
   }
   std::optional<ActiveValidationTarget> best;
-  double best_range_cost = 0.0;
+  double best_ratio = 0.0, best_range_cost = 0.0;
   for (const Candidate& c : candidates) {
     double in_view = 0.0;
+    PoseMatrix information = information_now;
     for (const Candidate& o : candidates) {
-      if (o.camera_ray.dot(c.camera_ray) >= cos_view) in_view += o.information_per_m2;
+      if (o.camera_ray.dot(c.camera_ray) < cos_view) continue;
+      in_view += o.information_per_m2;
+      information += o.pose_information;
     }
+    const double ratio = precision_ratio(information, free, options.validation);
     const double range_cost = std::abs(c.range_m - limits.preferred_range_m);
-    const double tie = 1e-9 * std::max(1.0, in_view);
-    if (!best || in_view > best->view_information_per_m2 + tie ||
-        (in_view > best->view_information_per_m2 - tie && range_cost < best_range_cost)) {
+    const double tie = 1e-9 * std::max(1.0, ratio);
+    if (!best || ratio < best_ratio - tie ||
+        (ratio < best_ratio + tie && range_cost < best_range_cost)) {
       best = ActiveValidationTarget{
           world.objects[graph.object_index(c.node)].id, 0, c.ego_target_m, 0.0, 0.0, in_view};
+      best->predicted_precision_ratio = ratio;
+      best_ratio = ratio;
       best_range_cost = range_cost;
     }
   }

@@ -155,6 +155,7 @@ TEST(Localizer, TooUncertainKeepsItsHypothesisForAPrecisionLook) {
   const auto look = strict.choose_precision_look(result);
   ASSERT_TRUE(look.has_value());
   EXPECT_GT(look->view_information_per_m2, 0.0);
+  EXPECT_GT(look->predicted_precision_ratio, 0.0);
 
   // Without the bound it is localized, and there is no precision look to take.
   const Localizer lenient(world, test_options());

@@ -144,6 +144,12 @@ TEST(ChooseDiscriminator, OnlyTargetsTheHeadCanFixate) {
   EXPECT_FALSE(choose(limits));
   // Looked at already: not again.
   EXPECT_FALSE(choose(LookLimits{}, {ego + Eigen::Vector3d(0.1, 0.0, 0.0)}));
+  // A recognizer that reports no windows cannot see the marker.
+  limits = LookLimits{};
+  limits.types = {"door", "handle"};
+  EXPECT_FALSE(choose(limits));
+  limits.types.push_back("window");
+  EXPECT_TRUE(choose(limits));
 }
 
 // Room 1 has a lone extra window and, elsewhere, a cluster of three: one look at the cluster
@@ -190,9 +196,7 @@ TEST(ChooseDiscriminator, NothingDiscriminatesIdenticalRoomsOrASingleHypothesis)
 namespace vsl::localization {
 namespace {
 
-// Ahead-left, far: three windows; ahead-right, near: two. Eq. 7 makes a percept at 1.8 m about
-// twenty times as informative (1 / sigma^2) as one at 3.8 m, so the near pair is the better look;
-// once it has been looked at, the far cluster; once both, nothing.
+// Ahead-left, far: three windows; ahead-right, near: two.
 world::WorldModel two_clusters() {
   world::WorldModel model;
   model.name = "two_clusters";
@@ -205,32 +209,99 @@ world::WorldModel two_clusters() {
   return model;
 }
 
-TEST(ChoosePrecisionLook, PrefersTheMostInformativeViewNotYetSeen) {
-  const World w(two_clusters());
+// The covariance of a pose (x, y, z, yaw free, as under the planar prior) fixed by percepts
+// with the Eq. 7 error at `ego_points_m`, the robot at the origin of the world facing +x: the
+// information J^T J / sigma^2 with J = [I | -[d]x] (validation.cpp), summed and inverted.
+PoseCovariance scan_covariance(const std::vector<Eigen::Vector3d>& ego_points_m,
+                               const LocalizerOptions& options) {
+  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();
+  for (const Eigen::Vector3d& d : ego_points_m) {
+    Eigen::Matrix<double, 3, 4> jacobian = Eigen::Matrix<double, 3, 4>::Zero();
+    jacobian.leftCols<3>().setIdentity();
+    jacobian.col(3) << -d.y(), d.x(), 0.0;  // a turn about z moves d by z x d
+    const double sigma = eq7_sigma_m(d, options.noise);
+    information += jacobian.transpose() * jacobian / (sigma * sigma);
+  }
+  const Eigen::Matrix4d covariance = information.inverse();
+  PoseCovariance out = PoseCovariance::Zero();
+  const int index[4] = {0, 1, 2, 5};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) out(index[i], index[j]) = covariance(i, j);
+  }
+  return out;
+}
+
+// A scan straight ahead (three far windows) leaves the turn, and with its lever the sideways
+// position, uncertain. Ahead but beside the scan's view stand three windows; to the left, at the
+// same range, two. A look ahead adds more of what the scan measured; the look to the left fixes
+// the turn: it is chosen though it sees fewer objects.
+world::WorldModel scan_ahead() {
+  world::WorldModel model;
+  model.name = "scan_ahead";
+  testing::add_object(model, "scan1", "window", Eigen::Vector3d(3.5, -0.2, 1.5));
+  testing::add_object(model, "scan2", "window", Eigen::Vector3d(3.5, 0.2, 1.5));
+  testing::add_object(model, "scan3", "window", Eigen::Vector3d(3.4, 0.0, 1.7));
+  testing::add_object(model, "ahead1", "window", Eigen::Vector3d(2.2, -1.4, 1.5));
+  testing::add_object(model, "ahead2", "window", Eigen::Vector3d(2.3, -1.5, 1.4));
+  testing::add_object(model, "ahead3", "window", Eigen::Vector3d(2.2, -1.5, 1.6));
+  testing::add_object(model, "left1", "window", Eigen::Vector3d(0.3, 2.6, 1.5));
+  testing::add_object(model, "left2", "window", Eigen::Vector3d(0.4, 2.7, 1.4));
+  model.index_ids();
+  return model;
+}
+
+TEST(ChoosePrecisionLook, PrefersTheViewThatFixesWhatTheScanLeftUncertain) {
+  const World w(scan_ahead());
   const Eigen::Isometry3d pose = testing::upright_pose(0.0, 0.0, 0.0);
-  const auto first = choose_precision_look(w.world, w.graph, w.grid, pose, w.options);
-  ASSERT_TRUE(first.has_value());
-  EXPECT_EQ(first->object_id.rfind("near", 0), 0u) << first->object_id;
-  EXPECT_EQ(first->discrimination_m, 0.0);
-  // Both near windows are in its view: their information summed.
+  const auto ego = [&](const char* id) {
+    return Eigen::Vector3d(pose.inverse() * w.world.objects[*w.world.find(id)].world_position_m);
+  };
+  const PoseCovariance covariance =
+      scan_covariance({ego("scan1"), ego("scan2"), ego("scan3")}, w.options);
+  const std::vector<Eigen::Vector3d> scanned{ego("scan3")};
   const auto info = [&](const char* id) {
-    const Eigen::Vector3d ego =
-        pose.inverse() * w.world.objects[*w.world.find(id)].world_position_m;
-    const double sigma = eq7_sigma_m(ego, w.options.noise);
+    const double sigma = eq7_sigma_m(ego(id), w.options.noise);
     return 1.0 / (sigma * sigma);
   };
-  EXPECT_NEAR(first->view_information_per_m2, info("near1") + info("near2"), 1e-6);
-  EXPECT_LT(first->view_information_per_m2, 2.0 * info("near1"));
-  EXPECT_GT(info("near2"), 10.0 * info("far1"));
+  // The view ahead holds more information (summed 1 / sigma^2) than the one to the left.
+  ASSERT_GT(info("ahead1") + info("ahead2") + info("ahead3"), info("left1") + info("left2"));
 
+  const auto first =
+      choose_precision_look(w.world, w.graph, w.grid, pose, covariance, w.options, {}, scanned);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->object_id.rfind("left", 0), 0u) << first->object_id;
+  EXPECT_EQ(first->discrimination_m, 0.0);
+  EXPECT_NEAR(first->view_information_per_m2, info("left1") + info("left2"), 1e-6);
+  // Predicted: the worst axis after the look, over the requirement; the look ahead (the only one
+  // left once the left has been looked at) predicts less.
+  std::vector<Eigen::Vector3d> looked = scanned;
+  looked.push_back(first->ego_target_m);
   const auto second =
-      choose_precision_look(w.world, w.graph, w.grid, pose, w.options, {}, {first->ego_target_m});
+      choose_precision_look(w.world, w.graph, w.grid, pose, covariance, w.options, {}, looked);
   ASSERT_TRUE(second.has_value());
-  EXPECT_EQ(second->object_id.rfind("far", 0), 0u) << second->object_id;
-  EXPECT_NEAR(second->view_information_per_m2, info("far1") + info("far2") + info("far3"), 1e-6);
+  EXPECT_EQ(second->object_id.rfind("ahead", 0), 0u) << second->object_id;
+  EXPECT_GT(first->predicted_precision_ratio, 0.0);
+  EXPECT_LT(first->predicted_precision_ratio, second->predicted_precision_ratio);
 
-  EXPECT_FALSE(choose_precision_look(w.world, w.graph, w.grid, pose, w.options, {},
-                                     {first->ego_target_m, second->ego_target_m})
+  looked.push_back(second->ego_target_m);
+  EXPECT_FALSE(
+      choose_precision_look(w.world, w.graph, w.grid, pose, covariance, w.options, {}, looked)
+          .has_value());
+  // Objects of a type the recognizer does not report settle nothing.
+  LookLimits doors_only;
+  doors_only.types = {"door"};
+  EXPECT_FALSE(choose_precision_look(w.world, w.graph, w.grid, pose, covariance, w.options,
+                                     doors_only, scanned)
+                   .has_value());
+  LookLimits windows;
+  windows.types = {"door", "window"};
+  const auto again = choose_precision_look(w.world, w.graph, w.grid, pose, covariance, w.options,
+                                           windows, scanned);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_EQ(again->object_id, first->object_id);
+  // Without a covariance nothing says what is uncertain.
+  EXPECT_FALSE(choose_precision_look(w.world, w.graph, w.grid, pose, PoseCovariance::Zero(),
+                                     w.options, {}, scanned)
                    .has_value());
 }
 
@@ -240,13 +311,15 @@ TEST(ChoosePrecisionLook, OnlyTargetsInReachUnderTheHypothesis) {
   const Eigen::Isometry3d behind = testing::upright_pose(0.0, 0.0, 3.14159265);
   LookLimits limits;
   limits.max_azimuth_rad = 1.5708;
+  const PoseCovariance covariance = PoseCovariance::Identity() * 1e-4;
   EXPECT_FALSE(
-      choose_precision_look(w.world, w.graph, w.grid, behind, w.options, limits).has_value());
+      choose_precision_look(w.world, w.graph, w.grid, behind, covariance, w.options, limits)
+          .has_value());
   // Facing them, out of range.
   limits = LookLimits{};
   limits.max_range_m = 0.9;
   EXPECT_FALSE(choose_precision_look(w.world, w.graph, w.grid, testing::upright_pose(0, 0, 0),
-                                     w.options, limits)
+                                     covariance, w.options, limits)
                    .has_value());
 }
 

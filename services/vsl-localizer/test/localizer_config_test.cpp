@@ -1,6 +1,11 @@
 // config/vsl-localizer.yaml: every key validated, one line per error.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
 #include "localizer_config.hpp"
 #include "vsl/config/node.hpp"
 
@@ -60,6 +65,8 @@ TEST(LocalizerConfig, BadValuesAreOneLineWithFileLineAndKey) {
   EXPECT_EQ(error_of(base + "    look_around_ego_targets_m: [[0.1, 0.1, 1]]\n"),
             "/cfg/l.yaml:6: localizer.scan.look_around_ego_targets_m[0]: must lie at least 0.3 m "
             "from the ego z axis");
+  EXPECT_EQ(error_of(base + "  look_types: door\n"),
+            "/cfg/l.yaml:6: localizer.look_types: must be a list of object types");
   EXPECT_NE(error_of(base + "  passive: {status_channel: LOCALIZER_STATUS}\n")
                 .find("must differ from follow_status_channel"),
             std::string::npos);
@@ -72,7 +79,25 @@ TEST(LocalizerConfig, ShippedFileLoads) {
   const auto setup = load_localizer(config::Node::load_file("config/vsl-localizer.yaml"));
   EXPECT_EQ(setup.config.core.ego_gaze_targets_m.size(), 5u);
   EXPECT_EQ(setup.config.core.ego_look_around_targets_m.size(), 4u);
+  EXPECT_EQ(setup.config.core.look_limits.types, (std::vector<std::string>{"door", "handle"}));
   EXPECT_FALSE(setup.world.objects.empty());
+}
+
+TEST(LocalizerConfig, LookTypesMustBeNodeTypes) {
+  std::ifstream in("config/vsl-localizer.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string shipped = "look_types: [door, handle]";
+  ASSERT_NE(text.find(shipped), std::string::npos);
+  text.replace(text.find(shipped), shipped.size(), "look_types: [door, handel]");
+  try {
+    load_localizer(config::Node::load_string(text, "config/vsl-localizer.yaml"));
+    FAIL();
+  } catch (const config::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "localizer.look_types[1]: 'handel' is not one of the localizer's node_types"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(LocalizerConfig, MissingWorldIsTheKeysFault) {

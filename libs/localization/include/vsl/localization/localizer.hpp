@@ -158,6 +158,10 @@ struct ActiveValidationTarget {
   // Precision looks (choose_precision_look): the summed 1 / sigma^2 (Eq. 7) of the objects newly
   // in view around the target (1/m^2); 0 for discriminating looks.
   double view_information_per_m2 = 0.0;
+  // Precision looks: the pose's predicted worst-axis standard deviation after the look over the
+  // precision requirement (position or angle, whichever is larger; below 1 / precision_sigmas
+  // the bound would be met); 0 for discriminating looks.
+  double predicted_precision_ratio = 0.0;
 };
 
 // Where active validation may point the head (paper §2.4.2 leaves the choice to the robot). The
@@ -174,6 +178,9 @@ struct LookLimits {
   double max_elevation_rad = 1.5707963267948966;
   double view_half_angle_rad = 0.35;  // 20 deg: objects this near the gaze ray are seen too
   double cap_m = 1.0;                 // discrimination beyond this counts as this
+  // The object types the running recognizer reports: a look is rated by these objects only (a
+  // window in view settles nothing when no recognizer reports windows). Empty: every node type.
+  std::vector<std::string> types;
 };
 
 // The stages of one localize() call (paper §2.3-2.4), in the order they are first reached:

@@ -122,18 +122,24 @@ std::optional<ActiveValidationTarget> choose_discriminator(
 
 // A precision look: one hypothesis won, but its refined pose fails the precision bound
 // (ValidationOptions::precision_sigmas), typically because its percepts lie in the narrow cone of
-// one gaze, or far away. Percepts in other directions constrain the pose better. Under the
-// hypothesis `world_T_ego`, each model object o of a recognizable type predicted at ego point
-// e = world_T_ego^-1 X_o within `limits` carries the information 1 / sigma(e)^2 (Eq. 7: a near
-// object fixes the pose more than a far one). A look at e is rated by the information of every such
-// object within `limits.view_half_angle_rad` of its gaze ray that no earlier look had in view
-// (`looked_at_ego_m`: every gaze of the request, the scan's included; an object within the view
-// half angle of an earlier gaze ray was seen, or missed, then). Equal ratings go to the target
-// nearest `preferred_range_m`. The result's view_information_per_m2 is the rating;
-// discrimination_m is 0. nullopt when no object in reach is newly in view.
+// one gaze, or far away, so that the turn's lever to the robot leaves its position uncertain.
+// Percepts in other directions constrain the pose better. Under the hypothesis `world_T_ego`,
+// with the refined pose's `covariance`, each model object o of a recognizable type predicted at
+// ego point e = world_T_ego^-1 X_o within `limits` would add the information of a percept with
+// the Eq. 7 error sigma(e). A look at e is rated by the pose's predicted precision after it: the
+// worst-axis position and angle standard deviations of (covariance^-1 + the information of every
+// such object within `limits.view_half_angle_rad` of its gaze ray)^-1, each over its requirement
+// (ValidationOptions::required_position_m, required_angle_rad), the larger of the two; the
+// smallest rating wins. Objects within the view half angle of an earlier gaze ray
+// (`looked_at_ego_m`: every gaze of the request, the scan's included) were seen, or missed,
+// then, and rate nothing. Equal ratings go to the target nearest `preferred_range_m`. The
+// result's predicted_precision_ratio is the rating, view_information_per_m2 the summed
+// 1 / sigma^2 of the objects in its view; discrimination_m is 0. nullopt when no object in reach
+// is newly in view, or the covariance has no positive variance.
 std::optional<ActiveValidationTarget> choose_precision_look(
     const world::WorldModel& world, const world::WorldGraph& graph, const NodeGrid& grid,
-    const Eigen::Isometry3d& world_T_ego, const LocalizerOptions& options,
-    const LookLimits& limits = {}, const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
+    const Eigen::Isometry3d& world_T_ego, const PoseCovariance& covariance,
+    const LocalizerOptions& options, const LookLimits& limits = {},
+    const std::vector<Eigen::Vector3d>& looked_at_ego_m = {});
 
 }  // namespace vsl::localization
