@@ -298,29 +298,32 @@ PoseMatrix object_information(const Eigen::Vector3d& d_world_m, double sigma_m) 
   return jacobian.transpose() * jacobian / (sigma_m * sigma_m);
 }
 
+// The inverse of `m` on the parameters `free` (zero elsewhere): covariance <-> information on
+// the state the refinement estimated.
+PoseMatrix inverse_on(const PoseMatrix& m, const std::vector<int>& free) {
+  const auto n = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd reduced(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) reduced(i, j) = m(free[i], free[j]);
+  }
+  const Eigen::MatrixXd inverse = reduced.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
+  PoseMatrix out = PoseMatrix::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) out(free[i], free[j]) = inverse(i, j);
+  }
+  return out;
+}
+
 // The worst-axis standard deviations of position and angle under `information` (on the state
 // `free`), each over its requirement: the look that makes the larger of the two smallest is the one
 // that brings the pose nearest the precision bound.
 double precision_ratio(const PoseMatrix& information, const std::vector<int>& free,
                        const ValidationOptions& v) {
-  const auto n = static_cast<Eigen::Index>(free.size());
-  Eigen::MatrixXd reduced(n, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    for (Eigen::Index j = 0; j < n; ++j) reduced(i, j) = information(free[i], free[j]);
-  }
-  const Eigen::MatrixXd covariance = reduced.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
-  Eigen::Matrix3d position = Eigen::Matrix3d::Zero(), rotation = Eigen::Matrix3d::Zero();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const int a = free[i], b = free[j];
-      if (a < 3 && b < 3) position(a, b) = covariance(i, j);
-      if (a >= 3 && b >= 3) rotation(a - 3, b - 3) = covariance(i, j);
-    }
-  }
+  const PoseMatrix covariance = inverse_on(information, free);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(position, Eigen::EigenvaluesOnly);
+  eigen.computeDirect(covariance.topLeftCorner<3, 3>(), Eigen::EigenvaluesOnly);
   const double position_m = std::sqrt(std::max(0.0, eigen.eigenvalues()[2]));
-  eigen.computeDirect(rotation, Eigen::EigenvaluesOnly);
+  eigen.computeDirect(covariance.bottomRightCorner<3, 3>(), Eigen::EigenvaluesOnly);
   const double angle_rad = std::sqrt(std::max(0.0, eigen.eigenvalues()[2]));
   return std::max(position_m / v.required_position_m, angle_rad / v.required_angle_rad);
 }
@@ -337,18 +340,7 @@ std::optional<ActiveValidationTarget> choose_precision_look(
     if (covariance(i, i) > 0.0 && std::isfinite(covariance(i, i))) free.push_back(i);
   }
   if (free.empty()) return std::nullopt;
-  PoseMatrix information_now = PoseMatrix::Zero();
-  {
-    const auto n = static_cast<Eigen::Index>(free.size());
-    Eigen::MatrixXd reduced(n, n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      for (Eigen::Index j = 0; j < n; ++j) reduced(i, j) = covariance(free[i], free[j]);
-    }
-    const Eigen::MatrixXd inverse = reduced.ldlt().solve(Eigen::MatrixXd::Identity(n, n));
-    for (Eigen::Index i = 0; i < n; ++i) {
-      for (Eigen::Index j = 0; j < n; ++j) information_now(free[i], free[j]) = inverse(i, j);
-    }
-  }
+  const PoseMatrix information_now = inverse_on(covariance, free);
   const Eigen::Vector3d& camera = options.noise.ego_camera_position_m;
   const double cos_view = std::cos(limits.view_half_angle_rad);
   // The gaze rays of the earlier looks (ego frame, unit vectors from the camera).
