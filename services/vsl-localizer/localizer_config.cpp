@@ -164,12 +164,11 @@ LocalizerSetup load_localizer(const Node& root, bool force_passive) {
       });
   // A look type that is no graph node type would make every look count nothing.
   const std::vector<std::string>& node_types = setup.options.graph.node_types;
-  if (const auto look_types = section.find("look_types"); look_types && !node_types.empty()) {
-    for (std::size_t i = 0; i < look_types->size(); ++i) {
-      const std::string type = (*look_types)[i].as_string();
-      if (std::find(node_types.begin(), node_types.end(), type) == node_types.end()) {
-        (*look_types)[i].fail("'" + type + "' is not one of the localizer's node_types");
-      }
+  const std::vector<std::string>& look_types = setup.config.core.look_limits.types;
+  for (std::size_t i = 0; i < look_types.size() && !node_types.empty(); ++i) {
+    if (std::find(node_types.begin(), node_types.end(), look_types[i]) == node_types.end()) {
+      section.at("look_types")[i].fail("'" + look_types[i] +
+                                       "' is not one of the localizer's node_types");
     }
   }
   return setup;
