@@ -57,7 +57,8 @@ strict" counts it as false) and the recall (over the objects within 4 m of the l
 the recall over those whose whole outline lies inside both images, not cut by the border), the 3D
 error of the matched percepts (within 10 cm of their object's reference point) by distance band,
 the recall of flat objects (doors) by viewing angle, the time per stereo pair, and the noise of
-the true positives' reference points and disparities (the learned recognizer's `noise:` model).
+the true positives' reference points and disparities (the learned recognizer's `noise:` model)
+with their median signed error, across and along the ray and in the object's own axes.
   --world FILE[,FILE]   world model, e.g. config/worlds/kitchen_galley.yaml; several, comma-
                         separated: --views of each, tallied together (the noise model of
                         several layouts at once)

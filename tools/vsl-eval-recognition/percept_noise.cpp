@@ -82,7 +82,9 @@ void PerceptNoiseTally::add(const std::vector<recognition::GroundTruthObject>& g
     if (across_u.norm() < 1e-6) across_u = Eigen::Vector3d::UnitX();
     across_u.normalize();
     const Eigen::Vector3d across_v = n.cross(across_u);
-    by_type_[p.type].push_back({range, {e.dot(across_u), e.dot(across_v)}, e.dot(n)});
+    const Eigen::Vector3d in_object =
+        object.ego_R_object.transpose() * (p.ego_position_m - object.ego_position_m);
+    by_type_[p.type].push_back({range, {e.dot(across_u), e.dot(across_v)}, e.dot(n), in_object});
   }
 }
 
@@ -166,6 +168,17 @@ void PerceptNoiseTally::print(std::ostream& out) const {
                   errors.size(), 1e3 * b->x(), 1e3 * b->y(), 1e3 * b->z());
     out << line;
   }
+  out << "and in the object's own axes, mm (a generated kitchen's door: x along its width, y into "
+         "its front face, z up)\n";
+  std::snprintf(line, sizeof line, "%-14s %8s %10s %10s %10s\n", "class", "n", "x", "y", "z");
+  out << line;
+  for (const auto& [type, errors] : by_type_) {
+    const auto b = object_bias_m(type);
+    if (!b) continue;
+    std::snprintf(line, sizeof line, "%-14s %8zu %10.1f %10.1f %10.1f\n", type.c_str(),
+                  errors.size(), 1e3 * b->x(), 1e3 * b->y(), 1e3 * b->z());
+    out << line;
+  }
 }
 
 std::optional<Eigen::Vector3d> PerceptNoiseTally::bias_m(const std::string& type) const {
@@ -178,6 +191,16 @@ std::optional<Eigen::Vector3d> PerceptNoiseTally::bias_m(const std::string& type
     along.push_back(e.along_m);
   }
   return Eigen::Vector3d(median(right), median(down), median(along));
+}
+
+std::optional<Eigen::Vector3d> PerceptNoiseTally::object_bias_m(const std::string& type) const {
+  const auto it = by_type_.find(type);
+  if (it == by_type_.end() || it->second.empty()) return std::nullopt;
+  std::array<std::vector<double>, 3> axes;
+  for (const Error& e : it->second) {
+    for (int k = 0; k < 3; ++k) axes[static_cast<std::size_t>(k)].push_back(e.object_m(k));
+  }
+  return Eigen::Vector3d(median(axes[0]), median(axes[1]), median(axes[2]));
 }
 
 }  // namespace vsl::tools

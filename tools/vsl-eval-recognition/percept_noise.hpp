@@ -54,6 +54,11 @@ class PerceptNoiseTally {
   // right, image down) and along it (away from the camera); nullopt without true positives.
   // The noise model has no bias; one shows here.
   std::optional<Eigen::Vector3d> bias_m(const std::string& type) const;
+  // The same in the object's own axes (GroundTruthObject::ego_R_object; a generated kitchen's
+  // door: x along its width, y into its front face, z up), metres: where the recognizer puts a
+  // class's reference point on the object, whatever the view (a door's top edge found on the
+  // worktop's lip above it shows in z, a rail's bar in y).
+  std::optional<Eigen::Vector3d> object_bias_m(const std::string& type) const;
   void print(std::ostream& out) const;
 
  private:
@@ -61,6 +66,7 @@ class PerceptNoiseTally {
     double range_m;
     double across_m[2];
     double along_m;
+    Eigen::Vector3d object_m;  // percept minus reference point in the object's axes
   };
   double focal_px_;
   double baseline_m_;

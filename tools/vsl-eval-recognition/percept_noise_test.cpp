@@ -3,6 +3,9 @@
 #include "percept_noise.hpp"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include <cmath>
 
 #include <random>
 #include <sstream>
@@ -90,6 +93,42 @@ TEST(PerceptNoiseTally, MedianSignedErrorShowsABias) {
   std::ostringstream out;
   tally.print(out);
   EXPECT_NE(out.str().find("median signed error"), std::string::npos) << out.str();
+}
+
+// A door turned a quarter about the vertical, every percept 2 cm along the ego x axis from it:
+// in the door's own axes that is 2 cm along -y (its y axis is the ego's -x), and nothing else.
+TEST(PerceptNoiseTally, ObjectBiasIsTheMedianErrorInTheObjectsAxes) {
+  PerceptNoiseTally tally(500.0, 0.09);
+  recognition::FrameResult result;
+  std::vector<recognition::GroundTruthObject> truth;
+  std::vector<recognition::PerceptMatch> matches;
+  std::mt19937 rng(5);
+  std::normal_distribution<double> unit(0.0, 0.003);
+  for (int i = 0; i < 200; ++i) {
+    recognition::GroundTruthObject door;
+    door.type = "door";
+    door.ego_position_m = Eigen::Vector3d(0.1 * i, 1.0, 2.0);
+    door.ego_R_object = Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    truth.push_back(door);
+    recognition::FramePercept p;
+    p.type = "door";
+    p.ego_position_m =
+        door.ego_position_m + Eigen::Vector3d(0.02 + unit(rng), unit(rng), unit(rng));
+    result.percepts.push_back(p);
+    recognition::PerceptMatch match;
+    match.ground_truth = i;
+    matches.push_back(match);
+  }
+  tally.add(truth, result, matches);
+  const auto bias = tally.object_bias_m("door");
+  ASSERT_TRUE(bias);
+  EXPECT_NEAR(bias->x(), 0.0, 0.001);
+  EXPECT_NEAR(bias->y(), -0.02, 0.001);
+  EXPECT_NEAR(bias->z(), 0.0, 0.001);
+  EXPECT_FALSE(tally.object_bias_m("handle"));
+  std::ostringstream out;
+  tally.print(out);
+  EXPECT_NE(out.str().find("in the object's own axes"), std::string::npos) << out.str();
 }
 
 }  // namespace

@@ -197,6 +197,7 @@ std::vector<recognition::GroundTruthObject> GroundTruthRenderer::objects(
     truth.object_index = i;
     truth.type = object.type;
     truth.ego_position_m = ego_T_world * object.world_position_m;
+    truth.ego_R_object = ego_T_world.linear() * object.world_orientation.toRotationMatrix();
     truth.distance_m = (object.world_position_m - world_left_centre_m).norm();
     truth.left_visible_px = left_px[i];
     truth.right_visible_px = right_px[i];

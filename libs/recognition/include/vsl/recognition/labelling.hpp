@@ -81,8 +81,11 @@ struct GroundTruthObject {
   std::size_t object_index = 0;  // into WorldModel::objects
   std::string type;
   Eigen::Vector3d ego_position_m = Eigen::Vector3d::Zero();  // reference point X_i, ego frame
-  double distance_m = 0.0;                                   // from the left camera centre
-  int left_visible_px = 0;                                   // in the rendering of the whole world
+  // The object's frame's axes in the ego frame (world::ObjectModel::world_orientation seen from
+  // the robot): an error in the ego frame e is R^T e in the object's own axes.
+  Eigen::Matrix3d ego_R_object = Eigen::Matrix3d::Identity();
+  double distance_m = 0.0;  // from the left camera centre
+  int left_visible_px = 0;  // in the rendering of the whole world
   int right_visible_px = 0;
   int left_unoccluded_px = 0;  // in the rendering of the recognizable objects alone
   int right_unoccluded_px = 0;
