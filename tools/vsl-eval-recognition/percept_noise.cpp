@@ -154,8 +154,9 @@ void PerceptNoiseTally::print(std::ostream& out) const {
     }
     out << line;
   }
-  // The model has no bias term; a bias shows here (a door centre found in front of its face,
-  // handles found low), and the same bias in every percept of a scan moves the pose.
+  // The model has no bias term; a bias shows here (a base unit's door centre found above its
+  // face's, a handle behind its bar), and the same bias in every percept of a scan can move the
+  // pose (not a height: under the planar prior that goes into the pose's z).
   out << "median signed error of the true positives, mm: across the ray (image right, image "
          "down) and along it (away from the camera)\n";
   std::snprintf(line, sizeof line, "%-14s %8s %10s %10s %10s\n", "class", "n", "right", "down",
