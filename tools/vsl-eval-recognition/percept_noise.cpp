@@ -157,29 +157,28 @@ void PerceptNoiseTally::print(std::ostream& out) const {
   // The model has no bias term; a bias shows here (a base unit's door centre found above its
   // face's, a handle behind its bar), and the same bias in every percept of a scan can move the
   // pose (not a height: under the planar prior that goes into the pose's z).
-  out << "median signed error of the true positives, mm: across the ray (image right, image "
-         "down) and along it (away from the camera)\n";
-  std::snprintf(line, sizeof line, "%-14s %8s %10s %10s %10s\n", "class", "n", "right", "down",
-                "along");
-  out << line;
-  for (const auto& [type, errors] : by_type_) {
-    const auto b = bias_m(type);
-    if (!b) continue;
-    std::snprintf(line, sizeof line, "%-14s %8zu %10.1f %10.1f %10.1f\n", type.c_str(),
-                  errors.size(), 1e3 * b->x(), 1e3 * b->y(), 1e3 * b->z());
+  // One table of per-class medians, mm, with its title and the three columns' names.
+  const auto print_bias = [&](const char* title, std::array<const char*, 3> columns, auto bias_of) {
+    out << title;
+    std::snprintf(line, sizeof line, "%-14s %8s %10s %10s %10s\n", "class", "n", columns[0],
+                  columns[1], columns[2]);
     out << line;
-  }
-  out << "and in the object's own axes, mm (a generated kitchen's door: x along its width, y into "
-         "its front face, z up)\n";
-  std::snprintf(line, sizeof line, "%-14s %8s %10s %10s %10s\n", "class", "n", "x", "y", "z");
-  out << line;
-  for (const auto& [type, errors] : by_type_) {
-    const auto b = object_bias_m(type);
-    if (!b) continue;
-    std::snprintf(line, sizeof line, "%-14s %8zu %10.1f %10.1f %10.1f\n", type.c_str(),
-                  errors.size(), 1e3 * b->x(), 1e3 * b->y(), 1e3 * b->z());
-    out << line;
-  }
+    for (const auto& [type, errors] : by_type_) {
+      const std::optional<Eigen::Vector3d> b = bias_of(type);
+      if (!b) continue;
+      std::snprintf(line, sizeof line, "%-14s %8zu %10.1f %10.1f %10.1f\n", type.c_str(),
+                    errors.size(), 1e3 * b->x(), 1e3 * b->y(), 1e3 * b->z());
+      out << line;
+    }
+  };
+  print_bias(
+      "median signed error of the true positives, mm: across the ray (image right, image down) "
+      "and along it (away from the camera)\n",
+      {"right", "down", "along"}, [this](const std::string& type) { return bias_m(type); });
+  print_bias(
+      "and in the object's own axes, mm (a generated kitchen's door: x along its width, y into "
+      "its front face, z up)\n",
+      {"x", "y", "z"}, [this](const std::string& type) { return object_bias_m(type); });
 }
 
 std::optional<Eigen::Vector3d> PerceptNoiseTally::bias_m(const std::string& type) const {
