@@ -154,9 +154,6 @@ void PerceptNoiseTally::print(std::ostream& out) const {
     }
     out << line;
   }
-  // The model has no bias term; a bias shows here (a base unit's door centre found above its
-  // face's, a handle behind its bar), and the same bias in every percept of a scan can move the
-  // pose (not a height: under the planar prior that goes into the pose's z).
   // One table of per-class medians, mm, with its title and the three columns' names.
   const auto print_bias = [&](const char* title, std::array<const char*, 3> columns, auto bias_of) {
     out << title;
@@ -171,6 +168,9 @@ void PerceptNoiseTally::print(std::ostream& out) const {
       out << line;
     }
   };
+  // The model has no bias term; a bias shows here (a base unit's door centre found above its
+  // face's, a handle behind its bar), and the same bias in every percept of a scan can move the
+  // pose (not a height: under the planar prior that goes into the pose's z).
   print_bias(
       "median signed error of the true positives, mm: across the ray (image right, image down) "
       "and along it (away from the camera)\n",
@@ -181,26 +181,26 @@ void PerceptNoiseTally::print(std::ostream& out) const {
       {"x", "y", "z"}, [this](const std::string& type) { return object_bias_m(type); });
 }
 
-std::optional<Eigen::Vector3d> PerceptNoiseTally::bias_m(const std::string& type) const {
-  const auto it = by_type_.find(type);
-  if (it == by_type_.end() || it->second.empty()) return std::nullopt;
-  std::vector<double> right, down, along;
-  for (const Error& e : it->second) {
-    right.push_back(e.across_m[0]);
-    down.push_back(e.across_m[1]);
-    along.push_back(e.along_m);
-  }
-  return Eigen::Vector3d(median(right), median(down), median(along));
-}
-
-std::optional<Eigen::Vector3d> PerceptNoiseTally::object_bias_m(const std::string& type) const {
+std::optional<Eigen::Vector3d> PerceptNoiseTally::median_per_axis(
+    const std::string& type, Eigen::Vector3d (*of)(const Error&)) const {
   const auto it = by_type_.find(type);
   if (it == by_type_.end() || it->second.empty()) return std::nullopt;
   std::array<std::vector<double>, 3> axes;
   for (const Error& e : it->second) {
-    for (int k = 0; k < 3; ++k) axes[static_cast<std::size_t>(k)].push_back(e.object_m(k));
+    const Eigen::Vector3d v = of(e);
+    for (int k = 0; k < 3; ++k) axes[static_cast<std::size_t>(k)].push_back(v(k));
   }
   return Eigen::Vector3d(median(axes[0]), median(axes[1]), median(axes[2]));
+}
+
+std::optional<Eigen::Vector3d> PerceptNoiseTally::bias_m(const std::string& type) const {
+  return median_per_axis(type, [](const Error& e) {
+    return Eigen::Vector3d(e.across_m[0], e.across_m[1], e.along_m);
+  });
+}
+
+std::optional<Eigen::Vector3d> PerceptNoiseTally::object_bias_m(const std::string& type) const {
+  return median_per_axis(type, [](const Error& e) { return e.object_m; });
 }
 
 }  // namespace vsl::tools

@@ -68,6 +68,9 @@ class PerceptNoiseTally {
     double along_m;
     Eigen::Vector3d object_m;  // percept minus reference point in the object's axes
   };
+  // Per axis, the median of `of` over a class's true positives; nullopt without any.
+  std::optional<Eigen::Vector3d> median_per_axis(const std::string& type,
+                                                 Eigen::Vector3d (*of)(const Error&)) const;
   double focal_px_;
   double baseline_m_;
   std::map<std::string, std::vector<Error>> by_type_;

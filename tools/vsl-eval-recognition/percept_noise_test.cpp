@@ -6,7 +6,6 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
-
 #include <random>
 #include <sstream>
 
