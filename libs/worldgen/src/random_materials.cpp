@@ -19,6 +19,12 @@ constexpr std::size_t kRoleCount = 6;         // LookRole's values
 constexpr std::size_t kOther = kRoleCount;    // objects of no look role
 constexpr double kCarcassMatchesDoors = 0.3;  // share of kitchens whose carcasses match the doors
 constexpr double kHandleMatchesDoors = 0.05;  // handles in the doors' colour (grips, painted)
+// Handles about as bright as their doors (steel rails on white laminate, brass cups on sage
+// paint), so that a detector trained on these looks finds handles by their shape and highlights,
+// not by a step in brightness. Their hue and finish stay the handle palette's; their luma becomes
+// the doors' times a factor drawn log-uniformly within [1 / spread, spread].
+constexpr double kHandleNearDoorTone = 0.35;
+constexpr double kHandleToneSpread = 1.3;
 
 struct Claim {
   std::string material;
@@ -63,6 +69,26 @@ std::vector<Claim> claimed_materials(const world::WorldModel& world) {
   std::stable_sort(claims.begin(), claims.end(),
                    [](const Claim& a, const Claim& b) { return a.role < b.role; });
   return claims;
+}
+
+// Rec. 601 luma of an sRGB colour, 0-255.
+double luma(const world::Colour& c) {
+  return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
+}
+
+world::Colour scaled(const world::Colour& c, double factor) {
+  const auto channel = [factor](std::uint8_t v) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(v * factor), 0L, 255L));
+  };
+  return {channel(c.r), channel(c.g), channel(c.b)};
+}
+
+// `handle` with its colour and pattern colour scaled so that its luma is `door`'s times
+// `luma_ratio` (as near as the 0-255 range allows).
+void tone_like(world::Material& handle, const world::Material& door, double luma_ratio) {
+  const double factor = luma_ratio * luma(door.colour) / std::max(luma(handle.colour), 1.0);
+  handle.colour = scaled(handle.colour, factor);
+  if (handle.pattern_colour) handle.pattern_colour = scaled(*handle.pattern_colour, factor);
 }
 
 // Primitives without a material in objects of `role` get the material `name`.
@@ -138,10 +164,14 @@ void randomize_materials(world::WorldModel& world, Rng& rng, double free_colour_
     world::Material look = draw_look(claim.role, rng, free_colour_probability);
     // Drawn whatever the role, so that one role's draws do not shift another's.
     const double match = rng.uniform();
+    const double tone = rng.uniform();
+    const double log_luma_ratio = rng.uniform(-1.0, 1.0) * std::log(kHandleToneSpread);
     if (claim.role == LookRole::door && !door_look) door_look = look;
     if (door_look && ((claim.role == LookRole::carcass && match < kCarcassMatchesDoors) ||
                       (claim.role == LookRole::handle && match < kHandleMatchesDoors))) {
       look = *door_look;
+    } else if (door_look && claim.role == LookRole::handle && tone < kHandleNearDoorTone) {
+      tone_like(look, *door_look, std::exp(log_luma_ratio));
     }
     look.name = claim.material;
     if (claim.material.empty()) {

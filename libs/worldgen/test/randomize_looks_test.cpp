@@ -82,6 +82,26 @@ TEST(RandomizeLooks, DrawsManyDifferentLooksFromThePalettes) {
   EXPECT_GE(door_colours.size(), 55u);    // jittered: hardly ever the same twice
 }
 
+double luma(const world::Colour& c) {
+  return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
+}
+
+// A detector trained on these looks must also see handles that hardly stand out from their doors
+// (steel rails on white doors, brass cups on sage paint), and still see contrasting ones mostly.
+TEST(RandomizeLooks, GivesAShareOfKitchensHandlesAboutAsBrightAsTheirDoors) {
+  int near_door_tone = 0, kitchens = 0;
+  for (std::uint64_t seed = 100; seed < 300; ++seed, ++kitchens) {
+    const world::WorldModel looks = randomize_looks(kitchen(), seed);
+    const double ratio =
+        luma(material(looks, "handle").colour) / luma(material(looks, "door").colour);
+    if (ratio > 1.0 / 1.2 && ratio < 1.2) ++near_door_tone;
+  }
+  // Within 20 %: about a fifth of the palette's pairs, and about 0.35 drawn so, most of which
+  // land there.
+  EXPECT_GT(near_door_tone, kitchens * 35 / 100);
+  EXPECT_LT(near_door_tone, kitchens * 6 / 10);
+}
+
 TEST(RandomizeLooks, ReplacesTheCeilingLampsWithinTheCountAndRanges) {
   LookRandomization options;
   options.min_ceiling_lamps = 2;
