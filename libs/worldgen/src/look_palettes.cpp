@@ -224,10 +224,6 @@ std::uint8_t channel(double value) {
   return static_cast<std::uint8_t>(std::clamp(std::lround(value), 0L, 255L));
 }
 
-Colour scaled(const Colour& c, double factor) {
-  return {channel(c.r * factor), channel(c.g * factor), channel(c.b * factor)};
-}
-
 Colour free_colour(Rng& rng) {
   return {static_cast<std::uint8_t>(rng.below(256)), static_cast<std::uint8_t>(rng.below(256)),
           static_cast<std::uint8_t>(rng.below(256))};
@@ -275,6 +271,10 @@ std::optional<LookRole> look_role_of_type(const std::string& type) {
   if (type == "countertop") return LookRole::worktop;
   if (type == "floor") return LookRole::floor;
   return std::nullopt;
+}
+
+world::Colour scaled(const world::Colour& c, double factor) {
+  return {channel(c.r * factor), channel(c.g * factor), channel(c.b * factor)};
 }
 
 world::Colour jittered(const world::Colour& colour, double amount, Rng& rng) {

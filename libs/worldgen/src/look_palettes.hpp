@@ -38,6 +38,9 @@ enum class ClutterLook {
 };
 world::Material draw_clutter_look(ClutterLook kind, Rng& rng);
 
+// `c` with every channel scaled by `factor`, clamped to 0-255.
+world::Colour scaled(const world::Colour& c, double factor);
+
 // `colour` with its brightness scaled by up to +-amount and each channel by up to +-amount / 3.
 world::Colour jittered(const world::Colour& colour, double amount, Rng& rng);
 

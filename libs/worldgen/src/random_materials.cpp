@@ -76,13 +76,6 @@ double luma(const world::Colour& c) {
   return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
 }
 
-world::Colour scaled(const world::Colour& c, double factor) {
-  const auto channel = [factor](std::uint8_t v) {
-    return static_cast<std::uint8_t>(std::clamp(std::lround(v * factor), 0L, 255L));
-  };
-  return {channel(c.r), channel(c.g), channel(c.b)};
-}
-
 // `handle` with its colour and pattern colour scaled so that its luma is `door`'s times
 // `luma_ratio` (as near as the 0-255 range allows).
 void tone_like(world::Material& handle, const world::Material& door, double luma_ratio) {
