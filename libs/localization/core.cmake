@@ -5,6 +5,7 @@ list(APPEND VSL_LOCALIZATION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/node_grid.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/pose_uncertainty.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/floor_model.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/segment_nodes.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/proximity_filter.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/orientation_filter.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/seeds.cpp
@@ -17,6 +18,7 @@ list(APPEND VSL_LOCALIZATION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/percept_noise_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/spatial_index_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/floor_model_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/segment_nodes_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/proximity_filter_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/orientation_filter_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/seeds_test.cpp

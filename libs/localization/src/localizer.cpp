@@ -24,6 +24,7 @@
 //  - an interpretation whose Eq. 16 pose is the same as one already found is not validated again;
 //  - validated hypotheses are kept merged (indistinguishable ones are one) in a spatial index.
 #include "vsl/localization/localizer.hpp"
+#include "vsl/localization/segment_nodes.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -194,6 +195,7 @@ struct Localizer::State {
   TypedAdjacency adjacency;
   NodeGrid grid;
   FloorModel floor;
+  std::vector<Eigen::Vector3d> half_axes;  // per node (segment_nodes.hpp)
 };
 
 Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
@@ -201,8 +203,11 @@ Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
   TypedAdjacency adjacency = TypedAdjacency::build(graph);
   NodeGrid grid = NodeGrid::build(graph, kGridCellM);
   FloorModel floor = FloorModel::build(graph, options.pruning);
+  std::vector<Eigen::Vector3d> half_axes =
+      node_half_axes(world, graph, options.validation.segment_types);
   state_ = std::make_unique<State>(State{&world, std::move(options), std::move(graph),
-                                         std::move(adjacency), std::move(grid), std::move(floor)});
+                                         std::move(adjacency), std::move(grid), std::move(floor),
+                                         std::move(half_axes)});
 }
 
 Localizer::~Localizer() = default;
@@ -405,7 +410,8 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
   const LocalizerOptions& options = context.options;
   const ValidationOptions& v = options.validation;
   std::vector<PointCorrespondence> points;
-  for (const NodeAssociation& a : best.explanation.associations) {
+  std::vector<NodeAssociation> kept = best.explanation.associations;  // as `points`
+  for (const NodeAssociation& a : kept) {
     points.push_back(context.correspondence(a.percept, a.node));
   }
   RefinedPose refined = refine_pose(best.world_T_ego, points, options.refinement);
@@ -414,8 +420,7 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
   std::size_t dropped = 0;
   const double w2_threshold =
       v.outlier_test_alpha > 0.0 ? chi_square_quantile(3, v.outlier_test_alpha) : 0.0;
-  const double needed = std::max(static_cast<double>(options.hypotheses.min_associations),
-                                 v.min_explained_fraction * static_cast<double>(usable));
+
   while (v.outlier_test_alpha > 0.0 && refined.world_T_ego.matrix().allFinite() &&
          points.size() > 3) {
     const std::vector<double> w2 =
@@ -426,6 +431,7 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
     }
     if (worst == w2.size() || w2[worst] <= w2_threshold) break;
     points.erase(points.begin() + static_cast<std::ptrdiff_t>(worst));
+    kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(worst));
     result.associations.erase(result.associations.begin() + static_cast<std::ptrdiff_t>(worst));
     ++dropped;
     refined = refine_pose(refined.world_T_ego, points, options.refinement);
@@ -438,8 +444,16 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
     result.hypotheses.front().world_T_ego = refined.world_T_ego;
   }
   if (refined.covariance_valid) result.covariance = refined.covariance;
-  result.message =
-      "explains " + std::to_string(points.size()) + " of " + std::to_string(usable) + " percepts";
+  // Pieces of bars (segment_nodes.hpp) at the refined pose, among them percepts the w-test
+  // dropped as points (a piece fits the pose, not its bar's middle), are set aside: the share
+  // is of the rest.
+  const std::size_t pieces =
+      bar_pieces(context, result.world_T_ego, PoseUncertainty{}, kept).size();
+  const std::size_t judged = usable - std::min(pieces, usable);
+  const double needed = std::max(static_cast<double>(options.hypotheses.min_associations),
+                                 v.min_explained_fraction * static_cast<double>(judged));
+  result.message = "explains " + std::to_string(points.size()) + " of " + std::to_string(judged) +
+                   " percepts" + pieces_note(pieces);
   if (dropped > 0) {
     result.message += " (" + std::to_string(dropped) + " inconsistent with the others dropped)";
   }
@@ -522,7 +536,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     return finish();
   }
   const LocalizationContext context{graph, state_->adjacency, state_->grid, percepts,
-                                    noise, candidates,        options};
+                                    noise, candidates,        options,      &state_->half_axes};
   std::optional<SeedChooser> chooser;
   {
     StageTimer timer(times.orientation_filter_ms);

@@ -87,7 +87,7 @@ HypothesisOptions hypotheses(const Node& section, HypothesisOptions out) {
 ValidationOptions validation(const Node& section, ValidationOptions out) {
   section.expect_keys({"gate_sigmas", "ambiguity_margin", "clutter_density_per_m3",
                        "min_explained_fraction", "precision_sigmas", "required_position_m",
-                       "required_angle_rad", "outlier_test_alpha"});
+                       "required_angle_rad", "outlier_test_alpha", "segment_types"});
   if (const auto v = section.find("gate_sigmas")) out.gate_sigmas = v->as_double_in(0.5, 20.0);
   if (const auto v = section.find("ambiguity_margin"))
     out.ambiguity_margin = v->as_double_in(0.0, 100.0);
@@ -107,6 +107,10 @@ ValidationOptions validation(const Node& section, ValidationOptions out) {
   }
   if (const auto v = section.find("required_angle_rad")) {
     out.required_angle_rad = v->as_double_in(1e-4, 3.1416);
+  }
+  if (const auto v = section.find("segment_types")) {
+    out.segment_types.clear();
+    for (std::size_t i = 0; i < v->size(); ++i) out.segment_types.push_back((*v)[i].as_string());
   }
   return out;
 }

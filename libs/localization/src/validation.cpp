@@ -10,6 +10,7 @@
 
 #include "vsl/localization/hypotheses.hpp"
 #include "vsl/localization/percept_noise.hpp"
+#include "vsl/localization/segment_nodes.hpp"
 
 namespace vsl::localization {
 namespace {
@@ -79,6 +80,7 @@ Explanation explain(const LocalizationContext& context, const Eigen::Isometry3d&
   std::sort(
       out.associations.begin(), out.associations.end(),
       [](const NodeAssociation& a, const NodeAssociation& b) { return a.percept < b.percept; });
+  out.bar_pieces = bar_pieces(context, world_T_ego, uncertainty, out.associations);
   return out;
 }
 
@@ -152,6 +154,10 @@ bool ranks_before(const ValidatedHypothesis& a, const ValidatedHypothesis& b) {
   return a.explanation.chi2 < b.explanation.chi2;
 }
 
+std::string pieces_note(std::size_t pieces) {
+  return pieces > 0 ? " (" + std::to_string(pieces) + " more, pieces of bars, set aside)" : "";
+}
+
 Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usable_percepts,
                 const ValidationOptions& validation, const HypothesisOptions& hypotheses) {
   Decision out;
@@ -161,12 +167,15 @@ Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usab
   }
   const double best = ranked.front().score;
   const std::size_t explained = ranked.front().explained();
-  const double needed =
-      std::max(static_cast<double>(hypotheses.min_associations),
-               validation.min_explained_fraction * static_cast<double>(usable_percepts));
+  // Pieces of bars are set aside (segment_nodes.hpp): the share is of the rest.
+  const std::size_t pieces = ranked.front().explanation.bar_pieces.size();
+  const std::size_t judged = usable_percepts - std::min(pieces, usable_percepts);
+  const double needed = std::max(static_cast<double>(hypotheses.min_associations),
+                                 validation.min_explained_fraction * static_cast<double>(judged));
   if (static_cast<double>(explained) < needed) {
     out.message = "the best hypothesis explains " + std::to_string(explained) + " of " +
-                  std::to_string(usable_percepts) + " percepts, fewer than needed";
+                  std::to_string(judged) + " percepts" + pieces_note(pieces) +
+                  ", fewer than needed";
     return out;
   }
   out.contenders = 1;

@@ -49,8 +49,12 @@ namespace vsl::localization {
 
 struct Explanation {
   std::vector<NodeAssociation> associations;  // sorted by percept
-  double chi2 = 0.0;                          // sum of squared Mahalanobis distances
-  double log_likelihood_ratio = 0.0;          // the score, see above
+  // Percepts the associations leave out that lie along a bar no association holds
+  // (segment_nodes.hpp): set aside, neither scored nor used for the pose, and the explained
+  // fraction taken over the rest. Sorted by percept.
+  std::vector<NodeAssociation> bar_pieces;
+  double chi2 = 0.0;                  // sum of squared Mahalanobis distances
+  double log_likelihood_ratio = 0.0;  // the score, see above
 };
 
 // The percepts explained by `world_T_ego` (see above).
@@ -88,7 +92,11 @@ struct Decision {
   std::string message;
 };
 
+// " (N more, pieces of bars, set aside)" for N > 0 pieces, "" for none: the messages' note.
+std::string pieces_note(std::size_t pieces);
+
 // `ranked` sorted with ranks_before and free of duplicates; `usable_percepts` as above.
+
 Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usable_percepts,
                 const ValidationOptions& validation, const HypothesisOptions& hypotheses);
 
