@@ -1,5 +1,7 @@
 // config/localizer.yaml -> LocalizerOptions. Every key is optional (the defaults are the struct's)
 // and validated: a wrong value or an unknown key stops the program with file:line: key: what.
+#include <algorithm>
+
 #include "vsl/config/node.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/world/world_graph_options.hpp"
@@ -144,6 +146,16 @@ LocalizerOptions localizer_options_from(const Node& root) {
   }
   if (const auto s = root.find("refinement")) {
     options.refinement = refinement(*s, options.refinement);
+  }
+  // A bar type given that is no node type would never match a piece: a typo, not a choice.
+  const std::vector<std::string>& node_types = options.graph.node_types;
+  const std::vector<std::string>& segment_types = options.validation.segment_types;
+  const auto validation_section = root.find("validation");
+  const auto given = validation_section ? validation_section->find("segment_types") : std::nullopt;
+  for (std::size_t i = 0; given && i < segment_types.size() && !node_types.empty(); ++i) {
+    if (std::find(node_types.begin(), node_types.end(), segment_types[i]) == node_types.end()) {
+      (*given)[i].fail("'" + segment_types[i] + "' is not one of world_graph.node_types");
+    }
   }
   return options;
 }

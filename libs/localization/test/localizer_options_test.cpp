@@ -55,6 +55,18 @@ TEST(LocalizerOptions, AbsentKeysKeepTheDefaults) {
   EXPECT_TRUE(options.refinement.planar_prior);
 }
 
+TEST(LocalizerOptions, SegmentTypesAreReadAndMustBeNodeTypes) {
+  const LocalizerOptions none = localizer_options_from(
+      config::Node::load_string("validation: {segment_types: []}\n", "l.yaml"));
+  EXPECT_TRUE(none.validation.segment_types.empty());
+  EXPECT_EQ(LocalizerOptions{}.validation.segment_types, std::vector<std::string>{"handle"});
+  EXPECT_NE(error_of("validation: {segment_types: [handle, handel]}\n")
+                .find("l.yaml:1: validation.segment_types[1]: 'handel' is not one of "
+                      "world_graph.node_types"),
+            std::string::npos)
+      << error_of("validation: {segment_types: [handle, handel]}\n");
+}
+
 TEST(LocalizerOptions, ReadsEverySection) {
   const LocalizerOptions options = localizer_options_from(config::Node::load_string(
       "world_graph: {link_threshold_m: 3.5, edge_node_types: [door]}\n"
