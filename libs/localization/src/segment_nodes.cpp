@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
+#include <utility>
+
+#include "one_to_one.hpp"
 
 namespace vsl::localization {
 
@@ -75,16 +77,7 @@ std::vector<NodeAssociation> bar_pieces(const LocalizationContext& context,
       if (d2 <= gate * gate) pairings.push_back({d2, static_cast<int>(l), node});
     });
   }
-  std::sort(pairings.begin(), pairings.end(), [](const Pairing& a, const Pairing& b) {
-    return std::tie(a.d2, a.percept, a.node) < std::tie(b.d2, b.percept, b.node);
-  });
-  for (const Pairing& p : pairings) {
-    if (percept_used[static_cast<std::size_t>(p.percept)] ||
-        std::find(nodes_used.begin(), nodes_used.end(), p.node) != nodes_used.end()) {
-      continue;
-    }
-    percept_used[static_cast<std::size_t>(p.percept)] = true;
-    nodes_used.push_back(p.node);
+  for (const Pairing& p : internal::one_to_one(std::move(pairings), percept_used, nodes_used)) {
     out.push_back({p.percept, p.node});
   }
   std::sort(out.begin(), out.end(), [](const NodeAssociation& a, const NodeAssociation& b) {

@@ -12,6 +12,8 @@
 #include "vsl/localization/percept_noise.hpp"
 #include "vsl/localization/segment_nodes.hpp"
 
+#include "one_to_one.hpp"
+
 namespace vsl::localization {
 namespace {
 
@@ -60,19 +62,10 @@ Explanation explain(const LocalizationContext& context, const Eigen::Isometry3d&
     });
   }
   // One object per percept and one percept per object, closest pairs first.
-  std::sort(pairings.begin(), pairings.end(), [](const Pairing& a, const Pairing& b) {
-    return std::tie(a.d2, a.percept, a.node) < std::tie(b.d2, b.percept, b.node);
-  });
   Explanation out;
   std::vector<bool> percept_used(context.percepts.size(), false);
   std::vector<NodeIndex> nodes_used;
-  for (const Pairing& p : pairings) {
-    if (percept_used[p.percept] ||
-        std::find(nodes_used.begin(), nodes_used.end(), p.node) != nodes_used.end()) {
-      continue;
-    }
-    percept_used[p.percept] = true;
-    nodes_used.push_back(p.node);
+  for (const Pairing& p : internal::one_to_one(std::move(pairings), percept_used, nodes_used)) {
     out.associations.push_back({p.percept, p.node});
     out.chi2 += p.d2;
     out.log_likelihood_ratio += std::max(0.0, p.log_normaliser - 0.5 * p.d2);
