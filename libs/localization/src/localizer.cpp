@@ -24,7 +24,6 @@
 //  - an interpretation whose Eq. 16 pose is the same as one already found is not validated again;
 //  - validated hypotheses are kept merged (indistinguishable ones are one) in a spatial index.
 #include "vsl/localization/localizer.hpp"
-#include "vsl/localization/segment_nodes.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -47,6 +46,7 @@
 #include "vsl/localization/pose_index.hpp"
 #include "vsl/localization/proximity_filter.hpp"
 #include "vsl/localization/seeds.hpp"
+#include "vsl/localization/segment_nodes.hpp"
 #include "vsl/localization/validation.hpp"
 
 namespace vsl::localization {
@@ -419,7 +419,6 @@ void refine_localized(const LocalizationContext& context, const ValidatedHypothe
   std::size_t dropped = 0;
   const double w2_threshold =
       v.outlier_test_alpha > 0.0 ? chi_square_quantile(3, v.outlier_test_alpha) : 0.0;
-
   while (v.outlier_test_alpha > 0.0 && refined.world_T_ego.matrix().allFinite() &&
          points.size() > 3) {
     const std::vector<double> w2 =

@@ -122,8 +122,9 @@ struct ValidationOptions {
   // this false-alarm probability is dropped and the pose refined again, until all pass; with
   // fewer associations left than a localized pose needs, FAILED. 0 disables the test.
   double outlier_test_alpha = 0.01;
-  // Objects of these types are bars (segment_nodes.hpp): their percepts may be pieces of them,
-  // matched anywhere along the bar's long axis, in validation, pose estimation and refinement.
+  // Objects of these types are bars (segment_nodes.hpp): a percept validation associates with
+  // nothing that lies along one is a piece of it, set aside (not held against the pose, not used
+  // for it), and min_explained_fraction is taken over the other percepts.
   std::vector<std::string> segment_types{"handle"};
   friend bool operator==(const ValidationOptions&, const ValidationOptions&) = default;
 };

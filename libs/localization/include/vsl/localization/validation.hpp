@@ -95,8 +95,8 @@ struct Decision {
 // " (N more, pieces of bars, set aside)" for N > 0 pieces, "" for none: the messages' note.
 std::string pieces_note(std::size_t pieces);
 
-// `ranked` sorted with ranks_before and free of duplicates; `usable_percepts` as above.
-
+// `ranked` sorted with ranks_before and free of duplicates; `usable_percepts` as above; the best
+// hypothesis' pieces of bars are set aside, its explained share taken over the other percepts.
 Decision decide(const std::vector<ValidatedHypothesis>& ranked, std::size_t usable_percepts,
                 const ValidationOptions& validation, const HypothesisOptions& hypotheses);
 
