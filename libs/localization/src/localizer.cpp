@@ -195,7 +195,7 @@ struct Localizer::State {
   TypedAdjacency adjacency;
   NodeGrid grid;
   FloorModel floor;
-  std::vector<Eigen::Vector3d> half_axes;  // per node (segment_nodes.hpp)
+  NodeSegments segments;  // segment_nodes.hpp
 };
 
 Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
@@ -203,11 +203,10 @@ Localizer::Localizer(const world::WorldModel& world, LocalizerOptions options) {
   TypedAdjacency adjacency = TypedAdjacency::build(graph);
   NodeGrid grid = NodeGrid::build(graph, kGridCellM);
   FloorModel floor = FloorModel::build(graph, options.pruning);
-  std::vector<Eigen::Vector3d> half_axes =
-      node_half_axes(world, graph, options.validation.segment_types);
+  NodeSegments segments = node_segments(world, graph, options.validation.segment_types);
   state_ = std::make_unique<State>(State{&world, std::move(options), std::move(graph),
                                          std::move(adjacency), std::move(grid), std::move(floor),
-                                         std::move(half_axes)});
+                                         std::move(segments)});
 }
 
 Localizer::~Localizer() = default;
@@ -534,7 +533,7 @@ LocalizationResult Localizer::localize(const std::vector<FusedPercept>& percepts
     return finish();
   }
   const LocalizationContext context{graph, state_->adjacency, state_->grid, percepts,
-                                    noise, candidates,        options,      &state_->half_axes};
+                                    noise, candidates,        options,      &state_->segments};
   std::optional<SeedChooser> chooser;
   {
     StageTimer timer(times.orientation_filter_ms);

@@ -8,10 +8,10 @@
 
 namespace vsl::localization {
 
-std::vector<Eigen::Vector3d> node_half_axes(const world::WorldModel& world,
-                                            const world::WorldGraph& graph,
-                                            const std::vector<std::string>& segment_types) {
-  std::vector<Eigen::Vector3d> out(graph.node_count(), Eigen::Vector3d::Zero());
+NodeSegments node_segments(const world::WorldModel& world, const world::WorldGraph& graph,
+                           const std::vector<std::string>& segment_types) {
+  NodeSegments out;
+  out.half_axes_m.assign(graph.node_count(), Eigen::Vector3d::Zero());
   for (world::NodeIndex node = 0; node < graph.node_count(); ++node) {
     const std::string& type = graph.type_name(graph.type(node));
     if (std::find(segment_types.begin(), segment_types.end(), type) == segment_types.end()) {
@@ -22,7 +22,8 @@ std::vector<Eigen::Vector3d> node_half_axes(const world::WorldModel& world,
     const Eigen::Vector3d& size = *object.size_m;
     const Eigen::Vector3d axis = size.x() >= size.z() ? Eigen::Vector3d::UnitX()   // a rail
                                                       : Eigen::Vector3d::UnitZ();  // upright
-    out[node] = object.world_orientation * (0.5 * std::max(size.x(), size.z()) * axis);
+    out.half_axes_m[node] = object.world_orientation * (0.5 * std::max(size.x(), size.z()) * axis);
+    out.longest_half_length_m = std::max(out.longest_half_length_m, out.half_axes_m[node].norm());
   }
   return out;
 }
@@ -45,7 +46,7 @@ std::vector<NodeAssociation> bar_pieces(const LocalizationContext& context,
                                         const PoseUncertainty& uncertainty,
                                         const std::vector<NodeAssociation>& explained) {
   std::vector<NodeAssociation> out;
-  if (context.max_half_length_m <= 0.0) return out;
+  if (context.longest_half_length_m() <= 0.0) return out;
   std::vector<bool> percept_used(context.percepts.size(), false);
   std::vector<world::NodeIndex> nodes_used;
   for (const NodeAssociation& a : explained) {
@@ -67,8 +68,8 @@ std::vector<NodeAssociation> bar_pieces(const LocalizationContext& context,
     const PerceptNoise& noise = context.noise[l];
     const double extra_m2 = std::pow(uncertainty.sigma_at_m(x), 2);
     // A bar's reference point may lie half its length beyond the gate around the percept.
-    const double radius_m =
-        gate * std::sqrt(noise.variances_m2.maxCoeff() + extra_m2) + context.max_half_length_m;
+    const double radius_m = gate * std::sqrt(noise.variances_m2.maxCoeff() + extra_m2) +
+                            context.longest_half_length_m();
     const Eigen::Vector3d world_x = world_T_ego * x;
     context.grid.for_each_within(*type, world_x, radius_m, [&](world::NodeIndex node, double) {
       if (context.half_axis(node).isZero()) return;

@@ -31,7 +31,7 @@ world::ObjectModel sized(const std::string& id, const std::string& type,
   return o;
 }
 
-TEST(NodeHalfAxes, ARailLiesAlongItsWidthAnUprightBarAlongItsHeightOtherTypesArePoints) {
+TEST(NodeSegments, ARailLiesAlongItsWidthAnUprightBarAlongItsHeightOtherTypesArePoints) {
   world::WorldModel w;
   w.objects.push_back(
       sized("rail", "handle", {1, 2, 0.8}, {0.5, 0.04, 0.014}, std::numbers::pi / 2));
@@ -43,7 +43,9 @@ TEST(NodeHalfAxes, ARailLiesAlongItsWidthAnUprightBarAlongItsHeightOtherTypesAre
   w.index_ids();
   const LocalizerOptions options = testing::test_options();
   const world::WorldGraph graph = world::WorldGraph::build(w, options.graph);
-  const std::vector<Eigen::Vector3d> axes = node_half_axes(w, graph, {"handle"});
+  const NodeSegments segments = node_segments(w, graph, {"handle"});
+  const std::vector<Eigen::Vector3d>& axes = segments.half_axes_m;
+  EXPECT_DOUBLE_EQ(segments.longest_half_length_m, 0.25);
   ASSERT_EQ(axes.size(), graph.node_count());
   for (world::NodeIndex n = 0; n < graph.node_count(); ++n) {
     const std::string& id = w.objects[graph.object_index(n)].id;
@@ -55,7 +57,9 @@ TEST(NodeHalfAxes, ARailLiesAlongItsWidthAnUprightBarAlongItsHeightOtherTypesAre
         << id << " (" << type << "): " << axes[n].transpose();
   }
   // No bar types: every node a point.
-  for (const Eigen::Vector3d& a : node_half_axes(w, graph, {})) EXPECT_TRUE(a.isZero());
+  const NodeSegments points = node_segments(w, graph, {});
+  for (const Eigen::Vector3d& a : points.half_axes_m) EXPECT_TRUE(a.isZero());
+  EXPECT_EQ(points.longest_half_length_m, 0.0);
 }
 
 TEST(NearestOnSegment, ProjectsOntoTheAxisAndClampsToTheEnds) {

@@ -3,7 +3,6 @@
 // the options (all by reference: it lives on the caller's stack), and the table of percept pairs.
 #pragma once
 
-#include <algorithm>
 #include <vector>
 
 #include "vsl/localization/localizer.hpp"
@@ -16,14 +15,11 @@
 
 namespace vsl::localization {
 
-// The longest of the half axes, metres; 0 for none.
-inline double longest_half_axis_m(const std::vector<Eigen::Vector3d>* half_axes) {
-  double out = 0.0;
-  if (half_axes) {
-    for (const Eigen::Vector3d& h : *half_axes) out = std::max(out, h.norm());
-  }
-  return out;
-}
+// Every node as a segment (segment_nodes.hpp: node_segments), built once per world.
+struct NodeSegments {
+  std::vector<Eigen::Vector3d> half_axes_m;  // per node, world frame, metres; zero: a point
+  double longest_half_length_m = 0.0;        // the longest half axis (0: no segments)
+};
 
 // make_percept_pair for every ordered pair (a, b) at [a * n + b] (a == b: distance 0).
 std::vector<PerceptPair> percept_pair_table(const std::vector<FusedPercept>& percepts,
@@ -34,8 +30,7 @@ struct LocalizationContext {
   LocalizationContext(const world::WorldGraph& graph_, const TypedAdjacency& adjacency_,
                       const NodeGrid& grid_, const std::vector<FusedPercept>& percepts_,
                       const std::vector<PerceptNoise>& noise_, const CandidateSets& candidates_,
-                      const LocalizerOptions& options_,
-                      const std::vector<Eigen::Vector3d>* half_axes_ = nullptr)
+                      const LocalizerOptions& options_, const NodeSegments* segments_ = nullptr)
       : graph(graph_),
         adjacency(adjacency_),
         grid(grid_),
@@ -43,8 +38,7 @@ struct LocalizationContext {
         noise(noise_),
         candidates(candidates_),
         options(options_),
-        half_axes(half_axes_),
-        max_half_length_m(longest_half_axis_m(half_axes_)),
+        segments(segments_),
         pairs(percept_pair_table(percepts_, noise_, options_.pruning)) {}
 
   const world::WorldGraph& graph;
@@ -54,9 +48,7 @@ struct LocalizationContext {
   const std::vector<PerceptNoise>& noise;
   const CandidateSets& candidates;
   const LocalizerOptions& options;
-  // Per node, its half axis as a segment (segment_nodes.hpp); null: every node a point.
-  const std::vector<Eigen::Vector3d>* half_axes;
-  const double max_half_length_m;  // the longest half axis, metres (0: no segments)
+  const NodeSegments* segments;  // null: every node a point
   // Every percept pair (distance and Eq. 8 tau), computed once per call.
   const std::vector<PerceptPair> pairs;
 
@@ -69,8 +61,9 @@ struct LocalizationContext {
   }
 
   Eigen::Vector3d half_axis(world::NodeIndex node) const {
-    return half_axes ? (*half_axes)[node] : Eigen::Vector3d::Zero();
+    return segments ? segments->half_axes_m[node] : Eigen::Vector3d::Zero();
   }
+  double longest_half_length_m() const { return segments ? segments->longest_half_length_m : 0.0; }
 
   // The point of `node` nearest `world_point_m`: its position, or for a bar (segment_nodes.hpp)
   // the projection onto its axis clamped to its ends.

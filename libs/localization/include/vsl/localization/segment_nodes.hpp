@@ -31,9 +31,8 @@ namespace vsl::localization {
 // `segment_types` whose object has a size, half its extent along the longer of its x and z
 // axes, in that direction; zero for every other node (a point), and for edge nodes (a door's top
 // or bottom edge is a point of the door).
-std::vector<Eigen::Vector3d> node_half_axes(const world::WorldModel& world,
-                                            const world::WorldGraph& graph,
-                                            const std::vector<std::string>& segment_types);
+NodeSegments node_segments(const world::WorldModel& world, const world::WorldGraph& graph,
+                           const std::vector<std::string>& segment_types);
 
 // The point of the segment centre +- half_axis nearest `point`: its projection onto the axis,
 // clamped to the ends.
