@@ -36,11 +36,6 @@ Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& centre, const Eigen::V
   return centre + s * half_axis;
 }
 
-Eigen::Vector3d LocalizationContext::nearest_point_m(world::NodeIndex node,
-                                                     const Eigen::Vector3d& world_point_m) const {
-  return nearest_on_segment(graph.world_position_m(node), half_axis(node), world_point_m);
-}
-
 std::vector<NodeAssociation> bar_pieces(const LocalizationContext& context,
                                         const Eigen::Isometry3d& world_T_ego,
                                         const PoseUncertainty& uncertainty,
@@ -73,8 +68,11 @@ std::vector<NodeAssociation> bar_pieces(const LocalizationContext& context,
     const Eigen::Vector3d world_x = world_T_ego * x;
     context.grid.for_each_within(*type, world_x, radius_m, [&](world::NodeIndex node, double) {
       if (context.half_axis(node).isZero()) return;
-      const double d2 =
-          noise.mahalanobis_sq(ego_T_world * context.nearest_point_m(node, world_x) - x, extra_m2);
+      const double d2 = noise.mahalanobis_sq(
+          ego_T_world * nearest_on_segment(context.graph.world_position_m(node),
+                                           context.half_axis(node), world_x) -
+              x,
+          extra_m2);
       if (d2 <= gate * gate) pairings.push_back({d2, static_cast<int>(l), node});
     });
   }

@@ -64,11 +64,6 @@ struct LocalizationContext {
     return segments ? segments->half_axes_m[node] : Eigen::Vector3d::Zero();
   }
   double longest_half_length_m() const { return segments ? segments->longest_half_length_m : 0.0; }
-
-  // The point of `node` nearest `world_point_m`: its position, or for a bar (segment_nodes.hpp)
-  // the projection onto its axis clamped to its ends.
-  Eigen::Vector3d nearest_point_m(world::NodeIndex node,
-                                  const Eigen::Vector3d& world_point_m) const;
 };
 
 // A percept -> model node pairing, the internal form of an Association.
