@@ -131,10 +131,16 @@ Prepared prepare(const Scene& s, const std::vector<FusedPercept>& percepts) {
 void BM_Localize(benchmark::State& state) {
   const Scene& s = scene(state.range(0));
   std::vector<double> totals;
+  StageTimes summed;  // per stage, over all runs: where a view's time goes
   std::size_t v = 0, localized = 0, ambiguous = 0, runs = 0;
   for (auto _ : state) {
     const LocalizationResult result = s.localizer->localize(s.views[v++ % s.views.size()]);
     totals.push_back(result.timing.total_ms);
+    summed.proximity_filter_ms += result.timing.proximity_filter_ms;
+    summed.orientation_filter_ms += result.timing.orientation_filter_ms;
+    summed.hypothesis_generation_ms += result.timing.hypothesis_generation_ms;
+    summed.validation_ms += result.timing.validation_ms;
+    summed.refinement_ms += result.timing.refinement_ms;
     localized += result.status == Status::kLocalized;
     ambiguous += result.status == Status::kAmbiguous;
     ++runs;
@@ -143,6 +149,14 @@ void BM_Localize(benchmark::State& state) {
   state.counters["localized"] = static_cast<double>(localized) / static_cast<double>(runs);
   state.counters["ambiguous"] = static_cast<double>(ambiguous) / static_cast<double>(runs);
   state.counters["nodes"] = static_cast<double>(s.localizer->graph().node_count());
+  // Mean milliseconds per view in each stage (all seeds of a view together; refinement holds
+  // the w-test's refinements too).
+  const double n = static_cast<double>(std::max<std::size_t>(runs, 1));
+  state.counters["proximity_ms"] = summed.proximity_filter_ms / n;
+  state.counters["orientation_ms"] = summed.orientation_filter_ms / n;
+  state.counters["generation_ms"] = summed.hypothesis_generation_ms / n;
+  state.counters["validation_ms"] = summed.validation_ms / n;
+  state.counters["refinement_ms"] = summed.refinement_ms / n;
 }
 BENCHMARK(BM_Localize)->Apply(world_args);
 
