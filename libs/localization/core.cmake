@@ -11,7 +11,8 @@ list(APPEND VSL_LOCALIZATION_SOURCES
   ${CMAKE_CURRENT_SOURCE_DIR}/src/seeds.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/hypotheses.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/validation.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/src/localizer.cpp)
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/localizer.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/truth_check.cpp)
 list(APPEND VSL_LOCALIZATION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/support/synthetic_percepts.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/support/test_worlds.cpp
@@ -25,7 +26,8 @@ list(APPEND VSL_LOCALIZATION_TESTS
   ${CMAKE_CURRENT_SOURCE_DIR}/test/hypotheses_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/validation_test.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/test/localizer_test.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/test/localizer_accuracy_test.cpp)
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/localizer_accuracy_test.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/test/truth_check_test.cpp)
 list(APPEND VSL_LOCALIZATION_BENCHES
   ${CMAKE_CURRENT_SOURCE_DIR}/test/support/synthetic_percepts.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/bench/localizer_bench.cpp)

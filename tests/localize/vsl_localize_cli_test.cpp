@@ -72,7 +72,9 @@ TEST(VslLocalizeCli, JsonHasExactlyTheDocumentedKeys) {
        {"{\"status\":\"localized\"", ",\"pose\":{\"position\":[", ",\"quaternion\":[",
         "]},\"covariance\":[[", "]],\"hypotheses\":[", ",\"associations\":[",
         "],\"timing_ms\":{\"proximity_filter\":", ",\"orientation_filter\":",
-        ",\"hypothesis_generation\":", ",\"validation\":", ",\"refinement\":", ",\"total\":"}) {
+        ",\"hypothesis_generation\":", ",\"validation\":", ",\"refinement\":", ",\"total\":",
+        "},\"truth\":[{\"percept\":0,\"object\":", ",\"distance_m\":", ",\"sigmas\":",
+        ",\"bar_object\":", ",\"bar_sigmas\":"}) {
     const std::size_t found = result.out.find(key, at);
     ASSERT_NE(found, std::string::npos) << key << " in " << result.out;
     at = found;
@@ -84,6 +86,26 @@ TEST(VslLocalizeCli, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_NEAR(std::stod(position[1]), 2.6, 1e-3);
   EXPECT_NEAR(std::stod(position[2]), 2.3, 1e-3);
   EXPECT_NEAR(std::stod(position[3]), 0.0, 1e-3);
+}
+
+TEST(VslLocalizeCli, TheGroundTruthSaysWhichPerceptsLieOnTheirObjects) {
+  // The view's last percept moved 20 cm sideways: 200 sigmas off every object of its type.
+  const std::string exact = write_view("view_truth.yaml", 8);
+  vsl::localization::PerceptFile file = vsl::localization::load_percept_file(exact);
+  ASSERT_EQ(file.percepts.size(), 8u);
+  file.percepts.back().ego_position_m.y() += 0.2;
+  const std::string moved = temp_path("view_truth_moved.yaml");
+  vsl::localization::write_percept_file(file, moved);
+  const auto result = run_command({VSL_LOCALIZE_BIN, "--world", kKitchen, "--percepts", moved,
+                                   "--config", "config/localizer.yaml"});
+  EXPECT_NE(result.out.find("percepts under the ground truth"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("within the gate: 7 of 8 percepts (0 more on a bar); validation needs "
+                            "60 %"),
+            std::string::npos)
+      << result.out;
+  EXPECT_TRUE(
+      std::regex_search(result.out, std::regex(R"(\n +7 \S+ +\S+ +20\.0 cm +200\.0 sigmas)")))
+      << result.out;
 }
 
 TEST(VslLocalizeCli, TooFewPerceptsFailWithExitCode1) {

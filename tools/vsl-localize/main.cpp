@@ -6,16 +6,19 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "json_writer.hpp"
 #include "vsl/config/node.hpp"
 #include "vsl/localization/localizer.hpp"
 #include "vsl/localization/percept_file.hpp"
+#include "vsl/localization/truth_check.hpp"
 #include "vsl/world/world_io.hpp"
 
 namespace {
 
 using vsl::localization::LocalizationResult;
+using vsl::localization::PerceptTruth;
 
 constexpr const char* kUsage =
     R"(usage: vsl-localize --world WORLD.yaml --percepts PERCEPTS.yaml [--config FILE] [--json]
@@ -27,6 +30,9 @@ Ceres-refined 6-DoF pose world_T_ego with its covariance. Formats: docs/localize
   --percepts FILE  percepts: [{type, position: [x, y, z], covariance?, support?}], ego frame, m
   --config FILE    localizer configuration (default: built-in defaults, as config/localizer.yaml)
   --json           print one JSON object instead of text
+With a ground truth in the percept file it also prints, per percept, the object of its type it
+lies nearest under the truth and how many sigmas off (a failure with too few percepts near their
+objects is the recognizer's, not the localizer's).
 exit codes: 0 localized or ambiguous, 1 failed, 2 bad input or usage
 )";
 
@@ -95,7 +101,32 @@ void write_associations(vsl::tools::JsonWriter& json,
   json.end_array();
 }
 
-void print_json(const LocalizationResult& result) {
+// The id of the world object behind graph node `node`.
+const std::string& object_id(const vsl::localization::Localizer& localizer,
+                             vsl::world::NodeIndex node) {
+  return localizer.world().objects[localizer.graph().object_index(node)].id;
+}
+
+void write_truth(vsl::tools::JsonWriter& json, const vsl::localization::Localizer& localizer,
+                 const std::vector<PerceptTruth>& truth) {
+  json.begin_array();
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    json.begin_object();
+    json.key("percept").number(static_cast<double>(i));
+    if (truth[i].nearest) {
+      json.key("object").string(object_id(localizer, *truth[i].nearest));
+      json.key("distance_m").number(truth[i].distance_m);
+      json.key("sigmas").number(truth[i].sigmas);
+      json.key("bar_object").string(object_id(localizer, *truth[i].nearest_bar));
+      json.key("bar_sigmas").number(truth[i].bar_sigmas);
+    }
+    json.end_object();
+  }
+  json.end_array();
+}
+
+void print_json(const LocalizationResult& result, const vsl::localization::Localizer& localizer,
+                const std::optional<std::vector<PerceptTruth>>& truth) {
   vsl::tools::JsonWriter json(std::cout);
   json.begin_object();
   json.key("status").string(vsl::localization::to_string(result.status));
@@ -129,6 +160,10 @@ void print_json(const LocalizationResult& result) {
   json.key("refinement").number(t.refinement_ms);
   json.key("total").number(t.total_ms);
   json.end_object();
+  if (truth) {
+    json.key("truth");
+    write_truth(json, localizer, *truth);
+  }
   json.end_object();
   std::cout << "\n";
 }
@@ -146,7 +181,43 @@ void print_pose_line(const char* label, const Eigen::Isometry3d& pose) {
       q.y(), q.z(), yaw_deg(pose));
 }
 
-void print_text(const LocalizationResult& result, const vsl::localization::PerceptFile& file) {
+// Each percept against the ground truth (truth_check.hpp), and how many lie within the validation
+// gate of an object of their type.
+void print_truth(const vsl::localization::Localizer& localizer,
+                 const vsl::localization::PerceptFile& file,
+                 const std::vector<PerceptTruth>& truth) {
+  const vsl::localization::ValidationOptions& v = localizer.options().validation;
+  std::printf(
+      "percepts under the ground truth (the nearest object of their type; gate %.1f sigmas):\n",
+      v.gate_sigmas);
+  std::size_t near = 0, on_bar = 0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const PerceptTruth& t = truth[i];
+    const std::string& type = file.percepts[i].type;
+    if (!t.nearest) {
+      std::printf("  %3zu %-16s no object of this type\n", i, type.c_str());
+      continue;
+    }
+    const bool in_gate = t.sigmas <= v.gate_sigmas;
+    const bool piece = !in_gate && t.bar_sigmas <= v.gate_sigmas;
+    near += in_gate;
+    on_bar += piece;
+    std::printf("  %3zu %-16s %-36s %6.1f cm %6.1f sigmas", i, type.c_str(),
+                object_id(localizer, *t.nearest).c_str(), 100.0 * t.distance_m, t.sigmas);
+    if (piece) {
+      std::printf(", %.1f from the bar of %s", t.bar_sigmas,
+                  object_id(localizer, *t.nearest_bar).c_str());
+    }
+    std::printf("\n");
+  }
+  std::printf(
+      "within the gate: %zu of %zu percepts (%zu more on a bar); validation needs %.0f %%\n", near,
+      truth.size(), on_bar, 100.0 * v.min_explained_fraction);
+}
+
+void print_text(const LocalizationResult& result, const vsl::localization::PerceptFile& file,
+                const vsl::localization::Localizer& localizer,
+                const std::optional<std::vector<PerceptTruth>>& truth) {
   std::printf("status: %s%s%s\n", vsl::localization::to_string(result.status),
               result.message.empty() ? "" : " - ", result.message.c_str());
   if (result.status == vsl::localization::Status::kLocalized) {
@@ -177,6 +248,7 @@ void print_text(const LocalizationResult& result, const vsl::localization::Perce
                   Eigen::AngleAxisd(error.rotation()).angle() * 180 / M_PI);
     }
   }
+  if (truth) print_truth(localizer, file, *truth);
   const auto& t = result.timing;
   std::printf(
       "time (ms): proximity %.3f, orientation %.3f, hypotheses %.3f, validation %.3f, "
@@ -200,10 +272,15 @@ int main(int argc, char** argv) {
         vsl::localization::load_percept_file(options.percepts);
     const vsl::localization::Localizer localizer(world, localizer_options);
     const LocalizationResult result = localizer.localize(file.percepts);
+    std::optional<std::vector<PerceptTruth>> truth;
+    if (file.ground_truth_world_T_ego) {
+      truth = vsl::localization::check_against_truth(localizer, file.percepts,
+                                                     *file.ground_truth_world_T_ego);
+    }
     if (options.json) {
-      print_json(result);
+      print_json(result, localizer, truth);
     } else {
-      print_text(result, file);
+      print_text(result, file, localizer, truth);
     }
     return result.status == vsl::localization::Status::kFailed ? 1 : 0;
   } catch (const vsl::config::Error& e) {
