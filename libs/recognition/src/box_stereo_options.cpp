@@ -31,20 +31,25 @@ std::vector<std::string> types_from(const config::Node& types) {
   return out;
 }
 
-// {type: {reference_px, disparity_px, floor_m, shared_disparity_px}, ...} replacing the defaults;
-// shared_disparity_px optional (0).
+// {type: {reference_px, disparity_px, floor_m, shared_disparity_px, shared_floor_m}, ...}
+// replacing the defaults; shared_disparity_px optional (0), shared_floor_m optional (all of
+// floor_m) and at most floor_m.
 std::vector<BoxStereoOptions::Noise> noise_models_from(const config::Node& noise) {
   noise.expect_map();
   std::vector<BoxStereoOptions::Noise> out;
   for (const std::string& type : noise.keys()) {
     const config::Node model = noise.at(type);
-    model.expect_keys({"reference_px", "disparity_px", "floor_m", "shared_disparity_px"});
+    model.expect_keys(
+        {"reference_px", "disparity_px", "floor_m", "shared_disparity_px", "shared_floor_m"});
     const auto shared = model.find("shared_disparity_px");
     out.push_back({type, model.at("reference_px").as_double_in(0.0, 100.0),
                    model.at("disparity_px").as_double_in(0.0, 100.0),
                    model.at("floor_m").as_double_in(0.0, 10.0),
-                   shared ? shared->as_double_in(0.0, 100.0) : 0.0});
-    const BoxStereoOptions::Noise& n = out.back();
+                   shared ? shared->as_double_in(0.0, 100.0) : 0.0, std::nullopt});
+    BoxStereoOptions::Noise& n = out.back();
+    if (const auto shared_floor = model.find("shared_floor_m")) {
+      n.shared_floor_m = shared_floor->as_double_in(0.0, n.floor_m);
+    }
     if (n.reference_px + n.disparity_px <= 0.0 && n.floor_m <= 0.0) {
       model.fail("a noise model of all zeros gives no covariance");
     }

@@ -26,6 +26,17 @@ LearnedStereoRecognizer shipped(const head::HeadKinematics& head) {
                                  box_stereo_options_from(section.at("box_stereo")), head);
 }
 
+// The shipped noise model of a class.
+BoxStereoOptions::Noise shipped_noise(const std::string& type) {
+  const BoxStereoOptions options = box_stereo_options_from(
+      config::Node::load_file("config/recognition.yaml").at("recognition").at("box_stereo"));
+  for (const BoxStereoOptions::Noise& n : options.noise) {
+    if (n.type == type) return n;
+  }
+  ADD_FAILURE() << "no noise model for " << type;
+  return {};
+}
+
 TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
   const test::StereoViews& views = test::StereoViews::kitchen();
   const LearnedStereoRecognizer recognizer = shipped(views.head());
@@ -42,9 +53,12 @@ TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
         }
       }
       errors.push_back(nearest);
-      // The noise model's floor is the part every frame of a scan shares, and it is inside the
+      // The floor's shared part is what every frame of a scan shares, and it is inside the
       // covariance (percept_t.shared_sigma_m).
-      EXPECT_DOUBLE_EQ(p.shared_sigma_m, p.type == "handle" ? 0.012 : 0.022) << p.type;
+      // (A door placed by one edge, door_top_edge or door_bottom_edge, has the door's model.)
+      const BoxStereoOptions::Noise noise = shipped_noise(p.type == "handle" ? "handle" : "door");
+      EXPECT_DOUBLE_EQ(p.shared_sigma_m, noise.shared_floor()) << p.type;
+      EXPECT_LE(p.shared_sigma_m, noise.floor_m) << p.type;
       const double smallest_m2 =
           Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.ego_covariance_m2).eigenvalues()(0);
       EXPECT_LE(p.shared_sigma_m * p.shared_sigma_m, smallest_m2 * (1.0 + 1e-9)) << p.type;
@@ -132,6 +146,13 @@ TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
                 .noise[0]
                 .shared_disparity_px,
             0.25);
+  // Of the floor, the part a scan's frames share: all of it unless said, never more.
+  EXPECT_EQ(o.noise[0].shared_floor(), 0.01);
+  EXPECT_EQ(box_stereo_from("  noise: {door: {reference_px: 0, disparity_px: 0.2, floor_m: 0.02, "
+                            "shared_floor_m: 0.013}}\n")
+                .noise[0]
+                .shared_floor(),
+            0.013);
   ASSERT_EQ(o.thickness_range_m.size(), 1u);
   EXPECT_EQ(o.thickness_range_m[0].max_m, 0.08);
   expect_refused(
@@ -139,6 +160,8 @@ TEST(BoxStereoOptions, NoiseAndThicknessAreReadAndChecked) {
        "  noise: {handle: {reference_px: 1, disparity_px: 0.1}}\n",
        "  noise: {handle: {reference_px: 1, disparity_px: 0.1, floor_m: 0, shared_disparity_px: "
        "-0.1}}\n",
+       "  noise: {handle: {reference_px: 1, disparity_px: 0.1, floor_m: 0.01, shared_floor_m: "
+       "0.02}}\n",
        "  thickness_range_m: {handle: [0.1, 0.05]}\n"},
       "b.yaml:2: box_stereo.");
 }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,14 +65,21 @@ struct BoxStereoOptions {
   // shares (pixels): the same object seen from one robot pose gives the match the same bias in
   // every frame, so fusion must not average it down (percept_t.shared_ray_sigma_m); it is added
   // to the covariance along the ray. Classes not listed: 1 px, 1 px, no floor, none shared.
+  // Of the floor, the part every frame of a scan shares (metres; percept_t.shared_sigma_m): where
+  // on the object the reference point falls from one robot pose (a worktop's lip hides a door's
+  // top in every frame). The rest is the frame's own (box jitter) and fusion averages it down.
+  // Measured by vsl-scan-noise on whole-pipeline scans (docs/fusion.md); unset: all of the floor.
   struct Noise {
     std::string type;
     double reference_px = 1.0;
     double disparity_px = 1.0;
     double floor_m = 0.0;
     double shared_disparity_px = 0.0;
+    std::optional<double> shared_floor_m;
+    double shared_floor() const { return shared_floor_m.value_or(floor_m); }
   };
-  std::vector<Noise> noise{{"door", 0.0, 0.18, 0.022, 0.2}, {"handle", 1.8, 0.10, 0.012, 0.2}};
+  std::vector<Noise> noise{{"door", 0.0, 0.18, 0.022, 0.2, std::nullopt},
+                           {"handle", 1.8, 0.10, 0.012, 0.2, std::nullopt}};
   // Classes whose box is a rectangle in 3D with vertical sides (doors): centre from the corners.
   std::vector<std::string> rectangle_types{"door"};
   // Candidate pairs are also scored by how well the boxes' surroundings correlate at the pair's
