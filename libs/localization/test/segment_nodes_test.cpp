@@ -8,16 +8,11 @@
 #include "support/synthetic_percepts.hpp"
 #include "support/test_worlds.hpp"
 #include "vsl/localization/localizer.hpp"
-#include "vsl/world/world_io.hpp"
 
 namespace vsl::localization {
 namespace {
 
-const world::WorldModel& rails_kitchen() {
-  static const world::WorldModel kitchen =
-      world::load_world(std::string(VSL_SOURCE_DIR "/config/worlds/kitchen_white_rails.yaml"));
-  return kitchen;
-}
+using testing::rails_kitchen;
 
 world::ObjectModel sized(const std::string& id, const std::string& type,
                          const Eigen::Vector3d& position, const Eigen::Vector3d& size,

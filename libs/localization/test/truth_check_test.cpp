@@ -7,16 +7,11 @@
 
 #include "support/synthetic_percepts.hpp"
 #include "support/test_worlds.hpp"
-#include "vsl/world/world_io.hpp"
 
 namespace vsl::localization {
 namespace {
 
-const world::WorldModel& rails_kitchen() {
-  static const world::WorldModel kitchen =
-      world::load_world(std::string(VSL_SOURCE_DIR "/config/worlds/kitchen_white_rails.yaml"));
-  return kitchen;
-}
+using testing::rails_kitchen;
 
 // A noiseless view of the rails kitchen, each percept with a covariance of 1 cm.
 testing::SyntheticView exact_view(const Eigen::Isometry3d& truth) {

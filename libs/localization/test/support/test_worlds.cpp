@@ -10,6 +10,12 @@ const world::WorldModel& bundled_kitchen() {
   return kitchen;
 }
 
+const world::WorldModel& rails_kitchen() {
+  static const world::WorldModel kitchen =
+      world::load_world(std::string(VSL_SOURCE_DIR "/config/worlds/kitchen_white_rails.yaml"));
+  return kitchen;
+}
+
 LocalizerOptions test_options() {
   LocalizerOptions options;
   options.graph.node_types = {"door", "handle", "drawer_front", "window"};

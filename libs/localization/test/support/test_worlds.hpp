@@ -13,6 +13,8 @@ namespace vsl::localization::testing {
 
 // config/worlds/kitchen.yaml, loaded once (VSL_SOURCE_DIR is the source tree).
 const world::WorldModel& bundled_kitchen();
+// config/worlds/kitchen_white_rails.yaml (rails 0.42-0.52 m long), loaded once.
+const world::WorldModel& rails_kitchen();
 
 // The localizer's options for the tests: the recognizable types as nodes (config/localizer.yaml)
 // and no precision requirement (validation.precision_sigmas = 0), so that the structural tests
