@@ -219,6 +219,9 @@ const world::WorldModel& Localizer::world() const {
 const world::WorldGraph& Localizer::graph() const {
   return state_->graph;
 }
+const NodeSegments& Localizer::segments() const {
+  return state_->segments;
+}
 const LocalizerOptions& Localizer::options() const {
   return state_->options;
 }

@@ -14,8 +14,7 @@ std::vector<PerceptTruth> check_against_truth(const Localizer& localizer,
                                               const Eigen::Isometry3d& world_T_ego) {
   const world::WorldGraph& graph = localizer.graph();
   const LocalizerOptions& options = localizer.options();
-  const NodeSegments segments =
-      node_segments(localizer.world(), graph, options.validation.segment_types);
+  const NodeSegments& segments = localizer.segments();
   const std::vector<PerceptNoise> noise = percept_noise(percepts, options.noise);
   const Eigen::Matrix3d ego_R_world = world_T_ego.linear().transpose();
 

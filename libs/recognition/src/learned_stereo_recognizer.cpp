@@ -607,8 +607,8 @@ FrameResult LearnedStereoRecognizer::recognize(const cv::Mat& left_bgr, const cv
     p.ego_position_m = result.ego_T_left_camera * placed->triangulation.left_camera_position_m;
     p.ego_covariance_m2 =
         ego_R_left * placed->triangulation.left_camera_covariance_m2 * ego_R_left.transpose();
-    // The floor is where on the object the reference point falls from this robot pose: the same
-    // in every frame of a scan (percept_t.shared_sigma_m).
+    // The floor's shared part is where on the object the reference point falls from this robot
+    // pose: the same in every frame of a scan (percept_t.shared_sigma_m).
     p.shared_sigma_m = noise_of(options_, left.type).shared_floor();
     p.shared_ray_sigma_m = placed->triangulation.shared_ray_sigma_m;
     p.left_px = placed->left_px;

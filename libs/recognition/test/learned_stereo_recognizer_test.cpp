@@ -26,10 +26,8 @@ LearnedStereoRecognizer shipped(const head::HeadKinematics& head) {
                                  box_stereo_options_from(section.at("box_stereo")), head);
 }
 
-// The shipped noise model of a class.
-BoxStereoOptions::Noise shipped_noise(const std::string& type) {
-  const BoxStereoOptions options = box_stereo_options_from(
-      config::Node::load_file("config/recognition.yaml").at("recognition").at("box_stereo"));
+// The noise model of a class in `options`.
+BoxStereoOptions::Noise noise_model(const BoxStereoOptions& options, const std::string& type) {
   for (const BoxStereoOptions::Noise& n : options.noise) {
     if (n.type == type) return n;
   }
@@ -40,6 +38,8 @@ BoxStereoOptions::Noise shipped_noise(const std::string& type) {
 TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
   const test::StereoViews& views = test::StereoViews::kitchen();
   const LearnedStereoRecognizer recognizer = shipped(views.head());
+  const BoxStereoOptions shipped_options = box_stereo_options_from(
+      config::Node::load_file("config/recognition.yaml").at("recognition").at("box_stereo"));
   std::vector<double> errors;
   for (int k = 0; k < 3; ++k) {
     const test::StereoView view = views.fixed_view(k, 1);
@@ -56,7 +56,8 @@ TEST(LearnedStereoRecognizer, PerceptsLandOnTheWorldsDoorsAndHandles) {
       // The floor's shared part is what every frame of a scan shares, and it is inside the
       // covariance (percept_t.shared_sigma_m).
       // (A door placed by one edge, door_top_edge or door_bottom_edge, has the door's model.)
-      const BoxStereoOptions::Noise noise = shipped_noise(p.type == "handle" ? "handle" : "door");
+      const BoxStereoOptions::Noise noise =
+          noise_model(shipped_options, p.type == "handle" ? "handle" : "door");
       EXPECT_DOUBLE_EQ(p.shared_sigma_m, noise.shared_floor()) << p.type;
       EXPECT_LE(p.shared_sigma_m, noise.floor_m) << p.type;
       const double smallest_m2 =

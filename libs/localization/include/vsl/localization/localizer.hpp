@@ -17,6 +17,8 @@
 
 namespace vsl::localization {
 
+struct NodeSegments;  // localization_context.hpp
+
 // Eq. 7: a percept's positional error grows with the square of its distance to the left camera:
 // epsilon_i = ||X_i - C_L||^2 / zeta (metres, one standard deviation per axis).
 struct PerceptNoiseOptions {
@@ -206,6 +208,8 @@ class Localizer {
   const world::WorldModel& world() const;
   const world::WorldGraph& graph() const;
   const LocalizerOptions& options() const;
+  // Every node as a segment (validation.segment_types; segment_nodes.hpp), built with the graph.
+  const NodeSegments& segments() const;
 
   // Localizes from fused percepts (ego frame). Thread-safe (const, no shared mutable state).
   // `on_stage`, when set, is called on this thread as each stage is first reached.
