@@ -15,9 +15,10 @@
 //                       uncertain (one hypothesis, imprecise): a precision look at
 //                       choose_precision_look's target, away from every earlier gaze;
 //   SCANNING again      once per request, when a localization FAILED for want of evidence (not
-//                       merely too uncertain): the look-around targets, further round than the
-//                       scan (a robot facing a bare wall or a window sees too little in front of
-//                       it), then FUSING again;
+//                       merely too uncertain), or before the request would end without a pose
+//                       (too uncertain or ambiguous with the looks spent or nothing to look at):
+//                       the look-around targets, further round than the scan (a robot facing a
+//                       bare wall or a window sees too little in front of it), then FUSING again;
 //   DONE / FAILED       POSE_ESTIMATE, one per request.
 // Passive mode (replays): no gaze commands; the FUSING entries of the original localizer's status
 // (read on another channel) mark the ends of the scan and of each active look.
@@ -54,8 +55,9 @@ const char* to_string(State state);
 
 struct CoreOptions {
   std::vector<Eigen::Vector3d> ego_gaze_targets_m;  // the scan, ego frame (m)
-  // Looked at once per request, after the scan, when its percepts gave no pose (FAILED, not
-  // merely too uncertain): further round than the scan, ego frame (m). Empty: never.
+  // Looked at once per request, when the percepts gave no pose (FAILED, not merely too
+  // uncertain), or before the request would end too uncertain or ambiguous: further round than
+  // the scan, ego frame (m). Empty: never.
   std::vector<Eigen::Vector3d> ego_look_around_targets_m;
   int frames_per_target = 2;       // recognized frames at rest per gaze target
   double settle_timeout_s = 15.0;  // gaze command -> first frame at rest on it
@@ -189,7 +191,9 @@ class LocalizerCore {
   void start_look(const Eigen::Vector3d& ego_target_m, bool active, std::int64_t now_us);
   void enter_fusing(std::int64_t now_us);
   void localize(const std::vector<localization::FusedPercept>& percepts, std::int64_t now_us);
-  // A FAILED result for want of evidence, the first of the request: the look-around targets.
+  // Whether the look-around targets are still to be scanned in this request (once at most).
+  bool can_look_around() const;
+  // The look-around targets, once per request, before it would end without a pose.
   void look_around(const localization::LocalizationResult& result, std::int64_t now_us);
   // A FAILED result that is only too uncertain: a precision look while looks remain.
   void look_for_precision(const localization::LocalizationResult& result, std::int64_t now_us);

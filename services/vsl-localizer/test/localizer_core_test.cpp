@@ -336,6 +336,70 @@ TEST(LocalizerCore, APoseAfterLookingAroundMustAgreeWithAnEarlierImprecisePose) 
   EXPECT_NE(h.out.poses[0].message.find("20.0 cm"), std::string::npos) << h.out.poses[0].message;
 }
 
+// Before a request would end without a pose (too uncertain with nothing new in reach or the
+// looks spent; ambiguous with nothing to discriminate or the looks spent), the head looks around
+// once, and what it sees is localized with the rest.
+TEST(LocalizerCore, LooksAroundBeforeGivingUpOnAnImpreciseOrAmbiguousPose) {
+  struct Case {
+    const char* name;
+    std::vector<LocalizationResult> results;
+    bool no_precision_target;
+    bool no_discriminator;
+    std::size_t gazes_before_looking_around;
+  };
+  const std::vector<Case> cases = {
+      {"too uncertain, nothing new in reach", {too_uncertain()}, true, false, 3},
+      {"too uncertain after the look limit",
+       {too_uncertain(), too_uncertain(), too_uncertain()},
+       false,
+       false,
+       5},
+      {"ambiguous, nothing discriminates", {result(Status::kAmbiguous)}, false, true, 3},
+      {"ambiguous after the look limit",
+       {result(Status::kAmbiguous), result(Status::kAmbiguous), result(Status::kAmbiguous)},
+       false,
+       false,
+       5},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Harness h(looking_around());
+    h.engine.results.assign(c.results.begin(), c.results.end());
+    h.engine.results.push_back(result(Status::kLocalized, 1.001));
+    if (c.no_precision_target) h.engine.precision.reset();
+    if (c.no_discriminator) h.engine.discriminator.reset();
+    h.core.request(7, h.now);
+    for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+    h.fused();
+    while (h.out.gazes.size() < c.gazes_before_looking_around + 1 && h.out.poses.empty()) {
+      h.settle_and_recognize();  // an active look
+      h.fused();
+    }
+    ASSERT_TRUE(h.out.poses.empty());
+    ASSERT_EQ(h.out.gazes.size(), c.gazes_before_looking_around + 1);
+    EXPECT_EQ(h.out.gazes.back().ego_target_m, Eigen::Vector3d(-0.4, 2.5, 1));
+    EXPECT_EQ(h.core.state(), State::kScanning);
+    for (int i = 0; i < 2; ++i) h.settle_and_recognize();
+    h.fused(9);
+    ASSERT_EQ(h.out.poses.size(), 1u);
+    EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+    EXPECT_EQ(h.engine.seen.back(), 9u);
+  }
+}
+
+// Without look-around targets the request ends as before.
+TEST(LocalizerCore, WithoutLookAroundTargetsAnAmbiguousPoseIsTheAnswer) {
+  Harness h;
+  h.engine.results = {result(Status::kAmbiguous)};
+  h.engine.discriminator.reset();
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused();
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kAmbiguous);
+  EXPECT_NE(h.out.poses[0].message.find("nothing discriminates"), std::string::npos);
+}
+
 // A look-around target the head never settles on: the scan's answer stands, with why.
 TEST(LocalizerCore, ALookAroundThatNeverSettlesEndsWithTheScansAnswer) {
   Harness h(looking_around());
