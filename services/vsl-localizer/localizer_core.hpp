@@ -70,8 +70,9 @@ struct CoreOptions {
   int max_active_looks = 3;             // active validation looks per request
   // A pose localized after later looks must agree with the last pose of the request too uncertain
   // (the robot has not moved; pose_agreement.hpp): beyond the chi-square quantile of this
-  // false-alarm probability the request FAILS. 0: not tested.
-  double look_agreement_alpha = 0.01;
+  // false-alarm probability the request FAILS. 0: not tested (shipped: the pose too uncertain
+  // before the looks is the one more often wrong).
+  double look_agreement_alpha = 0.0;
   // Where active looks may point the head: ARMAR-III's reach (neck yaw 100 deg + eye pan 34 deg
   // = 130 deg of azimuth) and 35 deg of elevation (fronts seen steeper are not recognized).
   localization::LookLimits look_limits = default_look_limits();

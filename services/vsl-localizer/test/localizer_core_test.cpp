@@ -321,7 +321,9 @@ TEST(LocalizerCore, LooksAroundOnlyOnceAndNotWhenOnlyTooUncertain) {
 // The robot has not moved all request: a pose localized after looking around must agree with
 // a pose too uncertain before it, even with a look between them that found too little.
 TEST(LocalizerCore, APoseAfterLookingAroundMustAgreeWithAnEarlierImprecisePose) {
-  Harness h(looking_around());
+  CoreOptions o = looking_around();
+  o.look_agreement_alpha = 0.01;
+  Harness h(o);
   h.engine.results = {too_uncertain(), result(Status::kFailed), result(Status::kLocalized, 1.2)};
   h.core.request(7, h.now);
   for (int i = 0; i < 3; ++i) h.settle_and_recognize();
@@ -448,8 +450,28 @@ TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
 
 // The robot has not moved while its head looked again: a pose localized after the precision look
 // 20 cm from the one before it (1 cm sigmas each) is not to be trusted.
-TEST(LocalizerCore, APoseThatDisagreesWithTheOneBeforeThePrecisionLookFails) {
+CoreOptions testing_agreement() {
+  CoreOptions o = options();
+  o.look_agreement_alpha = 0.01;
+  return o;
+}
+
+// Without the agreement test (the shipped default) the pose after the look is the answer.
+TEST(LocalizerCore, WithoutTheAgreementTestThePoseAfterTheLookStands) {
   Harness h;
+  h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.2)};
+  h.core.request(7, h.now);
+  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
+  h.fused(5);
+  h.settle_and_recognize();
+  h.fused(9);
+  ASSERT_EQ(h.out.poses.size(), 1u);
+  EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
+  EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 1.2);
+}
+
+TEST(LocalizerCore, APoseThatDisagreesWithTheOneBeforeThePrecisionLookFails) {
+  Harness h(testing_agreement());
   h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.2)};
   h.core.request(7, h.now);
   for (int i = 0; i < 3; ++i) h.settle_and_recognize();
