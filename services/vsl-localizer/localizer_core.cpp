@@ -222,9 +222,7 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
       if (result.too_uncertain) {
         too_uncertain_before_ = result;
         look_for_precision(result, now_us);
-      } else if (can_look_around()) {
-        look_around(result, now_us);
-      } else {
+      } else if (!look_around_once(result, now_us)) {
         finish(State::kFailed, result, result.message, now_us);
       }
       return;
@@ -232,10 +230,7 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
       break;
   }
   if (active_looks_ >= options_.max_active_looks) {
-    if (can_look_around()) {
-      look_around(result, now_us);
-      return;
-    }
+    if (look_around_once(result, now_us)) return;
     finish(State::kDone, result,
            "ambiguous after " + std::to_string(active_looks_) + " active looks: " + result.message,
            now_us);
@@ -249,10 +244,7 @@ void LocalizerCore::localize(const std::vector<localization::FusedPercept>& perc
   const std::optional<Eigen::Vector3d> target =
       engine_.discriminator_target(result, active_look_targets_m_);
   if (!target) {
-    if (can_look_around()) {
-      look_around(result, now_us);
-      return;
-    }
+    if (look_around_once(result, now_us)) return;
     finish(State::kDone, result, "ambiguous, nothing discriminates: " + result.message, now_us);
     return;
   }
@@ -299,8 +291,11 @@ void LocalizerCore::follow_recorded_look(const localization::LocalizationResult&
   set_state(State::kActiveValidation, now_us);
 }
 
-bool LocalizerCore::can_look_around() const {
-  return !looked_around_ && !options_.ego_look_around_targets_m.empty();
+bool LocalizerCore::look_around_once(const localization::LocalizationResult& result,
+                                     std::int64_t now_us) {
+  if (looked_around_ || options_.ego_look_around_targets_m.empty()) return false;
+  look_around(result, now_us);
+  return true;
 }
 
 void LocalizerCore::look_around(const localization::LocalizationResult& result,
@@ -323,10 +318,7 @@ void LocalizerCore::look_around(const localization::LocalizationResult& result,
 void LocalizerCore::look_for_precision(const localization::LocalizationResult& result,
                                        std::int64_t now_us) {
   if (active_looks_ >= options_.max_active_looks) {
-    if (can_look_around()) {
-      look_around(result, now_us);
-      return;
-    }
+    if (look_around_once(result, now_us)) return;
     finish(State::kFailed, result,
            result.message + " after " + std::to_string(active_looks_) + " active looks", now_us);
     return;
@@ -344,10 +336,7 @@ void LocalizerCore::look_for_precision(const localization::LocalizationResult& r
   looked.insert(looked.end(), active_look_targets_m_.begin(), active_look_targets_m_.end());
   const std::optional<Eigen::Vector3d> target = engine_.precision_target(result, looked);
   if (!target) {
-    if (can_look_around()) {
-      look_around(result, now_us);
-      return;
-    }
+    if (look_around_once(result, now_us)) return;
     finish(State::kFailed, result, result.message + "; nothing new in reach to look at", now_us);
     return;
   }

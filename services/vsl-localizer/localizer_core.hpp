@@ -192,8 +192,9 @@ class LocalizerCore {
   void start_look(const Eigen::Vector3d& ego_target_m, bool active, std::int64_t now_us);
   void enter_fusing(std::int64_t now_us);
   void localize(const std::vector<localization::FusedPercept>& percepts, std::int64_t now_us);
-  // Whether the look-around targets are still to be scanned in this request (once at most).
-  bool can_look_around() const;
+  // The look-around, unless this request has had it (or there are no look-around targets):
+  // whether it started.
+  bool look_around_once(const localization::LocalizationResult& result, std::int64_t now_us);
   // The look-around targets, once per request, before it would end without a pose.
   void look_around(const localization::LocalizationResult& result, std::int64_t now_us);
   // A FAILED result that is only too uncertain: a precision look while looks remain.
