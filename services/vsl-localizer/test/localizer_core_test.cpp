@@ -258,6 +258,12 @@ TEST(LocalizerCore, FailedResultCarriesNoPose) {
   EXPECT_EQ(h.core.state(), State::kFailed);
 }
 
+// `o` with the look agreement test on (shipped off).
+CoreOptions testing_agreement(CoreOptions o) {
+  o.look_agreement_alpha = 0.01;
+  return o;
+}
+
 CoreOptions looking_around() {
   CoreOptions o = options();
   o.ego_look_around_targets_m = {Eigen::Vector3d(-0.4, 2.5, 1), Eigen::Vector3d(-0.4, -2.5, 1)};
@@ -321,9 +327,7 @@ TEST(LocalizerCore, LooksAroundOnlyOnceAndNotWhenOnlyTooUncertain) {
 // The robot has not moved all request: a pose localized after looking around must agree with
 // a pose too uncertain before it, even with a look between them that found too little.
 TEST(LocalizerCore, APoseAfterLookingAroundMustAgreeWithAnEarlierImprecisePose) {
-  CoreOptions o = looking_around();
-  o.look_agreement_alpha = 0.01;
-  Harness h(o);
+  Harness h(testing_agreement(looking_around()));
   h.engine.results = {too_uncertain(), result(Status::kFailed), result(Status::kLocalized, 1.2)};
   h.core.request(7, h.now);
   for (int i = 0; i < 3; ++i) h.settle_and_recognize();
@@ -448,14 +452,6 @@ TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
   EXPECT_EQ(h.core.state(), State::kDone);
 }
 
-// The robot has not moved while its head looked again: a pose localized after the precision look
-// 20 cm from the one before it (1 cm sigmas each) is not to be trusted.
-CoreOptions testing_agreement() {
-  CoreOptions o = options();
-  o.look_agreement_alpha = 0.01;
-  return o;
-}
-
 // Without the agreement test (the shipped default) the pose after the look is the answer.
 TEST(LocalizerCore, WithoutTheAgreementTestThePoseAfterTheLookStands) {
   Harness h;
@@ -470,8 +466,10 @@ TEST(LocalizerCore, WithoutTheAgreementTestThePoseAfterTheLookStands) {
   EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 1.2);
 }
 
+// The robot has not moved while its head looked again: a pose localized after the precision look
+// 20 cm from the one before it (1 cm sigmas each) is not to be trusted.
 TEST(LocalizerCore, APoseThatDisagreesWithTheOneBeforeThePrecisionLookFails) {
-  Harness h(testing_agreement());
+  Harness h(testing_agreement(options()));
   h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.2)};
   h.core.request(7, h.now);
   for (int i = 0; i < 3; ++i) h.settle_and_recognize();
