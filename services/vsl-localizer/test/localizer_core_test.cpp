@@ -452,15 +452,20 @@ TEST(LocalizerCore, TooUncertainTakesAPrecisionLookThenLocalizes) {
   EXPECT_EQ(h.core.state(), State::kDone);
 }
 
-// Without the agreement test (the shipped default) the pose after the look is the answer.
-TEST(LocalizerCore, WithoutTheAgreementTestThePoseAfterTheLookStands) {
-  Harness h;
+// A scan too uncertain at x = 1.0 m, then a precision look that localizes at x = 1.2 m.
+void precision_look_moves_the_pose_20_cm(Harness& h) {
   h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.2)};
   h.core.request(7, h.now);
   for (int i = 0; i < 3; ++i) h.settle_and_recognize();
   h.fused(5);
   h.settle_and_recognize();
   h.fused(9);
+}
+
+// Without the agreement test (the shipped default) the pose after the look is the answer.
+TEST(LocalizerCore, WithoutTheAgreementTestThePoseAfterTheLookStands) {
+  Harness h;
+  precision_look_moves_the_pose_20_cm(h);
   ASSERT_EQ(h.out.poses.size(), 1u);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kLocalized);
   EXPECT_DOUBLE_EQ(h.out.poses[0].result.world_T_ego.translation().x(), 1.2);
@@ -470,12 +475,7 @@ TEST(LocalizerCore, WithoutTheAgreementTestThePoseAfterTheLookStands) {
 // 20 cm from the one before it (1 cm sigmas each) is not to be trusted.
 TEST(LocalizerCore, APoseThatDisagreesWithTheOneBeforeThePrecisionLookFails) {
   Harness h(testing_agreement(options()));
-  h.engine.results = {too_uncertain(), result(Status::kLocalized, 1.2)};
-  h.core.request(7, h.now);
-  for (int i = 0; i < 3; ++i) h.settle_and_recognize();
-  h.fused(5);
-  h.settle_and_recognize();
-  h.fused(9);
+  precision_look_moves_the_pose_20_cm(h);
   ASSERT_EQ(h.out.poses.size(), 1u);
   EXPECT_EQ(h.out.poses[0].result.status, Status::kFailed);
   EXPECT_EQ(h.core.state(), State::kFailed);
